@@ -1,0 +1,23 @@
+// The list of validation cases: one declaration and one entry per validation/<case>/ folder.
+#include <algorithm>
+
+#include "validation/case.hpp"
+
+namespace valsalva::validation {
+
+
+
+const std::vector<Case>& all_cases() {
+  static const std::vector<Case> cases = {
+
+  };
+  return cases;
+}
+
+const Case* find_case(const std::string& name) {
+  const auto& cases = all_cases();
+  auto it = std::find_if(cases.begin(), cases.end(), [&](const Case& c) { return c.name == name; });
+  return it == cases.end() ? nullptr : &*it;
+}
+
+}  // namespace valsalva::validation
