@@ -1,0 +1,57 @@
+#include "io/pipe_generator.hpp"
+
+#include <fmt/format.h>
+#include <gmsh.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "io/gmsh_reader.hpp"
+
+namespace valsalva::io {
+
+flow::Mesh generate_pipe_mesh(double radius, double length, double target_size) {
+  for (const auto& [name, value] :
+       {std::pair{"radius", radius}, {"length", length}, {"target_size", target_size}})
+    if (!(value > 0.0) || !std::isfinite(value))
+      throw std::invalid_argument(
+          fmt::format("generate_pipe_mesh: {} must be positive and finite, got {}", name, value));
+  const std::string source = fmt::format("pipe(radius={:g}, length={:g}, size={:g})", radius,
+                                         length, target_size);
+  GmshSession session;
+  gmsh_call(source, [&] {
+    gmsh::model::add("pipe");
+    const int volume = gmsh::model::occ::addCylinder(0, 0, 0, 0, 0, length, radius);
+    gmsh::model::occ::synchronize();
+    // The cylinder has three surfaces; tell them apart by the z of their centre of mass.
+    gmsh::vectorpair surfaces;
+    gmsh::model::getBoundary({{3, volume}}, surfaces, false, false, false);
+    std::vector<int> inlet, outlet, wall;
+    for (const auto& [dim, tag] : surfaces) {
+      double x = 0, y = 0, z = 0;
+      gmsh::model::occ::getCenterOfMass(dim, tag, x, y, z);
+      const double r = std::hypot(x, y);
+      if (r < 1e-9 * radius && std::abs(z) < 1e-9 * length) inlet.push_back(tag);
+      else if (r < 1e-9 * radius && std::abs(z - length) < 1e-9 * length) outlet.push_back(tag);
+      else wall.push_back(tag);
+    }
+    if (inlet.size() != 1 || outlet.size() != 1 || wall.empty())
+      throw MeshFileError(source + ": unexpected cylinder surfaces from OpenCASCADE");
+    gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, inlet), "inlet");
+    gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, outlet), "outlet");
+    gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, wall), "wall");
+    gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {volume}), "fluid");
+    gmsh::option::setNumber("Mesh.MeshSizeMax", target_size);
+    gmsh::option::setNumber("Mesh.MeshSizeMin", 0.0);
+    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+    gmsh::option::setNumber("Mesh.RandomSeed", 1);
+    gmsh::option::setNumber("Mesh.MaxNumThreads1D", 1);
+    gmsh::option::setNumber("Mesh.MaxNumThreads2D", 1);
+    gmsh::option::setNumber("Mesh.MaxNumThreads3D", 1);
+    gmsh::option::setNumber("Mesh.ElementOrder", 1);
+    gmsh::model::mesh::generate(3);
+  });
+  return mesh_from_gmsh_model(source);
+}
+
+}  // namespace valsalva::io
