@@ -38,8 +38,10 @@ inline double wale_operator(const Eigen::Matrix3d& g) {
   Sd.diagonal().array() -= g2.trace() / 3.0;
   const double sdsd = Sd.squaredNorm();
   const double ss = S.squaredNorm();
-  const double den = std::pow(ss, 2.5) + std::pow(sdsd, 1.25);
-  return den > 0.0 ? std::pow(sdsd, 1.5) / den : 0.0;
+  // Powers 3/2, 5/2, 5/4 through square roots (std::pow is several times slower).
+  const double r = std::sqrt(sdsd);
+  const double den = ss * ss * std::sqrt(ss) + sdsd * std::sqrt(r);
+  return den > 0.0 ? sdsd * r / den : 0.0;
 }
 
 inline double wale_nu(const Eigen::Matrix3d& g, double delta, double c_w) {

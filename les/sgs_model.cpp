@@ -63,27 +63,55 @@ void filter_width(std::span<const double> volume, std::span<double> delta) {
 }
 
 namespace {
-template <class Kernel>
-void apply(Kernel kernel, double c, std::span<const Eigen::Matrix3d> grad,
-           std::span<const double> delta, std::span<double> nu) {
-  for (std::size_t i = 0; i < grad.size(); ++i) nu[i] = kernel(grad[i], delta[i], c);
+using RowMajor3d = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
+
+// One loop per model: the switch stays outside the node loop.
+template <class GradAt>
+void apply(const SgsModel& model, std::size_t n, GradAt grad_at, std::span<const double> delta,
+           std::span<double> nu) {
+  const double c = model.constant;
+  switch (model.kind) {
+    case SgsKind::sigma:
+      for (std::size_t i = 0; i < n; ++i) nu[i] = sigma_nu(grad_at(i), delta[i], c);
+      break;
+    case SgsKind::wale:
+      for (std::size_t i = 0; i < n; ++i) nu[i] = wale_nu(grad_at(i), delta[i], c);
+      break;
+    case SgsKind::smagorinsky:
+      for (std::size_t i = 0; i < n; ++i) nu[i] = smagorinsky_nu(grad_at(i), delta[i], c);
+      break;
+    case SgsKind::none:
+      for (double& v : nu) v = 0.0;
+      break;
+  }
+}
+
+void check_sizes(const SgsModel& model, std::size_t grads, std::size_t delta, std::size_t nu) {
+  if (grads != delta || grads != nu)
+    throw std::invalid_argument(fmt::format(
+        "compute_nu_sgs ({}): sizes differ: {} gradients, {} filter widths, {} outputs",
+        name(model.kind), grads, delta, nu));
 }
 }  // namespace
 
 void compute_nu_sgs(const SgsModel& model, std::span<const Eigen::Matrix3d> grad,
                     std::span<const double> delta, std::span<double> nu_sgs) {
-  if (grad.size() != delta.size() || grad.size() != nu_sgs.size())
+  check_sizes(model, grad.size(), delta.size(), nu_sgs.size());
+  apply(model, grad.size(), [&](std::size_t i) -> const Eigen::Matrix3d& { return grad[i]; },
+        delta, nu_sgs);
+}
+
+void compute_nu_sgs(const SgsModel& model, std::span<const double> grad_flat,
+                    std::span<const double> delta, std::span<double> nu_sgs) {
+  if (grad_flat.size() % 9 != 0)
     throw std::invalid_argument(fmt::format(
-        "compute_nu_sgs ({}): sizes differ: {} gradients, {} filter widths, {} outputs",
-        name(model.kind), grad.size(), delta.size(), nu_sgs.size()));
-  switch (model.kind) {
-    case SgsKind::sigma: apply(sigma_nu, model.constant, grad, delta, nu_sgs); break;
-    case SgsKind::wale: apply(wale_nu, model.constant, grad, delta, nu_sgs); break;
-    case SgsKind::smagorinsky: apply(smagorinsky_nu, model.constant, grad, delta, nu_sgs); break;
-    case SgsKind::none:
-      for (double& v : nu_sgs) v = 0.0;
-      break;
-  }
+        "compute_nu_sgs ({}): flat gradient array of {} values is not 9 per node",
+        name(model.kind), grad_flat.size()));
+  const std::size_t n = grad_flat.size() / 9;
+  check_sizes(model, n, delta.size(), nu_sgs.size());
+  apply(model, n,
+        [&](std::size_t i) { return Eigen::Matrix3d(Eigen::Map<const RowMajor3d>(&grad_flat[9 * i])); },
+        delta, nu_sgs);
 }
 
 }  // namespace valsalva::les

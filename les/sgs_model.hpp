@@ -47,5 +47,8 @@ void filter_width(std::span<const double> volume, std::span<double> delta);
 // nu_sgs[i] = model(grad[i], delta[i]) for every node; sizes must agree (std::invalid_argument).
 void compute_nu_sgs(const SgsModel& model, std::span<const Eigen::Matrix3d> grad,
                     std::span<const double> delta, std::span<double> nu_sgs);
+// Same from a flat array of 9 values per node, row-major: g_ij = du_i/dx_j at grad[9 n + 3 i + j].
+void compute_nu_sgs(const SgsModel& model, std::span<const double> grad_flat,
+                    std::span<const double> delta, std::span<double> nu_sgs);
 
 }  // namespace valsalva::les

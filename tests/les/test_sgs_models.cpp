@@ -3,6 +3,8 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -208,7 +210,17 @@ TEST_CASE("array loop equals the kernels node by node") {
       worst = std::max(worst, std::abs(nu[i] - ref));
     }
     CHECK(worst == 0.0);
+    // Flat row-major layout gives the same values.
+    std::vector<double> flat(9 * n), nu_flat(n);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) flat[9 * i + 3 * r + c] = grad[i](r, c);
+    compute_nu_sgs(model, std::span<const double>(flat), delta, nu_flat);
+    CHECK(nu_flat == nu);
   }
+  std::vector<double> bad_flat(9 * n - 1);
+  CHECK_THROWS_AS(compute_nu_sgs(make_sgs_model("wale"), std::span<const double>(bad_flat), delta, nu),
+                  std::invalid_argument);
   std::vector<double> short_out(n - 1);
   CHECK_THROWS_AS(compute_nu_sgs(make_sgs_model("sigma"), grad, delta, short_out),
                   std::invalid_argument);
