@@ -82,15 +82,22 @@ void element_nodes(const NodeNumbering& number, const std::vector<std::size_t>& 
   }
 }
 
-// Physical group of each entity of dimension dim (entity tag -> group name).
-std::map<int, std::string> groups_of_entities(int dim, const std::string& source) {
-  std::map<int, std::string> group_of;
+// Physical groups of dimension dim; an entity in two groups is an error.
+struct EntityGroups {
+  std::map<int, std::string> group_of;  // entity tag -> group name
+  std::vector<std::string> names;       // group names in Gmsh's (tag) order
+};
+
+EntityGroups groups_of_entities(int dim, const std::string& source) {
+  EntityGroups result;
+  auto& group_of = result.group_of;
   gmsh::vectorpair groups;
   gmsh::model::getPhysicalGroups(groups, dim);
   for (const auto& [d, tag] : groups) {
     std::string name;
     gmsh::model::getPhysicalName(d, tag, name);
     if (name.empty()) name = fmt::format("{}_{}", dim == 3 ? "volume" : "surface", tag);
+    result.names.push_back(name);
     std::vector<int> entities;
     gmsh::model::getEntitiesForPhysicalGroup(d, tag, entities);
     for (int e : entities) {
@@ -103,11 +110,13 @@ std::map<int, std::string> groups_of_entities(int dim, const std::string& source
             dim == 3 ? "cell" : "boundary face"));
     }
   }
-  return group_of;
+  return result;
 }
 
 void add_cells(flow::Mesh& mesh, const NodeNumbering& number, const std::string& source) {
-  const auto regions = groups_of_entities(3, source);
+  const auto groups = groups_of_entities(3, source);
+  for (const auto& name : groups.names) mesh.add_region(name);
+  const auto& regions = groups.group_of;
   gmsh::vectorpair entities;
   gmsh::model::getEntities(entities, 3);
   std::vector<flow::GlobalIndex> nodes;
@@ -137,7 +146,9 @@ void add_cells(flow::Mesh& mesh, const NodeNumbering& number, const std::string&
 void add_boundary_faces(flow::Mesh& mesh, const NodeNumbering& number, const std::string& source) {
   // Surfaces outside every physical group (internal or untagged) are not boundary patches.
   std::vector<flow::GlobalIndex> nodes;
-  for (const auto& [entity, patch_name] : groups_of_entities(2, source)) {
+  const auto groups = groups_of_entities(2, source);
+  for (const auto& name : groups.names) mesh.add_patch(name);
+  for (const auto& [entity, patch_name] : groups.group_of) {
     const int patch = mesh.add_patch(patch_name);
     std::vector<int> types;
     std::vector<std::vector<std::size_t>> tags, node_tags;
