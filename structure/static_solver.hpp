@@ -1,0 +1,64 @@
+// Static equilibrium f_int(x) + lambda f_ext(x) = 0 by Newton's method with load stepping
+// (adaptive: a failed increment is halved), backtracking line search on the residual norm, and a
+// diagnosis when it cannot converge (inverted element, singular tangent, non-finite or
+// stagnating residual). Dirichlet supports prescribe displacement components on node sets; the
+// prescribed displacement is scaled by the load factor too.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "structure/loads.hpp"
+#include "structure/solid_forces.hpp"
+
+namespace valsalva::structure {
+
+struct Dirichlet {
+  std::vector<int> nodes;
+  std::array<bool, 3> components{true, true, true};
+  std::function<Vec3(const Vec3& X)> displacement;  // at load factor 1; empty means zero
+};
+
+struct PressureLoad {
+  std::vector<FaceRef> faces;
+  double pressure = 0;  // [Pa], follower, positive into the solid
+};
+
+struct TractionLoad {
+  std::vector<FaceRef> faces;
+  Vec3 traction = Vec3::Zero();  // [Pa], dead, per reference area
+};
+
+struct StaticProblem {
+  const SolidForces* forces = nullptr;
+  std::vector<Dirichlet> dirichlet;
+  std::vector<PressureLoad> pressures;
+  std::vector<TractionLoad> tractions;
+  Vec3 body_force = Vec3::Zero();  // per reference volume [N/m^3]
+};
+
+struct NewtonOptions {
+  int load_steps = 10;
+  int max_iterations = 30;
+  double rtol = 1e-9;     // residual / max(|lambda f_ext|, |reactions|)
+  int max_cuts = 8;       // successive halvings of a failing increment
+  bool line_search = true;
+  bool verbose = false;
+};
+
+struct NewtonResult {
+  bool converged = false;
+  Eigen::Matrix3Xd x;       // final positions (last converged state if not converged)
+  double load_factor = 0;   // reached
+  int steps = 0, iterations = 0, cuts = 0;
+  std::vector<double> last_residuals;  // relative residuals of the last increment
+  std::string diagnosis;    // why it failed, empty on success
+  std::string solver;       // linear solver used
+};
+
+NewtonResult solve_static(const StaticProblem& problem, const NewtonOptions& options,
+                          const Eigen::Matrix3Xd* initial = nullptr);
+
+}  // namespace valsalva::structure
