@@ -1,0 +1,44 @@
+// The run directory: every result of a run goes there, next to resolved_scene.toml (the scene
+// with all defaults). A non-empty directory is never reused unless the user asks (--overwrite or
+// run.overwrite = true), and then only if it is a valsalva run directory.
+#pragma once
+
+#include <mpi.h>
+
+#include <filesystem>
+#include <stdexcept>
+#include <string_view>
+
+#include "io/scene.hpp"
+
+namespace valsalva::io {
+
+class RunDirectoryError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class RunDirectory {
+ public:
+  // Collective over `comm`. Rank 0 creates `dir` (and its parents); an existing non-empty
+  // directory is refused unless `overwrite`, and with `overwrite` its contents are deleted only
+  // if it holds resolved_scene.toml (so a typo cannot wipe an unrelated folder). Rank 0 then
+  // writes resolved_scene.toml; the other ranks wait. Every rank returns the same directory or
+  // throws the same RunDirectoryError.
+  static RunDirectory prepare(const std::filesystem::path& dir, bool overwrite, const Scene& scene,
+                              MPI_Comm comm);
+
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path file(std::string_view name) const { return path_ / name; }
+
+  static constexpr std::string_view resolved_scene_name = "resolved_scene.toml";
+
+ private:
+  explicit RunDirectory(std::filesystem::path p) : path_(std::move(p)) {}
+  std::filesystem::path path_;
+};
+
+// run.output_dir, or runs/<scene file stem> when it is empty (relative to the working folder).
+std::filesystem::path default_run_path(const Scene& scene);
+
+}  // namespace valsalva::io

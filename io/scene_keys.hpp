@@ -1,0 +1,13 @@
+// One declaration function per module, each in io/scene_keys_<module>.cpp. scene_schema()
+// (io/scene_schema.cpp) calls every one of them: add a module's function here and there.
+#pragma once
+
+#include "io/scene_schema.hpp"
+
+namespace valsalva::io {
+
+void declare_run_keys(Schema& schema);        // io/scene_keys_run.cpp
+void declare_mesh_keys(Schema& schema);       // io/scene_keys_mesh.cpp
+void declare_partition_keys(Schema& schema);  // io/scene_keys_partition.cpp
+
+}  // namespace valsalva::io

@@ -1,0 +1,61 @@
+// Scene keys of the fluid mesh (flow/ mesh, io/ mesh import and generators): its source, the
+// built-in box and pipe generators, and periodic patch pairs.
+#include "io/scene_keys.hpp"
+
+namespace valsalva::io {
+
+void declare_mesh_keys(Schema& s) {
+  s.section("mesh", "Where the fluid mesh comes from.");
+  s.choice("mesh.source", {"box", "gmsh", "pipe"})
+      .required()
+      .unit_of("-")
+      .doc("Built-in box generator ([mesh.box]), a Gmsh .msh file (mesh.file), or a Gmsh-API pipe ([mesh.pipe])");
+  s.string("mesh.file")
+      .required()
+      .unit_of("-")
+      .doc("Gmsh .msh file (4.1 ASCII/binary or 2.2 ASCII), relative to the scene file's folder");
+  s.when("mesh.file", "mesh.source", {"gmsh"});
+  s.real("mesh.scale")
+      .def(1.0)
+      .above(0)
+      .unit_of("-")
+      .doc("Factor applied to all node coordinates, e.g. 0.001 for a mesh drawn in mm");
+
+  s.section("mesh.box", "Box generator: hexahedra, optionally split into other cell types.");
+  s.when("mesh.box", "mesh.source", {"box"});
+  s.real3("mesh.box.origin").def(std::array{0.0, 0.0, 0.0}).unit_of("m").doc("Corner with the smallest coordinates");
+  s.real3("mesh.box.length").def(std::array{1.0, 1.0, 1.0}).above(0).unit_of("m").doc("Edge lengths along x, y, z");
+  s.int3("mesh.box.cells").def(std::array{8, 8, 8}).at_least(1).unit_of("-").doc("Number of hexahedral cells along x, y, z");
+  s.choice("mesh.box.cell_type", {"hexa", "tetra", "prism", "pyramid", "mixed"})
+      .def("hexa")
+      .unit_of("-")
+      .doc("Keep hexahedra or split them into tetrahedra, prisms or pyramids; mixed combines several types");
+  s.real("mesh.box.perturbation")
+      .def(0.0)
+      .in_range(0, 0.4)
+      .unit_of("-")
+      .doc("Random node displacement, as a fraction of the local cell size h");
+  s.integer("mesh.box.seed").def(1).at_least(0).unit_of("-").doc("Seed of the node perturbation");
+  s.string_list("mesh.box.periodic")
+      .def(std::vector<std::string>{})
+      .values({"x", "y", "z"})
+      .unit_of("-")
+      .doc("Directions in which the box is periodic (its opposite faces are paired)");
+
+  s.section("mesh.pipe", "Pipe generator: Gmsh-API tetrahedral mesh of a circular cylinder.");
+  s.when("mesh.pipe", "mesh.source", {"pipe"});
+  s.real("mesh.pipe.radius").required().above(0).unit_of("m").doc("Pipe radius");
+  s.real("mesh.pipe.length").required().above(0).unit_of("m").doc("Pipe length along its axis");
+  s.real("mesh.pipe.size").required().above(0).unit_of("m").doc("Target tetrahedron edge length");
+
+  s.section("mesh.periodic.<pair>",
+            "Periodic patch pair (any table name): every node of `slave` sits at a node of `master` + translation.");
+  s.string("mesh.periodic.<pair>.master").required().unit_of("-").doc("Name of the master boundary patch");
+  s.string("mesh.periodic.<pair>.slave").required().unit_of("-").doc("Name of the slave boundary patch");
+  s.real3("mesh.periodic.<pair>.translation")
+      .required()
+      .unit_of("m")
+      .doc("Vector from a master node to its slave node");
+}
+
+}  // namespace valsalva::io

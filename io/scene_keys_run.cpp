@@ -1,0 +1,24 @@
+// Scene keys of a run as a whole: where results go and how often progress is printed.
+#include "io/scene_keys.hpp"
+
+namespace valsalva::io {
+
+void declare_run_keys(Schema& s) {
+  s.section("run", "Where results go and how the run reports progress.");
+  s.string("run.output_dir")
+      .def("")
+      .note("\"runs/<scene file stem>\"")
+      .unit_of("-")
+      .doc("Run directory for all results; empty means runs/<scene file stem> (see io/run_directory.hpp)");
+  s.boolean("run.overwrite")
+      .def(false)
+      .unit_of("-")
+      .doc("Allow reusing a non-empty run directory (same as --overwrite); its old contents are deleted");
+  s.integer("run.log_every")
+      .def(10)
+      .at_least(1)
+      .unit_of("-")
+      .doc("Print a progress line every this many time steps");
+}
+
+}  // namespace valsalva::io

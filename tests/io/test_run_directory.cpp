@@ -1,0 +1,101 @@
+// Run directories: created collectively, resolved_scene.toml written, a non-empty directory
+// refused without overwrite, and only run directories are cleared with it. Runs at 1 and 2 ranks.
+#include <doctest/doctest.h>
+#include <mpi.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "io/run_directory.hpp"
+
+namespace fs = std::filesystem;
+using namespace valsalva::io;
+
+namespace {
+
+// One scratch folder per test run, named by rank 0's pid and shared with the other ranks.
+fs::path scratch() {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  long pid = rank == 0 ? static_cast<long>(getpid()) : 0;
+  MPI_Bcast(&pid, 1, MPI_LONG, 0, MPI_COMM_WORLD);
+  return fs::temp_directory_path() / ("valsalva_run_dir_test_" + std::to_string(pid) + "_np" + std::to_string(size));
+}
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void barrier() { MPI_Barrier(MPI_COMM_WORLD); }
+
+}  // namespace
+
+TEST_CASE("prepare creates the directory, writes the resolved scene, and guards old results") {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  const fs::path root = scratch();
+  if (rank == 0) fs::remove_all(root);
+  barrier();
+  const Scene scene = parse_scene("[mesh]\nsource = \"box\"\n", "cube.toml");
+  const fs::path dir = root / "runs" / "cube";
+
+  const RunDirectory run = RunDirectory::prepare(dir, false, scene, MPI_COMM_WORLD);
+  CHECK(run.path() == dir);
+  CHECK(run.file("fields.h5") == dir / "fields.h5");
+  CHECK(fs::is_directory(dir));
+  CHECK(read(dir / "resolved_scene.toml") == scene.resolved());
+  // The saved scene is itself a valid scene that resolves to the same values.
+  CHECK(load_scene(dir / "resolved_scene.toml").table() == scene.table());
+
+  // Now non-empty: refused on every rank with a message naming the path and the way out.
+  barrier();
+  try {
+    RunDirectory::prepare(dir, false, scene, MPI_COMM_WORLD);
+    FAIL_CHECK("a non-empty run directory was reused without overwrite");
+  } catch (const RunDirectoryError& e) {
+    const std::string m = e.what();
+    CHECK(m.find("'" + dir.string() + "' is not empty") != std::string::npos);
+    CHECK(m.find("--overwrite") != std::string::npos);
+    CHECK(m.find("run.overwrite") != std::string::npos);
+  }
+
+  // With overwrite the old contents go.
+  if (rank == 0) std::ofstream(dir / "old_result.dat") << "old";
+  barrier();
+  RunDirectory::prepare(dir, true, scene, MPI_COMM_WORLD);
+  CHECK_FALSE(fs::exists(dir / "old_result.dat"));
+  CHECK(fs::exists(dir / "resolved_scene.toml"));
+
+  // A non-empty folder that is not a run directory is never cleared, even with overwrite.
+  const fs::path other = root / "not_a_run";
+  if (rank == 0) {
+    fs::create_directories(other);
+    std::ofstream(other / "thesis.tex") << "precious";
+  }
+  barrier();
+  CHECK_THROWS_WITH_AS(RunDirectory::prepare(other, true, scene, MPI_COMM_WORLD),
+                       doctest::Contains("refusing to delete its contents"), RunDirectoryError);
+  CHECK(read(other / "thesis.tex") == "precious");
+
+  // An existing empty directory is fine without overwrite.
+  const fs::path empty = root / "empty";
+  if (rank == 0) fs::create_directories(empty);
+  barrier();
+  CHECK_NOTHROW(RunDirectory::prepare(empty, false, scene, MPI_COMM_WORLD));
+  barrier();
+  if (rank == 0) fs::remove_all(root);
+}
+
+TEST_CASE("the default run path is runs/<scene file stem>") {
+  const Scene unnamed = parse_scene("[mesh]\nsource = \"box\"\n", "scenes/cavity.toml");
+  CHECK(default_run_path(unnamed) == fs::path("runs/cavity"));
+  const Scene named =
+      parse_scene("[run]\noutput_dir = \"out/a\"\n[mesh]\nsource = \"box\"\n", "scenes/cavity.toml");
+  CHECK(default_run_path(named) == fs::path("out/a"));
+}

@@ -1,0 +1,207 @@
+// Good scenes: typed getters, defaults, user-named tables, locations, and the resolved scene
+// round trip; the schema machinery (wildcards, conditions, float lists and tables) on a small
+// schema of its own.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+
+#include "io/scene.hpp"
+
+namespace fs = std::filesystem;
+using namespace valsalva::io;
+
+namespace {
+const fs::path data = fs::path(VALSALVA_SOURCE_DIR) / "tests/data/scenes";
+
+std::string error_of(std::string_view text, const Schema& schema = scene_schema()) {
+  try {
+    parse_scene(text, "t.toml", schema);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+}  // namespace
+
+TEST_CASE("a box scene with every key set reads back what the file says") {
+  const Scene s = load_scene(data / "box.toml");
+  CHECK(s.get<std::string>("run.output_dir") == "runs/box_test");
+  CHECK(s.get<bool>("run.overwrite"));
+  CHECK(s.get<int>("run.log_every") == 20);
+  CHECK(s.get<std::string>("mesh.source") == "box");
+  CHECK(s.get<double>("mesh.scale") == 1.0);  // integer 1 accepted for a float
+  CHECK(s.get<std::array<double, 3>>("mesh.box.origin") == std::array{-0.5, 0.0, 0.25});
+  CHECK(s.get<std::array<double, 3>>("mesh.box.length") == std::array{1.0, 2.0, 0.5});
+  CHECK(s.get<std::array<int, 3>>("mesh.box.cells") == std::array{4, 8, 2});
+  CHECK(s.get<std::string>("mesh.box.cell_type") == "tetra");
+  CHECK(s.get<double>("mesh.box.perturbation") == 0.2);
+  CHECK(s.get<std::int64_t>("mesh.box.seed") == 7);
+  CHECK(s.get<std::vector<std::string>>("mesh.box.periodic") == std::vector<std::string>{"x", "z"});
+  CHECK(s.get<int>("partition.ghost_layers") == 3);
+  CHECK(s.get<std::string>("partition.method") == "block");
+  CHECK_FALSE(s.has("mesh.pipe.radius"));  // switched off by mesh.source = "box"
+  CHECK_FALSE(s.has("mesh.file"));
+  const Location at = s.location("mesh.box.cells");
+  CHECK(at.file == (data / "box.toml").string());
+  CHECK(at.line == 14);
+  CHECK(at.column == 1);
+}
+
+TEST_CASE("defaults fill every key the file leaves out") {
+  const Scene s = load_scene(data / "pipe.toml");
+  CHECK(s.get<double>("mesh.pipe.radius") == 0.0125);
+  CHECK(s.get<double>("mesh.pipe.size") == 1.0e-3);
+  CHECK(s.get<std::string>("run.output_dir").empty());
+  CHECK_FALSE(s.get<bool>("run.overwrite"));
+  CHECK(s.get<int>("run.log_every") == 10);
+  CHECK(s.get<double>("mesh.scale") == 1.0);
+  CHECK(s.get<int>("partition.ghost_layers") == 2);
+  CHECK(s.get<std::string>("partition.method") == "metis");
+  CHECK_FALSE(s.has("mesh.box.cells"));
+  CHECK(s.is_set("mesh.pipe.radius"));
+  CHECK_FALSE(s.is_set("partition.method"));
+  // A defaulted key points at its nearest written table, or the first line.
+  CHECK(s.location("partition.method").line == 1);
+  CHECK(s.location("mesh.pipe.size").line == 8);
+  CHECK(s.location("mesh.pipe.size").column == 1);
+
+  const Scene b = parse_scene("[mesh]\nsource = \"box\"\n", "b.toml");
+  CHECK(b.get<std::array<int, 3>>("mesh.box.cells") == std::array{8, 8, 8});
+  CHECK(b.get<std::array<double, 3>>("mesh.box.length") == std::array{1.0, 1.0, 1.0});
+  CHECK(b.get<std::string>("mesh.box.cell_type") == "hexa");
+  CHECK(b.get<std::vector<std::string>>("mesh.box.periodic").empty());
+}
+
+TEST_CASE("user-named tables, file paths and errors raised by other modules") {
+  const Scene s = load_scene(data / "gmsh_periodic.toml");
+  CHECK(s.names("mesh.periodic") == std::vector<std::string>{"spanwise", "streamwise"});
+  CHECK(s.names("boundary").empty());
+  CHECK(s.get<std::string>("mesh.periodic.streamwise.slave") == "outlet");
+  CHECK(s.get<std::array<double, 3>>("mesh.periodic.spanwise.translation") ==
+        std::array{0.0, 0.0, 0.02});
+  CHECK(s.path("mesh.file") == (data / "meshes/channel.msh").lexically_normal());
+  CHECK(s.get<double>("mesh.scale") == 0.001);
+
+  const SceneError e = s.error("mesh.periodic.spanwise.master", "patch 'front' is not in the mesh",
+                               "inlet, outlet, wall");
+  CHECK(std::string(e.what()) == (data / "gmsh_periodic.toml").string() +
+                                     ":8:1: key 'mesh.periodic.spanwise.master': patch 'front' is "
+                                     "not in the mesh (accepted: inlet, outlet, wall)");
+  CHECK_THROWS_AS(s.get<double>("mesh.periodic.spanwise.master"), std::logic_error);
+  CHECK_THROWS_AS(s.get<double>("flow.no_such_key"), std::logic_error);
+  CHECK_THROWS_AS(s.get<double>("mesh.pipe.radius"), std::logic_error);
+}
+
+TEST_CASE("the resolved scene parses back to the same scene") {
+  for (const char* name : {"box.toml", "pipe.toml", "gmsh_periodic.toml"}) {
+    const std::string label = name;
+    CAPTURE(label);
+    const Scene s = load_scene(data / name);
+    const Scene again = parse_scene(s.resolved(), data / "resolved.toml");
+    CHECK(again.table() == s.table());
+    // Nothing left to fill: resolving a resolved scene changes nothing.
+    for (const auto& key : scene_schema().keys())
+      if (key.pattern.find('*') == std::string::npos && s.has(key.path))
+        CHECK(again.is_set(key.path));
+  }
+  const Scene s = load_scene(data / "pipe.toml");
+  const std::string text = s.resolved();
+  CHECK(text.find("log_every = 10") != std::string::npos);
+  CHECK(text.find("size = 0.001") != std::string::npos);
+  CHECK(text.find("method = 'metis'") != std::string::npos);
+}
+
+TEST_CASE("every ready-to-run scene in scenes/ is valid") {
+  std::size_t count = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(VALSALVA_SOURCE_DIR) / "scenes")) {
+    if (entry.path().extension() != ".toml") continue;
+    const std::string name = entry.path().string();
+    CAPTURE(name);
+    CHECK_NOTHROW(load_scene(entry.path()));
+    ++count;
+  }
+  CHECK(count >= 1);
+}
+
+TEST_CASE("schema machinery: wildcards, conditions, float lists and tables") {
+  Schema schema;
+  schema.section("boundary.<patch>", "Boundary condition of one patch.");
+  schema.choice("boundary.<patch>.type", {"wall", "velocity_inlet", "outlet"})
+      .required()
+      .unit_of("-")
+      .doc("Kind of condition");
+  schema.real3("boundary.<patch>.velocity").def(std::array{0.0, 0.0, 0.0}).unit_of("m/s").doc("Inlet velocity");
+  schema.when("boundary.<patch>.velocity", "boundary.<patch>.type", {"velocity_inlet"});
+  schema.section("waveform", "Flow-rate waveform.");
+  schema.real_list("waveform.times").required().at_least(0).at_least_size(2).unit_of("s").doc("Sample times");
+  schema.real_table("waveform.gains").def(std::map<std::string, double>{{"a", 1.0}}).above(0).unit_of("-").doc("Gains");
+  schema.check();
+
+  const Scene s = parse_scene(R"(
+[waveform]
+times = [0, 0.5, 1.0]
+gains = { up = 2.0, down = 0.5 }
+[boundary.wall_1]
+type = "wall"
+[boundary.in]
+type = "velocity_inlet"
+velocity = [0, 0, 0.3]
+)",
+                              "w.toml", schema);
+  CHECK(s.names("boundary") == std::vector<std::string>{"wall_1", "in"});
+  CHECK(s.get<std::array<double, 3>>("boundary.in.velocity") == std::array{0.0, 0.0, 0.3});
+  CHECK_FALSE(s.has("boundary.wall_1.velocity"));  // only inlets have a velocity
+  CHECK(s.get<std::vector<double>>("waveform.times") == std::vector{0.0, 0.5, 1.0});
+  CHECK(s.get<std::map<std::string, double>>("waveform.gains") ==
+        std::map<std::string, double>{{"down", 0.5}, {"up", 2.0}});
+
+  const std::string wall_velocity = error_of(
+      "[waveform]\ntimes = [0, 1]\n[boundary.w]\ntype = \"wall\"\nvelocity = [1, 0, 0]\n", schema);
+  CHECK(wall_velocity ==
+        "t.toml:5:1: key 'boundary.w.velocity': has no effect because boundary.w.type = \"wall\" "
+        "(accepted: only when boundary.w.type is \"velocity_inlet\")");
+  CHECK(error_of("[waveform]\ntimes = [0, 1]\n[boundary.w]\n", schema) ==
+        "t.toml:3:11: key 'boundary.w.type': required key is missing; expected a string "
+        "(accepted: \"wall\", \"velocity_inlet\", \"outlet\")");
+  CHECK(error_of("[waveform]\ntimes = [1]\n", schema) ==
+        "t.toml:2:9: key 'waveform.times': expected an array of numbers, got 1 values "
+        "(accepted: at least 2 values, each >= 0)");
+  CHECK(error_of("[waveform]\ntimes = [0, 1]\ngains = { up = -1 }\n", schema) ==
+        "t.toml:3:16: key 'waveform.gains.up': value -1 is out of range (accepted: each > 0)");
+  CHECK(error_of("[waveform]\ntimes = [0, 1]\n[boundary.w]\ntype = \"wal\"\n", schema) ==
+        "t.toml:4:8: key 'boundary.w.type': unknown value \"wal\"; did you mean \"wall\"? "
+        "(accepted: \"wall\", \"velocity_inlet\", \"outlet\")");
+  CHECK(error_of("[waveform]\ntimes = [0, 1]\n[boundary.w]\ntype = \"wall\"\nvelocty = 1\n",
+                 schema) ==
+        "t.toml:5:1: key 'boundary.w.velocty': unknown key; did you mean 'boundary.w.velocity'? "
+        "(accepted: keys type, velocity)");
+}
+
+TEST_CASE("bad declarations are refused when the schema is checked") {
+  Schema no_default;
+  no_default.section("a", "A.");
+  no_default.real("a.x").unit_of("m").doc("x");
+  CHECK_THROWS_WITH_AS(no_default.check(),
+                       "scene schema: key 'a.x': needs exactly one of a default or required()",
+                       std::logic_error);
+  Schema bad_default;
+  bad_default.section("a", "A.");
+  bad_default.integer("a.n").def(0).at_least(1).unit_of("-").doc("n");
+  CHECK_THROWS_AS(bad_default.check(), std::logic_error);
+  Schema twice;
+  twice.section("a", "A.");
+  twice.real("a.x").def(1.0).unit_of("m").doc("x");
+  twice.real("a.x").def(2.0).unit_of("m").doc("x");
+  CHECK_THROWS_WITH_AS(twice.check(), "scene schema: key 'a.x': declared twice", std::logic_error);
+  Schema no_section;
+  no_section.real("b.x").def(1.0).unit_of("m").doc("x");
+  CHECK_THROWS_AS(no_section.check(), std::logic_error);
+  CHECK_NOTHROW(scene_schema().check());
+}
+
+TEST_CASE("edit distance") {
+  CHECK(edit_distance("cels", "cells") == 1);
+  CHECK(edit_distance("partiton", "partition") == 1);
+  CHECK(edit_distance("kitten", "sitting") == 3);
+  CHECK(edit_distance("", "abc") == 3);
+}
