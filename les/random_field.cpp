@@ -16,7 +16,7 @@ namespace valsalva::les {
 
 void random_solenoidal_field(const std::function<double(double)>& spectrum, int n, double length,
                              std::uint64_t seed, std::span<double> u, std::span<double> v,
-                             std::span<double> w) {
+                             std::span<double> w, Amplitudes amplitudes) {
   check_box_fields("random_solenoidal_field", n, u.size(), v.size(), w.size());
   if (!(length > 0.0))
     throw std::invalid_argument(fmt::format("random_solenoidal_field: box length {} <= 0", length));
@@ -52,6 +52,8 @@ void random_solenoidal_field(const std::function<double(double)>& spectrum, int 
     amplitude[s] = std::sqrt(2.0 * e * dk / modes[s]);
   }
 
+  // White noise normalised by 1/n^3 has <|r_hat_c|^2> = 1/n^3; P keeps 2 of 3 components.
+  const double gaussian_scale = std::sqrt(0.5 * static_cast<double>(box.real_size()));
   for_each_mode(box, [&](std::size_t i, int mx, int my, int mz, double) {
     const int s = shell_of(mx, my, mz);
     if (s < 1 || s > smax) {
@@ -66,7 +68,8 @@ void random_solenoidal_field(const std::function<double(double)>& spectrum, int 
       hat[c][i] -= k[c] * kr;
       norm2 += std::norm(hat[c][i]);
     }
-    const double scale = norm2 > 0.0 ? amplitude[s] / std::sqrt(norm2) : 0.0;
+    double scale = amplitude[s] * gaussian_scale;
+    if (amplitudes == Amplitudes::fixed) scale = norm2 > 0.0 ? amplitude[s] / std::sqrt(norm2) : 0.0;
     for (auto& h : hat) h[i] *= scale;
   });
 

@@ -163,6 +163,42 @@ TEST_CASE("random solenoidal field: prescribed spectrum, zero divergence, isotro
   CHECK(energy_spectrum(u2, v2, w2, n, L).total() == doctest::Approx(s.total()).epsilon(1e-12));
 }
 
+TEST_CASE("gaussian random solenoidal field: spectrum within its chi^2 scatter") {
+  // Shell energy / E(k_s) dk ~ chi^2_{2 M_s} / (2 M_s): z_s = (E_s / E - 1) sqrt(M_s) is close to
+  // N(0, 1) (M_s >= 18 modes). Bounds: every |z_s| < 4.5 and sum z_s^2 within 4 standard
+  // deviations of its chi^2_15 mean (15 +/- 4 sqrt(30)). Checked offline over 400 seeds at 16^3:
+  // mean sum z^2 = 7.06 for 7 shells (variance 13.5, 14 expected).
+  const int n = 32;
+  const double L = 2 * pi;
+  auto model = [](double k) { return std::pow(k, 4) / std::pow(1 + k * k, 17.0 / 6.0); };
+  std::vector<double> u(n * n * n), v(u.size()), w(u.size());
+  random_solenoidal_field(model, n, L, 7, u, v, w, Amplitudes::gaussian);
+  const EnergySpectrum s = energy_spectrum(u, v, w, n, L);
+  std::vector<int> count(n, 0);
+  auto sg = [&](int i) { return i <= n / 2 ? i : i - n; };
+  for (int c = 0; c < n; ++c)
+    for (int b = 0; b < n; ++b)
+      for (int a = 0; a < n; ++a) {
+        const int sh = int(std::lround(std::sqrt(double(sg(a) * sg(a) + sg(b) * sg(b) + sg(c) * sg(c)))));
+        if (sh < n) ++count[sh];
+      }
+  double zmax = 0.0, chi2 = 0.0;
+  for (int sh = 1; sh <= n / 2 - 1; ++sh) {
+    const double z = (s.E[sh] / model(s.k[sh]) - 1.0) * std::sqrt(double(count[sh]));
+    zmax = std::max(zmax, std::abs(z));
+    chi2 += z * z;
+  }
+  const double div = spectral_divergence_ratio(u, v, w, n, L);
+  MESSAGE("gaussian field 32^3: shell 1 has " << count[1] << " modes, max |z| = " << zmax
+          << ", sum z^2 = " << chi2 << " (15 expected), divergence ratio " << div);
+  CHECK(count[1] == 18);
+  CHECK(zmax < 4.5);
+  CHECK(std::abs(chi2 - 15.0) < 4.0 * std::sqrt(30.0));
+  CHECK(div < 1e-14);
+  CHECK(s.E[0] * s.dk < 1e-30);
+  CHECK(s.E[n / 2] * s.dk < 1e-30);
+}
+
 TEST_CASE("random solenoidal field: bad input is named") {
   std::vector<double> u(8 * 8 * 8), v(u.size()), w(u.size());
   auto bad = [](double k) { return k > 3.0 ? -1.0 : 1.0; };
