@@ -228,7 +228,9 @@ flow::Mesh read_gmsh(const std::filesystem::path& path) {
   const std::string source = path.string();
   check_complete(path);
   GmshSession session;
-  gmsh_call(source, [&] { gmsh::open(source); });
+  gmsh_call(source + ": cannot read the file (a syntax error, a truncated section or an element "
+                     "type Gmsh does not know)",
+            [&] { gmsh::open(source); });
   return mesh_from_gmsh_model(source);
 }
 

@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <numeric>
 #include <string>
@@ -228,4 +230,44 @@ TEST_CASE("missing and unreadable files give errors naming the file") {
     CHECK(std::string(e.what()).find("cannot open") != std::string::npos);
   }
   fs::remove_all(missing.parent_path());
+}
+
+TEST_CASE("a file cut anywhere gives MeshFileError or the complete mesh, never a crash") {
+  const fs::path dir = scratch_dir("cut");
+  {
+    io::GmshSession session;
+    gmsh::model::add("small");
+    gmsh::model::occ::addBox(0, 0, 0, 1, 1, 1);
+    gmsh::model::occ::synchronize();
+    gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {1, 2, 3, 4, 5, 6}), "wall");
+    gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {1}), "fluid");
+    gmsh::option::setNumber("Mesh.MeshSizeMax", 0.7);
+    gmsh::model::mesh::generate(3);
+    write_all_formats(dir);
+  }
+  for (const auto& f : formats) {
+    const std::string format = f.name;
+    CAPTURE(format);
+    const fs::path full = dir / (format + ".msh");
+    const flow::Mesh reference = io::read_gmsh(full);
+    std::ifstream in(full, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const fs::path cut = dir / ("cut_" + format + ".msh");
+    int errors = 0, complete = 0;
+    for (std::size_t size = 0; size < bytes.size(); size += 1 + bytes.size() / 60) {
+      std::ofstream(cut, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(size));
+      try {
+        const flow::Mesh mesh = io::read_gmsh(cut);
+        CHECK(mesh.cell_nodes == reference.cell_nodes);  // only a complete mesh may come back
+        CHECK(mesh.face_nodes == reference.face_nodes);
+        ++complete;
+      } catch (const io::MeshFileError& e) {
+        CHECK(std::string(e.what()).find(cut.string()) != std::string::npos);
+        ++errors;
+      }
+    }
+    MESSAGE(format, ": ", errors, " cuts rejected, ", complete, " complete");
+    CHECK(errors >= 55);
+  }
+  fs::remove_all(dir);
 }
