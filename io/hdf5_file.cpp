@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 #include <hdf5.h>
 
+#include "flow/comm.hpp"
+
 #include <algorithm>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <type_traits>
@@ -41,21 +44,63 @@ hid_t native_type() {
   if constexpr (std::is_same_v<T, std::uint8_t>) return H5T_NATIVE_UINT8;
 }
 
+// Rows [start, start + count) of a dataset; count == 0 selects nothing.
 struct Run {
-  hsize_t start;
-  hsize_t count;
+  hsize_t start = 0;
+  hsize_t count = 0;
 };
 
-// Contiguous runs of a sorted list of unique rows.
-std::vector<Run> runs_of(std::span<const std::int64_t> sorted_rows) {
-  std::vector<Run> runs;
-  for (std::int64_t r : sorted_rows) {
-    if (!runs.empty() && runs.back().start + runs.back().count == static_cast<hsize_t>(r))
-      ++runs.back().count;
-    else
-      runs.push_back({static_cast<hsize_t>(r), 1});
+// Scattered rows are first sent to the rank of their block (rank r holds rows
+// [rows r / P, rows (r + 1) / P)), which then transfers one contiguous hyperslab: a union of many
+// small hyperslabs costs HDF5 1.10 quadratic time (60 s for 100k rows scattered over 2 ranks).
+struct BlockLayout {
+  std::int64_t rows;
+  int ranks;
+  std::int64_t start(int r) const { return rows * r / ranks; }
+  int owner(std::int64_t row) const {
+    int r = static_cast<int>(row * ranks / std::max<std::int64_t>(rows, 1));
+    while (r + 1 < ranks && start(r + 1) <= row) ++r;
+    while (r > 0 && start(r) > row) --r;
+    return r;
   }
-  return runs;
+  // Rows per destination for rows sorted in increasing order.
+  std::vector<int> counts(std::span<const std::int64_t> sorted_rows) const {
+    std::vector<int> n(ranks, 0);
+    for (std::int64_t row : sorted_rows) ++n[owner(row)];
+    return n;
+  }
+};
+
+// MPI_Alltoallv of consecutive slices of `send` (send_counts[r] elements to rank r, `width`
+// values each); returns what arrives, ordered by source rank, and the per-source counts.
+template <class U>
+std::vector<U> exchange(const flow::Comm& comm, std::span<const U> send,
+                        std::span<const int> send_counts, std::size_t width,
+                        std::vector<int>& recv_counts) {
+  const int p = comm.size();
+  recv_counts.assign(p, 0);
+  VALSALVA_MPI(MPI_Alltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT,
+                            comm.get()));
+  auto bytes = [&](std::span<const int> counts, std::vector<int>& n, std::vector<int>& displ) {
+    n.resize(p);
+    displ.resize(p);
+    std::int64_t total = 0;
+    for (int r = 0; r < p; ++r) {
+      n[r] = static_cast<int>(counts[r] * width * sizeof(U));
+      displ[r] = static_cast<int>(total);
+      total += static_cast<std::int64_t>(counts[r]) * width * sizeof(U);
+    }
+    if (total > std::numeric_limits<int>::max())
+      throw std::runtime_error(fmt::format("HDF5 row exchange: {} bytes exceed MPI's int counts",
+                                           total));
+    return static_cast<std::size_t>(total / sizeof(U));
+  };
+  std::vector<int> sn, sd, rn, rd;
+  bytes(send_counts, sn, sd);
+  std::vector<U> recv(bytes(recv_counts, rn, rd));
+  VALSALVA_MPI(MPI_Alltoallv(send.data(), sn.data(), sd.data(), MPI_BYTE, recv.data(), rn.data(),
+                             rd.data(), MPI_BYTE, comm.get()));
+  return recv;
 }
 
 class Context {
@@ -88,19 +133,16 @@ Handle transfer_list(bool parallel, const Context& check) {
 
 Id plist_or_default(const Handle& h) { return h.valid() ? h.get() : H5P_DEFAULT; }
 
-// Selects the rows of `runs` (all columns) in a [rows x cols] file space.
-void select_runs(Id space, std::span<const Run> runs, int cols, const Context& check) {
-  if (runs.empty()) {
+// Selects the rows of `run` (all columns) in a [rows x cols] file space.
+void select_run(Id space, Run run, int cols, const Context& check) {
+  if (run.count == 0) {
     check(H5Sselect_none(space), "H5Sselect_none");
     return;
   }
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    const hsize_t start[2] = {runs[i].start, 0};
-    const hsize_t count[2] = {runs[i].count, static_cast<hsize_t>(cols)};
-    check(H5Sselect_hyperslab(space, i == 0 ? H5S_SELECT_SET : H5S_SELECT_OR, start, nullptr,
-                              count, nullptr),
-          "H5Sselect_hyperslab");
-  }
+  const hsize_t start[2] = {run.start, 0};
+  const hsize_t count[2] = {run.count, static_cast<hsize_t>(cols)};
+  check(H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr),
+        "H5Sselect_hyperslab");
 }
 
 // A 1D memory space of n values; with n == 0 a one-element space with nothing selected, since
@@ -185,24 +227,20 @@ void File::close() {
   if (file_.reset() < 0) fail("H5Fclose", path_, "");
 }
 
+void settle(MPI_Comm comm, const std::string& local_error) {
+  const flow::Comm world(comm);
+  if (world.max(std::int64_t(local_error.empty() ? 0 : 1)) == 0) return;
+  throw std::runtime_error(local_error.empty() ? "invalid input on another rank" : local_error);
+}
+
 namespace {
 
-// Creates the dataset and writes the selected rows; `data` holds them in increasing row order.
+// Creates the dataset and writes rows `run` from `data` (run.count rows).
 template <class T>
-void write_runs(Id file, bool parallel, const std::filesystem::path& path,
-                const std::string& name, std::int64_t global_rows, int cols,
-                std::span<const Run> runs, std::span<const T> data) {
+void write_run(Id file, bool parallel, const std::filesystem::path& path,
+               const std::string& name, std::int64_t global_rows, int cols, Run run,
+               std::span<const T> data) {
   Context check(path, name);
-  const int width = std::max(cols, 1);
-  if (global_rows < 0 || cols < 0) check.error(fmt::format("bad shape {} x {}", global_rows, cols));
-  std::size_t rows = 0;
-  for (const Run& r : runs) {
-    if (r.start + r.count > static_cast<hsize_t>(global_rows))
-      check.error(fmt::format("row {} outside [0, {})", r.start + r.count - 1, global_rows));
-    rows += r.count;
-  }
-  if (data.size() != rows * width)
-    check.error(fmt::format("{} values given for {} rows of {} columns", data.size(), rows, width));
   const hsize_t dims[2] = {static_cast<hsize_t>(global_rows), static_cast<hsize_t>(cols)};
   Handle filespace(check(H5Screate_simple(cols == 0 ? 1 : 2, dims, nullptr), "H5Screate_simple"),
                    Handle::Kind::dataspace);
@@ -210,7 +248,7 @@ void write_runs(Id file, bool parallel, const std::filesystem::path& path,
                                H5P_DEFAULT, H5P_DEFAULT),
                     "H5Dcreate2"),
               Handle::Kind::dataset);
-  select_runs(filespace.get(), runs, width, check);
+  select_run(filespace.get(), run, std::max(cols, 1), check);
   Handle memspace = memory_space(data.size(), check);
   Handle dxpl = transfer_list(parallel, check);
   const T dummy{};
@@ -220,19 +258,39 @@ void write_runs(Id file, bool parallel, const std::filesystem::path& path,
   if (dset.reset() < 0) fail("H5Dclose", path, name);
 }
 
-// Every rank of a parallel file must create the same dataset shape.
-void check_same_shape(MPI_Comm comm, const std::filesystem::path& path, const std::string& name,
-                      std::int64_t global_rows, int cols) {
-  if (comm == MPI_COMM_NULL) return;
+// Reads rows `run` of an existing dataset into `out` (run.count rows).
+template <class T>
+void read_run(Id file, bool parallel, const std::filesystem::path& path, const std::string& name,
+              int width, Run run, std::span<T> out) {
   Context check(path, name);
-  const std::int64_t mine[2] = {global_rows, cols};
-  std::int64_t lo[2], hi[2];
-  if (MPI_Allreduce(mine, lo, 2, MPI_INT64_T, MPI_MIN, comm) != MPI_SUCCESS ||
-      MPI_Allreduce(mine, hi, 2, MPI_INT64_T, MPI_MAX, comm) != MPI_SUCCESS)
-    check.error("MPI_Allreduce failed");
-  if (lo[0] != hi[0] || lo[1] != hi[1])
-    check.error(fmt::format("ranks disagree on the shape: rows {}..{}, columns {}..{}", lo[0],
-                            hi[0], lo[1], hi[1]));
+  Handle dset(check(H5Dopen2(file, name.c_str(), H5P_DEFAULT), "H5Dopen2"),
+              Handle::Kind::dataset);
+  Handle filespace(check(H5Dget_space(dset.get()), "H5Dget_space"), Handle::Kind::dataspace);
+  select_run(filespace.get(), run, width, check);
+  Handle memspace = memory_space(out.size(), check);
+  Handle dxpl = transfer_list(parallel, check);
+  T dummy{};
+  check(H5Dread(dset.get(), native_type<T>(), memspace.get(), filespace.get(),
+                plist_or_default(dxpl), out.empty() ? &dummy : out.data()),
+        "H5Dread");
+}
+
+// Every rank of a parallel file must create the same dataset shape.
+std::string same_shape(MPI_Comm comm, std::int64_t global_rows, int cols) {
+  if (comm == MPI_COMM_NULL) return {};
+  const flow::Comm world(comm);
+  const std::int64_t rows_hi = world.max(global_rows), rows_lo = -world.max(-global_rows);
+  const std::int64_t cols_hi = world.max(std::int64_t(cols)), cols_lo = -world.max(-std::int64_t(cols));
+  if (rows_lo == rows_hi && cols_lo == cols_hi) return {};
+  return fmt::format("ranks disagree on the shape: rows {}..{}, columns {}..{}", rows_lo, rows_hi,
+                     cols_lo, cols_hi);
+}
+
+// The smallest run holding all of the sorted rows.
+Run cover(std::span<const std::int64_t> sorted_rows) {
+  if (sorted_rows.empty()) return {};
+  return {static_cast<hsize_t>(sorted_rows.front()),
+          static_cast<hsize_t>(sorted_rows.back() - sorted_rows.front() + 1)};
 }
 
 }  // namespace
@@ -240,38 +298,79 @@ void check_same_shape(MPI_Comm comm, const std::filesystem::path& path, const st
 template <class T>
 void File::write_rows(const std::string& name, std::int64_t global_rows, int cols,
                       std::span<const std::int64_t> row_ids, std::span<const T> data) {
-  check_same_shape(comm_, path_, name, global_rows, cols);
-  Context check(path_, name);
   const std::size_t width = std::max(cols, 1);
-  if (data.size() != row_ids.size() * width)
-    check.error(fmt::format("{} values given for {} rows of {} columns", data.size(),
-                            row_ids.size(), width));
-  // Hyperslab unions are transferred in increasing file order: sort rows, permute the data.
+  auto where = [&](const std::string& what) {
+    return fmt::format("HDF5 file '{}', dataset '{}': {}", path_.string(), name, what);
+  };
+  std::string error = same_shape(comm_, global_rows, cols);
+  if (error.empty() && (global_rows < 0 || cols < 0))
+    error = fmt::format("bad shape {} x {}", global_rows, cols);
+  if (error.empty() && data.size() != row_ids.size() * width)
+    error = fmt::format("{} values given for {} rows of {} columns", data.size(), row_ids.size(),
+                        width);
+  // Sort the rows (hyperslabs are transferred in file order) and permute the data alike.
   std::vector<std::size_t> order(row_ids.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return row_ids[a] < row_ids[b]; });
   std::vector<std::int64_t> sorted(row_ids.size());
-  std::vector<T> buffer(data.size());
-  for (std::size_t i = 0; i < order.size(); ++i) {
+  std::vector<T> buffer(error.empty() ? data.size() : 0);
+  for (std::size_t i = 0; i < order.size() && error.empty(); ++i) {
     sorted[i] = row_ids[order[i]];
-    if (sorted[i] < 0) check.error(fmt::format("negative row id {}", sorted[i]));
-    if (i > 0 && sorted[i] == sorted[i - 1])
-      check.error(fmt::format("row id {} given twice", sorted[i]));
-    std::copy_n(data.begin() + order[i] * width, width, buffer.begin() + i * width);
+    if (sorted[i] < 0 || sorted[i] >= global_rows)
+      error = fmt::format("row id {} outside [0, {})", sorted[i], global_rows);
+    else if (i > 0 && sorted[i] == sorted[i - 1])
+      error = fmt::format("row id {} given twice", sorted[i]);
+    else
+      std::copy_n(data.begin() + order[i] * width, width, buffer.begin() + i * width);
   }
-  write_runs<T>(file_.get(), parallel_, path_, name, global_rows, cols, runs_of(sorted), buffer);
+  if (parallel_) settle(comm_, error.empty() ? error : where(error));
+  if (!error.empty()) throw std::runtime_error(where(error));
+
+  if (!parallel_) {  // one covering hyperslab, gaps at the fill value
+    const Run run = cover(sorted);
+    std::vector<T> block(run.count * width, T{});
+    for (std::size_t i = 0; i < sorted.size(); ++i)
+      std::copy_n(buffer.begin() + i * width, width, block.begin() + (sorted[i] - run.start) * width);
+    write_run<T>(file_.get(), false, path_, name, global_rows, cols, run, block);
+    return;
+  }
+  const flow::Comm world(comm_);
+  const BlockLayout layout{global_rows, world.size()};
+  const std::vector<int> counts = layout.counts(sorted);
+  std::vector<int> recv_counts;
+  const auto ids = exchange<std::int64_t>(world, sorted, counts, 1, recv_counts);
+  const auto values = exchange<T>(world, buffer, counts, width, recv_counts);
+  const Run run{static_cast<hsize_t>(layout.start(world.rank())),
+                static_cast<hsize_t>(layout.start(world.rank() + 1) - layout.start(world.rank()))};
+  std::vector<T> block(run.count * width, T{});
+  std::vector<char> seen(run.count, 0);
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    const std::size_t local = ids[i] - run.start;
+    if (seen[local]++ != 0 && error.empty())
+      error = where(fmt::format("row id {} given by two ranks", ids[i]));
+    std::copy_n(values.begin() + i * width, width, block.begin() + local * width);
+  }
+  settle(comm_, error);
+  write_run<T>(file_.get(), true, path_, name, global_rows, cols, run, block);
 }
 
 template <class T>
 void File::write_block(const std::string& name, std::int64_t global_rows, int cols,
                        std::int64_t first_row, std::span<const T> data) {
-  check_same_shape(comm_, path_, name, global_rows, cols);
   const std::size_t width = std::max(cols, 1);
-  std::vector<Run> runs;
-  if (!data.empty())
-    runs.push_back({static_cast<hsize_t>(first_row), static_cast<hsize_t>(data.size() / width)});
-  write_runs<T>(file_.get(), parallel_, path_, name, global_rows, cols, runs, data);
+  std::string error = same_shape(comm_, global_rows, cols);
+  const auto rows = static_cast<std::int64_t>(data.size() / width);
+  if (error.empty() && (data.size() % width != 0 || first_row < 0 || first_row + rows > global_rows))
+    error = fmt::format("block of {} values at row {} does not fit {} rows of {} columns",
+                        data.size(), first_row, global_rows, width);
+  if (!error.empty())
+    error = fmt::format("HDF5 file '{}', dataset '{}': {}", path_.string(), name, error);
+  if (parallel_) settle(comm_, error);
+  if (!error.empty()) throw std::runtime_error(error);
+  const Run run{static_cast<hsize_t>(first_row), static_cast<hsize_t>(rows)};
+  write_run<T>(file_.get(), parallel_, path_, name, global_rows, cols, rows > 0 ? run : Run{},
+               data);
 }
 
 std::vector<std::int64_t> File::dims(const std::string& name) const {
@@ -297,31 +396,49 @@ bool File::has(const std::string& name) const {
 template <class T>
 std::vector<T> File::read_rows(const std::string& name,
                                std::span<const std::int64_t> row_ids) const {
-  Context check(path_, name);
   const std::vector<std::int64_t> shape = dims(name);
-  if (shape.empty() || shape.size() > 2) check.error("expected a 1D or 2D dataset");
-  const std::size_t width = shape.size() == 2 ? shape[1] : 1;
   std::vector<std::int64_t> unique(row_ids.begin(), row_ids.end());
   std::sort(unique.begin(), unique.end());
   unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
-  if (!unique.empty() && (unique.front() < 0 || unique.back() >= shape[0]))
-    check.error(fmt::format("row ids {}..{} outside [0, {})", unique.front(), unique.back(),
-                            shape[0]));
-  Handle dset(check(H5Dopen2(file_.get(), name.c_str(), H5P_DEFAULT), "H5Dopen2"),
-              Handle::Kind::dataset);
-  Handle filespace(check(H5Dget_space(dset.get()), "H5Dget_space"), Handle::Kind::dataspace);
-  select_runs(filespace.get(), runs_of(unique), static_cast<int>(width), check);
-  std::vector<T> buffer(unique.size() * width);
-  Handle memspace = memory_space(buffer.size(), check);
-  Handle dxpl = transfer_list(parallel_, check);
-  T dummy{};
-  check(H5Dread(dset.get(), native_type<T>(), memspace.get(), filespace.get(),
-                plist_or_default(dxpl), buffer.empty() ? &dummy : buffer.data()),
-        "H5Dread");
+  std::string error;
+  if (shape.empty() || shape.size() > 2)
+    error = "expected a 1D or 2D dataset";
+  else if (!unique.empty() && (unique.front() < 0 || unique.back() >= shape[0]))
+    error = fmt::format("row ids {}..{} outside [0, {})", unique.front(), unique.back(), shape[0]);
+  if (!error.empty())
+    error = fmt::format("HDF5 file '{}', dataset '{}': {}", path_.string(), name, error);
+  if (parallel_) settle(comm_, error);
+  if (!error.empty()) throw std::runtime_error(error);
+  const std::size_t width = shape.size() == 2 ? shape[1] : 1;
+  const int cols = static_cast<int>(width);
+
+  std::vector<T> values(unique.size() * width);  // rows of `unique`
+  if (!parallel_) {
+    const Run run = cover(unique);
+    std::vector<T> block(run.count * width);
+    read_run<T>(file_.get(), false, path_, name, cols, run, block);
+    for (std::size_t i = 0; i < unique.size(); ++i)
+      std::copy_n(block.begin() + (unique[i] - run.start) * width, width, values.begin() + i * width);
+  } else {  // ask each block's rank for its rows; answers come back in the order asked
+    const flow::Comm world(comm_);
+    const BlockLayout layout{shape[0], world.size()};
+    const std::vector<int> counts = layout.counts(unique);
+    std::vector<int> asked_counts, answer_counts;
+    const auto asked = exchange<std::int64_t>(world, unique, counts, 1, asked_counts);
+    std::vector<std::int64_t> sorted_asked = asked;
+    std::sort(sorted_asked.begin(), sorted_asked.end());
+    const Run run = cover(sorted_asked);
+    std::vector<T> block(run.count * width);
+    read_run<T>(file_.get(), true, path_, name, cols, run, block);
+    std::vector<T> answers(asked.size() * width);
+    for (std::size_t i = 0; i < asked.size(); ++i)
+      std::copy_n(block.begin() + (asked[i] - run.start) * width, width, answers.begin() + i * width);
+    values = exchange<T>(world, answers, asked_counts, width, answer_counts);
+  }
   std::vector<T> out(row_ids.size() * width);
   for (std::size_t i = 0; i < row_ids.size(); ++i) {
     const auto pos = std::lower_bound(unique.begin(), unique.end(), row_ids[i]) - unique.begin();
-    std::copy_n(buffer.begin() + pos * width, width, out.begin() + i * width);
+    std::copy_n(values.begin() + pos * width, width, out.begin() + i * width);
   }
   return out;
 }

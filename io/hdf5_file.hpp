@@ -56,7 +56,8 @@ class File {
 
   // Creates dataset `name` of shape [global_rows] (cols == 0) or [global_rows x cols] and writes
   // the rows `row_ids` of this rank (any order, unique over all ranks); `data` holds
-  // row_ids.size() rows, row-major. Rows nobody writes stay at the fill value 0.
+  // row_ids.size() rows, row-major. Rows nobody writes stay at the fill value 0. In parallel the
+  // rows are first sent to the rank of their block, so each rank writes one contiguous slab.
   template <class T>
   void write_rows(const std::string& name, std::int64_t global_rows, int cols,
                   std::span<const std::int64_t> row_ids, std::span<const T> data);
@@ -90,6 +91,10 @@ class File {
   MPI_Comm comm_ = MPI_COMM_NULL;  // not owned; must outlive the file
   Handle file_;
 };
+
+// Collective over `comm`: throws on every rank when any rank has a non-empty error (its own
+// message, or "invalid input on another rank"), so that no rank waits alone in a collective call.
+void settle(MPI_Comm comm, const std::string& local_error);
 
 // "HDF5 error in <call> (file '<path>', dataset '<name>'): <HDF5's own description>".
 [[noreturn]] void fail(const std::string& call, const std::filesystem::path& file,

@@ -8,6 +8,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "flow/comm.hpp"
 #include "flow/mesh.hpp"
 #include "io/hdf5_file.hpp"
 
@@ -17,33 +18,11 @@ static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "Vector3d arrays mu
 
 namespace {
 
-void mpi_check(int rc, const char* call) {
-  if (rc != MPI_SUCCESS) throw std::runtime_error(fmt::format("XdmfWriter: {} failed ({})", call, rc));
-}
-
-// An input error found on any rank becomes an exception on every rank, so that no rank is left
-// waiting alone in a collective HDF5 call.
-void agree(MPI_Comm comm, const std::string& local_error) {
-  const int bad = local_error.empty() ? 0 : 1;
-  int any = 0;
-  mpi_check(MPI_Allreduce(&bad, &any, 1, MPI_INT, MPI_MAX, comm), "MPI_Allreduce");
-  if (any != 0)
-    throw std::runtime_error(local_error.empty() ? "XdmfWriter: invalid input on another rank"
-                                                 : local_error);
-}
-
-std::int64_t sum(MPI_Comm comm, std::int64_t value) {
-  std::int64_t total = 0;
-  mpi_check(MPI_Allreduce(&value, &total, 1, MPI_INT64_T, MPI_SUM, comm), "MPI_Allreduce");
-  return total;
-}
-
-std::int64_t exclusive_prefix(MPI_Comm comm, std::int64_t value) {
+// MPI_Exscan leaves rank 0's result undefined.
+std::int64_t exclusive_prefix(const flow::Comm& comm, std::int64_t value) {
   std::int64_t before = 0;
-  mpi_check(MPI_Exscan(&value, &before, 1, MPI_INT64_T, MPI_SUM, comm), "MPI_Exscan");
-  int rank = 0;
-  mpi_check(MPI_Comm_rank(comm, &rank), "MPI_Comm_rank");
-  return rank == 0 ? 0 : before;  // MPI_Exscan leaves rank 0's result undefined
+  VALSALVA_MPI(MPI_Exscan(&value, &before, 1, MPI_INT64_T, MPI_SUM, comm.get()));
+  return comm.rank() == 0 ? 0 : before;
 }
 
 // XDMF topology codes and the VTK node order XDMF uses. VTK's wedge has its first triangle
@@ -114,7 +93,8 @@ XdmfWriter::XdmfWriter(MPI_Comm comm, std::filesystem::path dir, std::string bas
       basename_(std::move(basename)),
       global_nodes_(global_nodes),
       owned_ids_(owned_node_global_ids.begin(), owned_node_global_ids.end()) {
-  mpi_check(MPI_Comm_rank(comm_, &rank_), "MPI_Comm_rank");
+  const flow::Comm world(comm_);
+  rank_ = world.rank();
   const std::string who = fmt::format("XdmfWriter '{}'", (dir_ / basename_).string());
   std::string error;
   if (!valid_name(basename_))
@@ -122,15 +102,13 @@ XdmfWriter::XdmfWriter(MPI_Comm comm, std::filesystem::path dir, std::string bas
   if (error.empty())
     error = check_mesh(who, global_nodes, owned_node_global_ids, owned_node_coords, cell_types,
                        cell_offsets, cell_nodes_global);
-  agree(comm_, error);
-  const std::int64_t owned_total = sum(comm_, static_cast<std::int64_t>(owned_ids_.size()));
-  std::int64_t lo = 0, hi = 0;
-  mpi_check(MPI_Allreduce(&global_nodes, &lo, 1, MPI_INT64_T, MPI_MIN, comm_), "MPI_Allreduce");
-  mpi_check(MPI_Allreduce(&global_nodes, &hi, 1, MPI_INT64_T, MPI_MAX, comm_), "MPI_Allreduce");
+  h5::settle(comm_, error);
+  const std::int64_t owned_total = world.sum(static_cast<std::int64_t>(owned_ids_.size()));
+  const std::int64_t lo = -world.max(-global_nodes), hi = world.max(global_nodes);
   if (lo != hi)
-    agree(comm_, fmt::format("{}: ranks disagree on global_nodes ({}..{})", who, lo, hi));
+    h5::settle(comm_, fmt::format("{}: ranks disagree on global_nodes ({}..{})", who, lo, hi));
   if (owned_total != global_nodes)
-    agree(comm_, fmt::format("{}: ranks own {} nodes in total, expected global_nodes = {}", who,
+    h5::settle(comm_, fmt::format("{}: ranks own {} nodes in total, expected global_nodes = {}", who,
                              owned_total, global_nodes));
 
   if (rank_ == 0) {
@@ -139,7 +117,7 @@ XdmfWriter::XdmfWriter(MPI_Comm comm, std::filesystem::path dir, std::string bas
     if (ec) error = fmt::format("{}: cannot create directory '{}': {}", who, dir_.string(),
                                 ec.message());
   }
-  agree(comm_, error);
+  h5::settle(comm_, error);
 
   // XDMF Mixed topology: per cell its type code, then its nodes in XDMF (VTK) order.
   std::vector<std::int64_t> topology;
@@ -153,17 +131,17 @@ XdmfWriter::XdmfWriter(MPI_Comm comm, std::filesystem::path dir, std::string bas
   }
   const auto local_cells = static_cast<std::int64_t>(cell_types.size());
   const auto local_topology = static_cast<std::int64_t>(topology.size());
-  global_cells_ = sum(comm_, local_cells);
-  topology_size_ = sum(comm_, local_topology);
+  global_cells_ = world.sum(local_cells);
+  topology_size_ = world.sum(local_topology);
   const std::vector<std::int32_t> partition(cell_types.size(), rank_);
 
   h5::File file(comm_, mesh_file(), h5::Mode::create);
   file.write_attribute("global_nodes", static_cast<double>(global_nodes_));
   file.write_rows<double>("coordinates", global_nodes_, 3, owned_ids_, flat(owned_node_coords));
   file.write_block<std::int64_t>("topology", topology_size_, 0,
-                                 exclusive_prefix(comm_, local_topology), topology);
+                                 exclusive_prefix(world, local_topology), topology);
   file.write_block<std::int32_t>("partition", global_cells_, 0,
-                                 exclusive_prefix(comm_, local_cells), partition);
+                                 exclusive_prefix(world, local_cells), partition);
   file.close();
 }
 
@@ -188,7 +166,7 @@ std::filesystem::path XdmfWriter::write_step(double time, std::span<const Scalar
   };
   for (const ScalarField& f : scalars) check_field(f.name, f.values.size(), 1);
   for (const VectorField& f : vectors) check_field(f.name, f.values.size(), 3);
-  agree(comm_, error);
+  h5::settle(comm_, error);
 
   const std::filesystem::path path = dir_ / step.file;
   h5::File file(comm_, path, h5::Mode::create);
@@ -208,7 +186,7 @@ std::filesystem::path XdmfWriter::write_step(double time, std::span<const Scalar
       error = e.what();
     }
   }
-  agree(comm_, error);
+  h5::settle(comm_, error);
   return path;
 }
 
