@@ -1,8 +1,65 @@
 // valsalva command-line front end: parses arguments and hands over to the library.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
 #include <mpi.h>
+
+#include <exception>
+
+#include "app/commands.hpp"
 
 int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);
+  int rank = 0, size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+
+  CLI::App cli{"valsalva: blood flow through heart valves (incompressible LES + immersed leaflets)"};
+  cli.require_subcommand(1);
+  std::string scene, mesh_file, case_name, out;
+  bool overwrite = false, list = false, quick = false;
+  double scale = 1.0;
+
+  auto* run = cli.add_subcommand("run", "Run a scene; results go to its run directory");
+  run->add_option("scene", scene, "Scene file (TOML)")->required();
+  run->add_flag("--overwrite", overwrite, "Replace the results of an earlier run of this scene");
+  run->add_option("--out", out, "Run directory (default: run.output_dir, else runs/<scene>)");
+
+  auto* check = cli.add_subcommand("check", "Validate a scene and its mesh without running");
+  check->add_option("scene", scene, "Scene file (TOML)")->required();
+
+  auto* info = cli.add_subcommand("mesh-info", "Counts, patches, volumes and quality of a mesh");
+  info->add_option("mesh", mesh_file, "Gmsh .msh file")->required();
+  info->add_option("--scale", scale, "Factor applied to coordinates (e.g. 0.001 for mm)");
+
+  auto* val = cli.add_subcommand("validate", "Run a verification/validation case");
+  val->add_option("case", case_name, "Case name (see --list)");
+  val->add_flag("--list", list, "List the cases");
+  val->add_flag("--quick", quick, "Short version of the case");
+  val->add_option("--out", out, "Output folder (default: validation-results/<case>)");
+
+  auto* docs = cli.add_subcommand("docs-scenes", "Print the scene-key reference (docs/scenes.md)");
+
+  int code = 0;
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    code = rank == 0 ? cli.exit(e) : (e.get_exit_code() == 0 ? 0 : 2);
+    MPI_Finalize();
+    return code;
+  }
+  try {
+    if (*run) code = valsalva::app::run_scene(scene, overwrite, out);
+    if (*check) code = valsalva::app::check_scene(scene);
+    if (*info) code = valsalva::app::mesh_info(mesh_file, scale);
+    if (*val) code = valsalva::app::validate(case_name, list, quick, out);
+    if (*docs) code = valsalva::app::docs_scenes();
+  } catch (const std::exception& e) {
+    // Inputs are read on every rank, so every rank fails alike; with several ranks a failure on
+    // one rank alone must not leave the others waiting in a collective.
+    if (size == 1 || rank == 0) fmt::print(stderr, "valsalva: error: {}\n", e.what());
+    if (size > 1) MPI_Abort(MPI_COMM_WORLD, 1);
+    code = 1;
+  }
   MPI_Finalize();
-  return 0;
+  return code;
 }

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "flow/compensated_sum.hpp"
 #include "flow/periodic.hpp"
 
 namespace valsalva::flow {
@@ -151,7 +152,7 @@ void finish_derived_metrics(DualMetrics& m) {
 }  // namespace
 
 double mesh_volume(const Mesh& mesh) {
-  double total = 0;
+  CompensatedSum total;
   std::vector<GlobalIndex> face_nodes;
   for (GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
     const auto cell = mesh.cell(c);
@@ -161,11 +162,11 @@ double mesh_volume(const Mesh& mesh) {
       for (int i : f) face_nodes.push_back(cell[i]);
       const Vec cf = centroid(mesh, face_nodes);
       for (std::size_t i = 0; i < f.size(); ++i)
-        total += tet_volume(mesh.nodes[face_nodes[i]], mesh.nodes[face_nodes[(i + 1) % f.size()]],
-                            cf, cc);
+        total.add(tet_volume(mesh.nodes[face_nodes[i]],
+                             mesh.nodes[face_nodes[(i + 1) % f.size()]], cf, cc));
     }
   }
-  return total;
+  return total.value();
 }
 
 DualMetrics compute_dual_metrics(const Mesh& mesh) {

@@ -61,7 +61,7 @@ struct Case {
 const std::vector<Case>& all_cases();
 const Case* find_case(const std::string& name);
 
-// Runs `python3 <case_dir>/plot.py <out_dir>` on rank 0 when the case ships a plot script;
+// Runs Debian's `/usr/bin/python3 <case_dir>/plot.py <out_dir>` on rank 0 when the case ships a plot script;
 // returns false (with a message on stderr) when the plot could not be made.
 bool run_plot_script(const Context& ctx);
 

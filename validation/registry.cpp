@@ -5,11 +5,11 @@
 
 namespace valsalva::validation {
 
-
+Case mesh_metrics_case();
 
 const std::vector<Case>& all_cases() {
   static const std::vector<Case> cases = {
-
+      mesh_metrics_case(),
   };
   return cases;
 }

@@ -71,7 +71,7 @@ bool run_plot_script(const Context& ctx) {
   int ok = 1;
   const auto script = ctx.case_dir / "plot.py";
   if (rank == 0 && std::filesystem::exists(script)) {
-    const std::string cmd = fmt::format("python3 '{}' '{}'", script.string(), ctx.out_dir.string());
+    const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}'", script.string(), ctx.out_dir.string());
     ok = std::system(cmd.c_str()) == 0 ? 1 : 0;
     if (!ok) fmt::print(stderr, "validate: plot script failed: {}\n", cmd);
   }

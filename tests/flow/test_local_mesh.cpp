@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "flow/compensated_sum.hpp"
 #include "flow/dual_metrics.hpp"
 #include "flow/local_mesh.hpp"
 #include "io/box_generator.hpp"
@@ -38,9 +39,9 @@ TEST_CASE("distributed dual metrics and halo") {
       // Ownership covers every node exactly once.
       CHECK(comm.sum(static_cast<std::int64_t>(local.num_owned)) == metrics.num_nodes());
 
-      double owned_volume = 0;
-      for (int i = 0; i < local.num_owned; ++i) owned_volume += local.volume[i];
-      const double total = comm.sum(owned_volume);
+      flow::CompensatedSum owned_volume;
+      for (int i = 0; i < local.num_owned; ++i) owned_volume.add(local.volume[i]);
+      const double total = comm.sum(owned_volume.value());
       CHECK(std::abs(total - flow::mesh_volume(mesh)) / total < 1e-12);
 
       // Closure and linear exactness at owned nodes from local edges only.

@@ -1,0 +1,133 @@
+#include "app/commands.hpp"
+
+#include <fmt/format.h>
+#include <mpi.h>
+
+#include <chrono>
+#include <iostream>
+
+#include "flow/dual_metrics.hpp"
+#include "flow/local_mesh.hpp"
+#include "io/field_output.hpp"
+#include "io/gmsh_reader.hpp"
+//MESHINFO#include "io/mesh_info.hpp"
+#include "io/mesh_source.hpp"
+#include "io/run_directory.hpp"
+#include "io/scene.hpp"
+#include "io/scene_docs.hpp"
+#include "validation/case.hpp"
+
+namespace valsalva::app {
+
+namespace {
+
+int world_rank() {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  return rank;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+int check_scene(const std::filesystem::path& scene_file) {
+  const auto scene = io::load_scene(scene_file);
+  const auto mesh = io::build_mesh(scene);
+  const auto metrics = flow::compute_dual_metrics(mesh);
+  if (world_rank() == 0)
+    fmt::print("{}: scene and mesh are valid ({} nodes, {} cells, {} boundary patches)\n",
+               scene_file.string(), metrics.num_nodes(), mesh.num_cells(), mesh.patch_names.size());
+  return 0;
+}
+
+int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std::string& out) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto scene = io::load_scene(scene_file);
+  const int rank = world_rank();
+  if (rank == 0) fmt::print("# resolved scene {}\n{}\n", scene_file.string(), scene.resolved());
+  const auto dir = out.empty() ? io::default_run_path(scene) : std::filesystem::path(out);
+  const auto run_dir = io::RunDirectory::prepare(
+      dir, overwrite || scene.get<bool>("run.overwrite"), scene, MPI_COMM_WORLD);
+
+  const auto mesh = io::build_mesh(scene);
+  const auto metrics = flow::compute_dual_metrics(mesh);
+  flow::PartitionOptions options;
+  options.ghost_layers = scene.get<int>("partition.ghost_layers");
+  options.method = scene.get<std::string>("partition.method");
+  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, options);
+
+  // Until the flow solver lands, a run prepares and writes the distributed mesh: owner rank,
+  // dual volume and mesh size per node.
+  std::vector<double> owner(local.num_local(), local.comm.rank());
+  io::FieldOutput output(mesh, metrics, local, run_dir.path(), "fields");
+  output.write(0.0, {{"rank", &owner}, {"dual_volume", &local.volume}, {"h", &local.h}});
+
+  double owned_volume = 0;
+  for (int i = 0; i < local.num_owned; ++i) owned_volume += local.volume[i];
+  const double total = local.comm.sum(owned_volume);
+  if (rank == 0) {
+    fmt::print("mesh: {} nodes ({} dual nodes), {} cells, volume {:.9g} m^3 (cells {:.9g})\n",
+               mesh.num_nodes(), metrics.num_nodes(), mesh.num_cells(), total,
+               flow::mesh_volume(mesh));
+    fmt::print("partition: {} ranks, {} ghost layers, method {}\n", local.comm.size(),
+               options.ghost_layers, options.method);
+    fmt::print("results: {} (open {} in ParaView)\n", run_dir.path().string(),
+               output.xmf_file().string());
+    fmt::print("wall time: {:.2f} s\n", seconds_since(t0));
+  }
+  return 0;
+}
+
+int mesh_info(const std::filesystem::path& mesh_file, double scale) {
+  auto mesh = io::read_gmsh(mesh_file);
+  for (auto& x : mesh.nodes) x *= scale;
+  //MESHINFO if (world_rank() == 0) std::cout << io::mesh_info(mesh);
+  return 0;
+}
+
+int validate(const std::string& case_name, bool list, bool quick, const std::string& out) {
+  const int rank = world_rank();
+  if (list || case_name.empty()) {
+    if (rank == 0)
+      for (const auto& c : validation::all_cases())
+        fmt::print("{:<28} {}\n", c.name, c.description);
+    return list ? 0 : 2;
+  }
+  const auto* c = validation::find_case(case_name);
+  if (!c) throw std::runtime_error(fmt::format(
+      "validate: unknown case '{}' (valsalva validate --list shows the cases)", case_name));
+  validation::Context ctx;
+  ctx.quick = quick;
+  ctx.out_dir = out.empty() ? std::filesystem::path("validation-results") / case_name
+                            : std::filesystem::path(out);
+  ctx.case_dir = std::filesystem::path(VALSALVA_SOURCE_DIR) / "validation" / case_name;
+  ctx.refdata_dir = std::filesystem::path(VALSALVA_SOURCE_DIR).parent_path() / "shared" / "refdata";
+  if (rank == 0) std::filesystem::create_directories(ctx.out_dir);
+  MPI_Barrier(MPI_COMM_WORLD);
+  const auto t0 = std::chrono::steady_clock::now();
+  validation::Report report;
+  c->run(ctx, report);
+  int size = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  const double wall = seconds_since(t0);
+  if (rank == 0) {
+    report.write_json(ctx.out_dir / "report.json", c->name, size, wall);
+    for (const auto& m : report.metrics())
+      fmt::print("{:<4} {:<48} value {:<14.6g} reference {:<14.6g} tolerance {:.3g}\n",
+                 m.pass() ? "ok" : "FAIL", m.name, m.value, m.reference, m.tolerance);
+    fmt::print("{}: {} ({:.1f} s) -> {}\n", c->name, report.all_pass() ? "PASS" : "FAIL", wall,
+               (ctx.out_dir / "report.json").string());
+  }
+  const bool plotted = validation::run_plot_script(ctx);
+  return report.all_pass() && plotted ? 0 : 1;
+}
+
+int docs_scenes() {
+  io::write_scene_docs(std::cout);
+  return 0;
+}
+
+}  // namespace valsalva::app

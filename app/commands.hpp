@@ -1,0 +1,15 @@
+// The subcommands of the valsalva executable. Each returns the process exit code.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace valsalva::app {
+
+int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std::string& out);
+int check_scene(const std::filesystem::path& scene_file);
+int mesh_info(const std::filesystem::path& mesh_file, double scale);
+int validate(const std::string& case_name, bool list, bool quick, const std::string& out);
+int docs_scenes();
+
+}  // namespace valsalva::app

@@ -1,0 +1,42 @@
+// Nodal fields of a distributed run to HDF5 + XDMF on the mesh as read (periodic images keep
+// their own nodes, so ParaView shows the true geometry). Each rank writes the mesh nodes whose
+// dual node it owns and the cells whose first node it owns.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "flow/dual_metrics.hpp"
+#include "flow/local_mesh.hpp"
+#include "io/xdmf_writer.hpp"
+
+namespace valsalva::io {
+
+class FieldOutput {
+ public:
+  FieldOutput(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
+              const flow::LocalMesh& local, const std::filesystem::path& dir,
+              const std::string& basename);
+
+  // Fields are local arrays (owned nodes first, as in LocalMesh); only owned values are read.
+  struct Scalar {
+    std::string name;
+    const std::vector<double>* values;
+  };
+  struct Vector {
+    std::string name;
+    const std::vector<Eigen::Vector3d>* values;
+  };
+  std::filesystem::path write(double time, const std::vector<Scalar>& scalars,
+                              const std::vector<Vector>& vectors = {});
+  std::filesystem::path xmf_file() const { return writer_->xmf_file(); }
+
+ private:
+  std::vector<int> local_of_output_node_;  // owned mesh node -> local dual node
+  std::unique_ptr<XdmfWriter> writer_;
+  std::vector<std::vector<double>> scalar_buffers_;
+  std::vector<std::vector<Eigen::Vector3d>> vector_buffers_;
+};
+
+}  // namespace valsalva::io

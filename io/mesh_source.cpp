@@ -1,0 +1,73 @@
+#include "io/mesh_source.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "flow/mesh_check.hpp"
+#include "io/box_generator.hpp"
+#include "io/gmsh_reader.hpp"
+#include "io/pipe_generator.hpp"
+
+namespace valsalva::io {
+
+namespace {
+
+BoxSpec box_spec(const Scene& scene) {
+  BoxSpec spec;
+  const auto origin = scene.get<std::array<double, 3>>("mesh.box.origin");
+  const auto length = scene.get<std::array<double, 3>>("mesh.box.length");
+  spec.origin = Eigen::Vector3d(origin[0], origin[1], origin[2]);
+  spec.length = Eigen::Vector3d(length[0], length[1], length[2]);
+  spec.cells = scene.get<std::array<int, 3>>("mesh.box.cells");
+  spec.cell_type = scene.get<std::string>("mesh.box.cell_type");
+  spec.perturbation = scene.get<double>("mesh.box.perturbation");
+  spec.seed = static_cast<std::uint64_t>(scene.get<std::int64_t>("mesh.box.seed"));
+  for (const auto& axis : scene.get<std::vector<std::string>>("mesh.box.periodic"))
+    spec.periodic[axis[0] - 'x'] = true;
+  return spec;
+}
+
+}  // namespace
+
+flow::Mesh build_mesh(const Scene& scene) {
+  const std::string source = scene.get<std::string>("mesh.source");
+  flow::Mesh mesh;
+  if (source == "box") {
+    try {
+      mesh = generate_box(box_spec(scene));
+    } catch (const std::invalid_argument& e) {
+      throw scene.error("mesh.box", e.what());
+    }
+  } else if (source == "gmsh") {
+    const auto file = scene.path("mesh.file");
+    if (!std::filesystem::exists(file))
+      throw scene.error("mesh.file", fmt::format("file '{}' does not exist", file.string()));
+    mesh = read_gmsh(file);
+  } else {
+    mesh = generate_pipe_mesh(scene.get<double>("mesh.pipe.radius"),
+                              scene.get<double>("mesh.pipe.length"),
+                              scene.get<double>("mesh.pipe.size"));
+  }
+  const double scale = scene.get<double>("mesh.scale");
+  if (scale != 1.0)
+    for (auto& x : mesh.nodes) x *= scale;
+
+  for (const auto& pair : scene.names("mesh.periodic")) {
+    const std::string prefix = "mesh.periodic." + pair;
+    flow::PeriodicLink link;
+    link.master = scene.get<std::string>(prefix + ".master");
+    link.slave = scene.get<std::string>(prefix + ".slave");
+    const auto t = scene.get<std::array<double, 3>>(prefix + ".translation");
+    link.translation = Eigen::Vector3d(t[0], t[1], t[2]);
+    for (const auto& [key, patch] : {std::pair{".master", link.master}, std::pair{".slave", link.slave}})
+      if (mesh.patch_index(patch) < 0)
+        throw scene.error(prefix + key, fmt::format("patch '{}' is not in the mesh", patch),
+                          fmt::format("{}", fmt::join(mesh.patch_names, ", ")));
+    mesh.periodic.push_back(link);
+  }
+  flow::check_mesh(mesh);
+  return mesh;
+}
+
+}  // namespace valsalva::io

@@ -1,0 +1,14 @@
+// The fluid mesh a scene asks for ([mesh]): built-in box, Gmsh file or Gmsh-API pipe, scaled,
+// with the scene's periodic pairs, checked before use.
+#pragma once
+
+#include "flow/mesh.hpp"
+#include "io/scene.hpp"
+
+namespace valsalva::io {
+
+// Errors in the scene (a periodic patch the mesh lacks, an unreadable file) are SceneErrors
+// pointing at the key; errors in the mesh itself name the mesh file, cell or node.
+flow::Mesh build_mesh(const Scene& scene);
+
+}  // namespace valsalva::io
