@@ -10,8 +10,8 @@
 namespace valsalva::les {
 
 namespace {
-constexpr double per_cm = 100.0;       // 1/cm -> 1/m
-constexpr double cm3_per_s2 = 1e-6;    // cm^3/s^2 -> m^3/s^2
+constexpr double per_cm = 100.0;     // 1/cm -> 1/m
+constexpr double cm3_per_s2 = 1e-6;  // cm^3/s^2 -> m^3/s^2
 
 bool parse_number(const std::string& token, double& value) {
   const char* end = token.data() + token.size();
@@ -28,8 +28,8 @@ SpectrumTable CbcStation::table(Extrapolation extrapolation) const {
 const CbcStation& CbcSpectra::at(int t_u0_over_m) const {
   for (const auto& s : stations)
     if (s.t_u0_over_m == t_u0_over_m) return s;
-  throw std::out_of_range(fmt::format("{}: no station tU0/M = {}; available: 42, 98, 171", source,
-                                      t_u0_over_m));
+  throw std::out_of_range(
+      fmt::format("{}: no station tU0/M = {}; available: 42, 98, 171", source, t_u0_over_m));
 }
 
 CbcSpectra read_cbc_table3(const std::string& path) {
@@ -50,23 +50,23 @@ CbcSpectra read_cbc_table3(const std::string& path) {
     double k = 0.0;
     if (!parse_number(tok[0], k)) {
       if (in_data)
-        throw std::runtime_error(fmt::format("{}:{}: expected a wavenumber, got '{}'", path,
-                                             line_no, tok[0]));
+        throw std::runtime_error(
+            fmt::format("{}:{}: expected a wavenumber, got '{}'", path, line_no, tok[0]));
       continue;  // header line
     }
     in_data = true;
     if (tok.size() != 4)
-      throw std::runtime_error(fmt::format(
-          "{}:{}: expected 4 columns (k, E at tU0/M = 42, 98, 171), got {}", path, line_no,
-          tok.size()));
+      throw std::runtime_error(
+          fmt::format("{}:{}: expected 4 columns (k, E at tU0/M = 42, 98, 171), got {}", path,
+                      line_no, tok.size()));
     for (int s = 0; s < 3; ++s) {
       const std::string& t = tok[s + 1];
       if (t == "-") continue;  // no entry in the published table
       double e = 0.0;
       if (!parse_number(t, e) || !(e > 0.0))
-        throw std::runtime_error(fmt::format(
-            "{}:{}: E at tU0/M = {}: '{}' is neither '-' nor a positive number", path, line_no,
-            cbc_stations[s], t));
+        throw std::runtime_error(
+            fmt::format("{}:{}: E at tU0/M = {}: '{}' is neither '-' nor a positive number", path,
+                        line_no, cbc_stations[s], t));
       auto& st = out.stations[s];
       if (!st.k.empty() && !(k * per_cm > st.k.back()))
         throw std::runtime_error(fmt::format("{}:{}: k = {} does not increase", path, line_no, k));
@@ -76,8 +76,8 @@ CbcSpectra read_cbc_table3(const std::string& path) {
   }
   for (const auto& st : out.stations)
     if (st.k.size() < 2)
-      throw std::runtime_error(fmt::format("{}: fewer than 2 values for tU0/M = {}", path,
-                                           st.t_u0_over_m));
+      throw std::runtime_error(
+          fmt::format("{}: fewer than 2 values for tU0/M = {}", path, st.t_u0_over_m));
   return out;
 }
 

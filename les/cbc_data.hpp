@@ -16,8 +16,8 @@
 
 namespace valsalva::les {
 
-inline constexpr double cbc_mesh_size = 0.0508;  // M [m]
-inline constexpr double cbc_u0 = 10.0;           // U0 [m/s]
+inline constexpr double cbc_mesh_size = 0.0508;                    // M [m]
+inline constexpr double cbc_u0 = 10.0;                             // U0 [m/s]
 inline constexpr std::array<int, 3> cbc_stations = {42, 98, 171};  // tU0/M
 
 struct CbcStation {

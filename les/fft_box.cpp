@@ -25,15 +25,17 @@ void FftBox::allocate_and_plan() {
   spec_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(spectral_size()));
   scratch_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(spectral_size()));
   if (!real_ || !spec_ || !scratch_) throw std::bad_alloc();
-  plan_forward_ = fftw_plan_dft_r2c_3d(n, n, n, real_, reinterpret_cast<fftw_complex*>(spec_),
-                                       FFTW_ESTIMATE);
+  plan_forward_ =
+      fftw_plan_dft_r2c_3d(n, n, n, real_, reinterpret_cast<fftw_complex*>(spec_), FFTW_ESTIMATE);
   plan_backward_ = fftw_plan_dft_c2r_3d(n, n, n, reinterpret_cast<fftw_complex*>(scratch_), real_,
                                         FFTW_ESTIMATE);
   if (!plan_forward_ || !plan_backward_)
     throw std::runtime_error(fmt::format("FftBox: FFTW could not plan a {}^3 transform", n));
 }
 
-FftBox::~FftBox() { release(); }
+FftBox::~FftBox() {
+  release();
+}
 
 void FftBox::release() {
   if (plan_forward_) fftw_destroy_plan(static_cast<fftw_plan>(plan_forward_));
@@ -65,9 +67,9 @@ void FftBox::backward() {
 void check_box_fields(const char* what, int n, std::size_t u, std::size_t v, std::size_t w) {
   const std::size_t expected = static_cast<std::size_t>(n) * n * n;
   if (u != expected || v != expected || w != expected)
-    throw std::invalid_argument(fmt::format(
-        "{}: each velocity component needs n^3 = {} values (n = {}), got {}, {}, {}", what,
-        expected, n, u, v, w));
+    throw std::invalid_argument(
+        fmt::format("{}: each velocity component needs n^3 = {} values (n = {}), got {}, {}, {}",
+                    what, expected, n, u, v, w));
 }
 
 }  // namespace valsalva::les

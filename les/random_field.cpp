@@ -69,7 +69,8 @@ void random_solenoidal_field(const std::function<double(double)>& spectrum, int 
       norm2 += std::norm(hat[c][i]);
     }
     double scale = amplitude[s] * gaussian_scale;
-    if (amplitudes == Amplitudes::fixed) scale = norm2 > 0.0 ? amplitude[s] / std::sqrt(norm2) : 0.0;
+    if (amplitudes == Amplitudes::fixed)
+      scale = norm2 > 0.0 ? amplitude[s] / std::sqrt(norm2) : 0.0;
     for (auto& h : hat) h[i] *= scale;
   });
 

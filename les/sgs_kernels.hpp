@@ -21,7 +21,7 @@ namespace valsalva::les {
 // axisymmetric and isotropic expansion, O(y^3) at a wall (Nicoud et al. 2011, Sec. II).
 inline double sigma_operator(const Eigen::Matrix3d& g) {
   const Eigen::Vector3d s = singular_values(g);
-  if (!(s(0) > 0.0)) return 0.0;
+  if (s(0) == 0.0) return 0.0;  // (a NaN gradient propagates)
   return s(2) * (s(0) - s(1)) * (s(1) - s(2)) / (s(0) * s(0));
 }
 
@@ -41,7 +41,7 @@ inline double wale_operator(const Eigen::Matrix3d& g) {
   // Powers 3/2, 5/2, 5/4 through square roots (std::pow is several times slower).
   const double r = std::sqrt(sdsd);
   const double den = ss * ss * std::sqrt(ss) + sdsd * std::sqrt(r);
-  return den > 0.0 ? sdsd * r / den : 0.0;
+  return den == 0.0 ? 0.0 : sdsd * r / den;  // zero gradient -> 0; NaN propagates
 }
 
 inline double wale_nu(const Eigen::Matrix3d& g, double delta, double c_w) {

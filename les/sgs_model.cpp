@@ -14,34 +14,48 @@ double lilly_smagorinsky_constant(double kolmogorov_constant) {
   return std::pow(1.5 * kolmogorov_constant, -0.75) / std::numbers::pi;
 }
 
-double wale_constant_from_smagorinsky(double c_s) { return std::sqrt(10.6) * c_s; }
+double wale_constant_from_smagorinsky(double c_s) {
+  return std::sqrt(10.6) * c_s;
+}
 
 const char* name(SgsKind kind) {
   switch (kind) {
-    case SgsKind::sigma: return "sigma";
-    case SgsKind::wale: return "wale";
-    case SgsKind::smagorinsky: return "smagorinsky";
-    case SgsKind::none: return "none";
+    case SgsKind::sigma:
+      return "sigma";
+    case SgsKind::wale:
+      return "wale";
+    case SgsKind::smagorinsky:
+      return "smagorinsky";
+    case SgsKind::none:
+      return "none";
   }
   return "?";
 }
 
 double default_constant(SgsKind kind) {
   switch (kind) {
-    case SgsKind::sigma: return default_c_sigma;
-    case SgsKind::wale: return default_c_wale;
-    case SgsKind::smagorinsky: return default_c_smagorinsky;
-    case SgsKind::none: return 0.0;
+    case SgsKind::sigma:
+      return default_c_sigma;
+    case SgsKind::wale:
+      return default_c_wale;
+    case SgsKind::smagorinsky:
+      return default_c_smagorinsky;
+    case SgsKind::none:
+      return 0.0;
   }
   return 0.0;
 }
 
 SgsModel make_sgs_model(std::string_view model_name, std::optional<double> constant) {
   SgsModel m;
-  if (model_name == "sigma") m.kind = SgsKind::sigma;
-  else if (model_name == "wale") m.kind = SgsKind::wale;
-  else if (model_name == "smagorinsky") m.kind = SgsKind::smagorinsky;
-  else if (model_name == "none") m.kind = SgsKind::none;
+  if (model_name == "sigma")
+    m.kind = SgsKind::sigma;
+  else if (model_name == "wale")
+    m.kind = SgsKind::wale;
+  else if (model_name == "smagorinsky")
+    m.kind = SgsKind::smagorinsky;
+  else if (model_name == "none")
+    m.kind = SgsKind::none;
   else
     throw std::invalid_argument(fmt::format(
         "unknown subgrid model '{}'; accepted: sigma, wale, smagorinsky, none", model_name));
@@ -57,8 +71,8 @@ SgsModel make_sgs_model(std::string_view model_name, std::optional<double> const
 
 void filter_width(std::span<const double> volume, std::span<double> delta) {
   if (volume.size() != delta.size())
-    throw std::invalid_argument(fmt::format("filter_width: {} volumes but {} outputs",
-                                            volume.size(), delta.size()));
+    throw std::invalid_argument(
+        fmt::format("filter_width: {} volumes but {} outputs", volume.size(), delta.size()));
   for (std::size_t i = 0; i < volume.size(); ++i) delta[i] = std::cbrt(volume[i]);
 }
 
@@ -88,30 +102,34 @@ void apply(const SgsModel& model, std::size_t n, GradAt grad_at, std::span<const
 
 void check_sizes(const SgsModel& model, std::size_t grads, std::size_t delta, std::size_t nu) {
   if (grads != delta || grads != nu)
-    throw std::invalid_argument(fmt::format(
-        "compute_nu_sgs ({}): sizes differ: {} gradients, {} filter widths, {} outputs",
-        name(model.kind), grads, delta, nu));
+    throw std::invalid_argument(
+        fmt::format("compute_nu_sgs ({}): sizes differ: {} gradients, {} filter widths, {} outputs",
+                    name(model.kind), grads, delta, nu));
 }
 }  // namespace
 
 void compute_nu_sgs(const SgsModel& model, std::span<const Eigen::Matrix3d> grad,
                     std::span<const double> delta, std::span<double> nu_sgs) {
   check_sizes(model, grad.size(), delta.size(), nu_sgs.size());
-  apply(model, grad.size(), [&](std::size_t i) -> const Eigen::Matrix3d& { return grad[i]; },
-        delta, nu_sgs);
+  apply(
+      model, grad.size(), [&](std::size_t i) -> const Eigen::Matrix3d& { return grad[i]; }, delta,
+      nu_sgs);
 }
 
 void compute_nu_sgs(const SgsModel& model, std::span<const double> grad_flat,
                     std::span<const double> delta, std::span<double> nu_sgs) {
   if (grad_flat.size() % 9 != 0)
-    throw std::invalid_argument(fmt::format(
-        "compute_nu_sgs ({}): flat gradient array of {} values is not 9 per node",
-        name(model.kind), grad_flat.size()));
+    throw std::invalid_argument(
+        fmt::format("compute_nu_sgs ({}): flat gradient array of {} values is not 9 per node",
+                    name(model.kind), grad_flat.size()));
   const std::size_t n = grad_flat.size() / 9;
   check_sizes(model, n, delta.size(), nu_sgs.size());
-  apply(model, n,
-        [&](std::size_t i) { return Eigen::Matrix3d(Eigen::Map<const RowMajor3d>(&grad_flat[9 * i])); },
-        delta, nu_sgs);
+  apply(
+      model, n,
+      [&](std::size_t i) {
+        return Eigen::Matrix3d(Eigen::Map<const RowMajor3d>(&grad_flat[9 * i]));
+      },
+      delta, nu_sgs);
 }
 
 }  // namespace valsalva::les

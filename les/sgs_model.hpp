@@ -26,7 +26,8 @@ inline constexpr double default_c_smagorinsky = 0.17;
 
 // Lilly's Smagorinsky constant from the Kolmogorov constant (Pope 2000, eq. 13.128).
 double lilly_smagorinsky_constant(double kolmogorov_constant);
-// WALE constant giving the Smagorinsky mean dissipation: C_w = sqrt(10.6) C_s (Nicoud & Ducros 1999).
+// WALE constant giving the Smagorinsky mean dissipation: C_w = sqrt(10.6) C_s (Nicoud & Ducros
+// 1999).
 double wale_constant_from_smagorinsky(double c_s);
 
 struct SgsModel {

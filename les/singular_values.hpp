@@ -36,8 +36,8 @@ inline Eigen::Vector2d small_pair(const Eigen::Matrix3d& g, const Eigen::Matrix3
   Eigen::Matrix3d M = G;
   M.diagonal().array() -= l1;
   Eigen::Vector3d v1 = M.row(0).cross(M.row(1)).transpose();
-  for (const auto& c : {Eigen::Vector3d(M.row(0).cross(M.row(2))),
-                        Eigen::Vector3d(M.row(1).cross(M.row(2)))})
+  for (const auto& c :
+       {Eigen::Vector3d(M.row(0).cross(M.row(2))), Eigen::Vector3d(M.row(1).cross(M.row(2)))})
     if (c.squaredNorm() > v1.squaredNorm()) v1 = c;
   if (!(v1.squaredNorm() > 0.0)) return Eigen::Vector2d::Zero();
   v1.normalize();
@@ -52,9 +52,9 @@ inline Eigen::Vector2d small_pair(const Eigen::Matrix3d& g, const Eigen::Matrix3
 }  // namespace detail
 
 inline Eigen::Vector3d singular_values(const Eigen::Matrix3d& g) {
+  if (!g.allFinite()) return Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
   const double gmax = g.cwiseAbs().maxCoeff();
   if (gmax == 0.0) return Eigen::Vector3d::Zero();
-  if (!std::isfinite(gmax)) return Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
   const int e = std::ilogb(gmax);
   const Eigen::Matrix3d gs = g * std::ldexp(1.0, -e);  // exact scaling, entries in [1, 2)
 
@@ -88,8 +88,8 @@ inline Eigen::Vector3d singular_values(const Eigen::Matrix3d& g) {
         disc += 2.0 * mnr * mnr;
       }
   {  // three diagonal rows
-    const double mnr = (B(1, 1) - B(0, 0)) * (C(2, 2) - C(0, 0)) -
-                       (B(2, 2) - B(0, 0)) * (C(1, 1) - C(0, 0));
+    const double mnr =
+        (B(1, 1) - B(0, 0)) * (C(2, 2) - C(0, 0)) - (B(2, 2) - B(0, 0)) * (C(1, 1) - C(0, 0));
     disc += mnr * mnr;
   }
 

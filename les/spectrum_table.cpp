@@ -10,25 +10,34 @@ namespace valsalva::les {
 
 SpectrumTable::SpectrumTable(std::vector<double> k, std::vector<double> E,
                              Extrapolation extrapolation, std::string source)
-    : k_(std::move(k)), E_(std::move(E)), extrapolation_(extrapolation), source_(std::move(source)) {
+    : k_(std::move(k)),
+      E_(std::move(E)),
+      extrapolation_(extrapolation),
+      source_(std::move(source)) {
   if (k_.size() != E_.size() || k_.size() < 2)
-    throw std::invalid_argument(fmt::format("{}: spectrum table needs >= 2 (k, E) pairs, got {} k "
-                                            "and {} E values", source_, k_.size(), E_.size()));
+    throw std::invalid_argument(
+        fmt::format("{}: spectrum table needs >= 2 (k, E) pairs, got {} k "
+                    "and {} E values",
+                    source_, k_.size(), E_.size()));
   for (std::size_t i = 0; i < k_.size(); ++i) {
     if (!(k_[i] > 0.0) || !(E_[i] > 0.0) || !std::isfinite(k_[i]) || !std::isfinite(E_[i]))
-      throw std::invalid_argument(fmt::format(
-          "{}: point {} (k = {}, E = {}): k and E must be finite and > 0 for log-log "
-          "interpolation", source_, i, k_[i], E_[i]));
+      throw std::invalid_argument(
+          fmt::format("{}: point {} (k = {}, E = {}): k and E must be finite and > 0 for log-log "
+                      "interpolation",
+                      source_, i, k_[i], E_[i]));
     if (i > 0 && !(k_[i] > k_[i - 1]))
-      throw std::invalid_argument(fmt::format("{}: k must increase strictly, but k[{}] = {} after "
-                                              "k[{}] = {}", source_, i, k_[i], i - 1, k_[i - 1]));
+      throw std::invalid_argument(
+          fmt::format("{}: k must increase strictly, but k[{}] = {} after "
+                      "k[{}] = {}",
+                      source_, i, k_[i], i - 1, k_[i - 1]));
     logk_.push_back(std::log(k_[i]));
     logE_.push_back(std::log(E_[i]));
   }
 }
 
 double SpectrumTable::operator()(double k) const {
-  if (!(k > 0.0)) throw std::invalid_argument(fmt::format("{}: E(k) needs k > 0, got {}", source_, k));
+  if (!(k > 0.0))
+    throw std::invalid_argument(fmt::format("{}: E(k) needs k > 0, got {}", source_, k));
   if ((k < k_.front() || k > k_.back()) && extrapolation_ == Extrapolation::none)
     throw std::out_of_range(fmt::format("{}: k = {} outside the table range [{}, {}]", source_, k,
                                         k_.front(), k_.back()));

@@ -16,7 +16,8 @@
 using namespace valsalva::les;
 
 namespace {
-const std::string dir = std::string(VALSALVA_SOURCE_DIR) + "/../shared/refdata/cbc_decaying_turbulence/";
+const std::string dir =
+    std::string(VALSALVA_SOURCE_DIR) + "/../shared/refdata/cbc_decaying_turbulence/";
 
 // Plain numeric table: rows of numbers (other transcriptions, for the cross-check).
 std::vector<std::vector<double>> numeric_rows(const std::string& path) {
@@ -52,15 +53,15 @@ TEST_CASE("CBC table 3: values, units and missing entries") {
   CHECK(s42.k.size() == 19);
   CHECK(s98.k.size() == 19);
   CHECK(s171.k.size() == 18);
-  CHECK(s42.k.front() == doctest::Approx(20.0));   // 0.20 cm^-1, not the missing 0.15
-  CHECK(s171.k.front() == doctest::Approx(15.0));  // 0.15 cm^-1 is measured at 171
-  CHECK(s171.k.back() == doctest::Approx(1500.0)); // 15 cm^-1; 17.5 and 20 are missing
+  CHECK(s42.k.front() == doctest::Approx(20.0));    // 0.20 cm^-1, not the missing 0.15
+  CHECK(s171.k.front() == doctest::Approx(15.0));   // 0.15 cm^-1 is measured at 171
+  CHECK(s171.k.back() == doctest::Approx(1500.0));  // 15 cm^-1; 17.5 and 20 are missing
   CHECK(s42.k.back() == doctest::Approx(2000.0));
   // A few values, SI (E [cm^3/s^2] * 1e-6).
   CHECK(s42.E[0] == doctest::Approx(129e-6).epsilon(1e-12));
-  CHECK(s42.E[4] == doctest::Approx(457e-6).epsilon(1e-12));   // k = 0.5
-  CHECK(s98.E[6] == doctest::Approx(79.2e-6).epsilon(1e-12));  // k = 1.0
-  CHECK(s171.E[0] == doctest::Approx(49.7e-6).epsilon(1e-12)); // k = 0.15
+  CHECK(s42.E[4] == doctest::Approx(457e-6).epsilon(1e-12));    // k = 0.5
+  CHECK(s98.E[6] == doctest::Approx(79.2e-6).epsilon(1e-12));   // k = 1.0
+  CHECK(s171.E[0] == doctest::Approx(49.7e-6).epsilon(1e-12));  // k = 0.15
   CHECK(s171.E.back() == doctest::Approx(1.41e-8).epsilon(1e-12));
   // As an interpolation table (log-log): exact at the nodes.
   const SpectrumTable t = s98.table(Extrapolation::none);

@@ -13,8 +13,10 @@ using namespace valsalva::les;
 TEST_CASE("Pope estimate: hand value and inverse") {
   // Delta / (pi L) = 1/8: (1/8)^(2/3) = 1/4, k_sgs/k = 1.5 * 1.5 / 4 = 0.5625.
   const double L = 0.05;
-  CHECK(pope_subgrid_fraction(std::numbers::pi * L / 8, L) == doctest::Approx(0.5625).epsilon(1e-14));
-  CHECK(pope_subgrid_fraction(std::numbers::pi * L / 8, L, 1.6) == doctest::Approx(0.6).epsilon(1e-14));
+  CHECK(pope_subgrid_fraction(std::numbers::pi * L / 8, L) ==
+        doctest::Approx(0.5625).epsilon(1e-14));
+  CHECK(pope_subgrid_fraction(std::numbers::pi * L / 8, L, 1.6) ==
+        doctest::Approx(0.6).epsilon(1e-14));
   for (double f : {0.05, 0.2, 0.5})
     CHECK(pope_subgrid_fraction(pope_filter_width(f, L), L) == doctest::Approx(f).epsilon(1e-13));
   // 80 % resolved (f = 0.2) needs Delta = pi L (0.2/2.25)^(3/2) = 0.0833 L, i.e. L / Delta = 12.
@@ -36,7 +38,8 @@ TEST_CASE("Pope estimate equals the integral of the inertial spectrum beyond pi/
     double ksgs = 0.0;
     for (int i = 0; i <= n; ++i) {
       const double kappa = kc * std::exp(span * i / n);
-      const double f = C * std::cbrt(eps * eps) * std::pow(kappa, -5.0 / 3.0) * kappa;  // dk = k dlnk
+      const double f =
+          C * std::cbrt(eps * eps) * std::pow(kappa, -5.0 / 3.0) * kappa;  // dk = k dlnk
       ksgs += (i == 0 || i == n ? 0.5 : 1.0) * f * span / n;
     }
     CHECK(ksgs / k == doctest::Approx(pope_subgrid_fraction(delta, L, C)).epsilon(1e-6));

@@ -45,9 +45,8 @@ TEST_CASE("D_sigma vanishes to round-off for the flows of Nicoud et al. 2011 (Se
     s.topLeftCorner<2, 2>() << u(rng), u(rng), u(rng), u(rng);
     return s;
   });
-  const double axisymmetric = worst_for([&] {
-    return Eigen::Matrix3d(Eigen::Vector3d(1.0, 1.0, -2.0).asDiagonal());
-  });
+  const double axisymmetric =
+      worst_for([&] { return Eigen::Matrix3d(Eigen::Vector3d(1.0, 1.0, -2.0).asDiagonal()); });
   const double axisym_rotating = worst_for([&] {  // expansion + swirl about the axis
     Eigen::Matrix3d s = Eigen::Vector3d(1.0, 1.0, -2.0).asDiagonal();
     s(0, 1) = -0.7;
@@ -60,9 +59,10 @@ TEST_CASE("D_sigma vanishes to round-off for the flows of Nicoud et al. 2011 (Se
     const Eigen::Matrix3d g = gaussian_matrix(rng);
     generic_min = std::min(generic_min, sigma_operator(g) / g.norm());
   }
-  MESSAGE("max D_sigma/|g|: solid rotation " << solid_rotation << ", pure shear " << pure_shear
-          << ", 2D " << flow_2d << ", axisymmetric " << axisymmetric << ", axisymmetric+swirl "
-          << axisym_rotating << ", isotropic " << isotropic);
+  MESSAGE("max D_sigma/|g|: solid rotation "
+          << solid_rotation << ", pure shear " << pure_shear << ", 2D " << flow_2d
+          << ", axisymmetric " << axisymmetric << ", axisymmetric+swirl " << axisym_rotating
+          << ", isotropic " << isotropic);
   CHECK(solid_rotation < 1e-13);
   CHECK(pure_shear < 1e-13);
   CHECK(flow_2d < 1e-13);
@@ -112,12 +112,13 @@ double fitted_exponent(F value) {
 
 TEST_CASE("near-wall scaling: D_sigma ~ y^3 (and WALE ~ y^3, Smagorinsky ~ y^0)") {
   CHECK(std::abs(near_wall_gradient(1e-3).trace()) < 1e-15);  // divergence-free
-  const double p_sigma = fitted_exponent([](const Eigen::Matrix3d& g) { return sigma_operator(g); });
+  const double p_sigma =
+      fitted_exponent([](const Eigen::Matrix3d& g) { return sigma_operator(g); });
   const double p_wale = fitted_exponent([](const Eigen::Matrix3d& g) { return wale_operator(g); });
   const double p_smag =
       fitted_exponent([](const Eigen::Matrix3d& g) { return strain_rate_magnitude(g); });
   MESSAGE("fitted exponents: sigma " << p_sigma << ", wale " << p_wale << ", smagorinsky "
-          << p_smag);
+                                     << p_smag);
   CHECK(std::abs(p_sigma - 3.0) < 0.05);
   CHECK(std::abs(p_wale - 3.0) < 0.05);
   CHECK(std::abs(p_smag) < 0.05);
@@ -142,8 +143,8 @@ TEST_CASE("hand-computed nu_sgs values") {
     g(0, 1) = 2.0;
     g(1, 0) = 1.0;
     const double sdsd = 8.0 / 3.0, ss = 4.5;
-    const double wale = std::pow(0.5 * delta, 2) * std::pow(sdsd, 1.5) /
-                        (std::pow(ss, 2.5) + std::pow(sdsd, 1.25));
+    const double wale =
+        std::pow(0.5 * delta, 2) * std::pow(sdsd, 1.5) / (std::pow(ss, 2.5) + std::pow(sdsd, 1.25));
     CHECK(wale_nu(g, delta, 0.5) == doctest::Approx(wale).epsilon(1e-14));
     CHECK(smagorinsky_nu(g, delta, 0.17) ==
           doctest::Approx(0.17 * 0.17 * delta * delta * 3.0).epsilon(1e-14));
@@ -156,6 +157,18 @@ TEST_CASE("hand-computed nu_sgs values") {
     CHECK(smagorinsky_nu(g, delta, 0.17) ==
           doctest::Approx(0.17 * 0.17 * delta * delta * 5.0).epsilon(1e-14));
   }
+}
+
+TEST_CASE("zero gradient gives zero, a NaN gradient gives NaN (never a silent zero)") {
+  const Eigen::Matrix3d zero = Eigen::Matrix3d::Zero();
+  CHECK(sigma_nu(zero, 1e-3, 1.35) == 0.0);
+  CHECK(wale_nu(zero, 1e-3, 0.5) == 0.0);
+  CHECK(smagorinsky_nu(zero, 1e-3, 0.17) == 0.0);
+  Eigen::Matrix3d bad = Eigen::Matrix3d::Identity();
+  bad(2, 0) = std::nan("");
+  CHECK(std::isnan(sigma_nu(bad, 1e-3, 1.35)));
+  CHECK(std::isnan(wale_nu(bad, 1e-3, 0.5)));
+  CHECK(std::isnan(smagorinsky_nu(bad, 1e-3, 0.17)));
 }
 
 TEST_CASE("model constants follow their sources") {
@@ -219,8 +232,9 @@ TEST_CASE("array loop equals the kernels node by node") {
     CHECK(nu_flat == nu);
   }
   std::vector<double> bad_flat(9 * n - 1);
-  CHECK_THROWS_AS(compute_nu_sgs(make_sgs_model("wale"), std::span<const double>(bad_flat), delta, nu),
-                  std::invalid_argument);
+  CHECK_THROWS_AS(
+      compute_nu_sgs(make_sgs_model("wale"), std::span<const double>(bad_flat), delta, nu),
+      std::invalid_argument);
   std::vector<double> short_out(n - 1);
   CHECK_THROWS_AS(compute_nu_sgs(make_sgs_model("sigma"), grad, delta, short_out),
                   std::invalid_argument);

@@ -40,18 +40,21 @@ TEST_CASE("singular values of near-degenerate gradients U diag(s) V^T") {
   // Double and triple singular values (split by 1e-9 and 1e-12), nearly singular and exactly
   // rank-deficient gradients, small pairs (sigma2 ~ sigma3 << sigma1, the deflated branch).
   // Values below 1e-6 sigma1 are compared in absolute terms (round-off of U diag(s) V^T).
-  const double cases[][3] = {{1, 1, 0.3},        {1, 1 + 1e-9, 0.3},   {1, 0.3, 0.3},
-                             {1, 0.3, 0.3 + 1e-9}, {1, 1, 1},          {1, 1 - 1e-12, 1 + 1e-12},
-                             {1, 0.5, 1e-6},     {2, 1, 1e-3},         {1, 0.5, 0},
-                             {1, 0, 0},          {1, 1, 0},            {5, 5, 5},
-                             {1, 1e-3, 1e-3},    {1, 1e-3, 1e-3 * (1 + 1e-9)},
-                             {1, 0.05, 0.01},    {1, 1e-5, 0},
-                             {1, 0.1001, 0.03},  {1, 0.0999, 0.03}};  // both sides of the branch
+  const double cases[][3] = {{1, 1, 0.3},       {1, 1 + 1e-9, 0.3},
+                             {1, 0.3, 0.3},     {1, 0.3, 0.3 + 1e-9},
+                             {1, 1, 1},         {1, 1 - 1e-12, 1 + 1e-12},
+                             {1, 0.5, 1e-6},    {2, 1, 1e-3},
+                             {1, 0.5, 0},       {1, 0, 0},
+                             {1, 1, 0},         {5, 5, 5},
+                             {1, 1e-3, 1e-3},   {1, 1e-3, 1e-3 * (1 + 1e-9)},
+                             {1, 0.05, 0.01},   {1, 1e-5, 0},
+                             {1, 0.1001, 0.03}, {1, 0.0999, 0.03}};  // both sides of the branch
   std::mt19937_64 rng(85106);
   double worst_rel = 0.0, worst_abs = 0.0;
   for (const auto& c : cases) {
     for (int t = 0; t < 500; ++t) {
-      const Eigen::Matrix3d g = random_rotation(rng) * Eigen::Vector3d(c[0], c[1], c[2]).asDiagonal() *
+      const Eigen::Matrix3d g = random_rotation(rng) *
+                                Eigen::Vector3d(c[0], c[1], c[2]).asDiagonal() *
                                 random_rotation(rng).transpose();
       const Eigen::Vector3d s = singular_values(g), r = reference(g);
       for (int i = 0; i < 3; ++i) {
@@ -79,4 +82,9 @@ TEST_CASE("singular values: zero, extreme magnitudes and NaN") {
   Eigen::Matrix3d bad = d;
   bad(1, 2) = std::numeric_limits<double>::quiet_NaN();
   CHECK(std::isnan(singular_values(bad)(0)));
+  for (int i = 0; i < 9; ++i) {  // a NaN anywhere propagates (never a silent zero viscosity)
+    Eigen::Matrix3d b = d;
+    b.data()[i] = std::numeric_limits<double>::quiet_NaN();
+    CHECK(std::isnan(singular_values(b).sum()));
+  }
 }

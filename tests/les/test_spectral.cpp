@@ -22,7 +22,9 @@ double half_mean_square(const std::vector<double>& u, const std::vector<double>&
   for (std::size_t i = 0; i < u.size(); ++i) s += u[i] * u[i] + v[i] * v[i] + w[i] * w[i];
   return 0.5 * s / static_cast<double>(u.size());
 }
-std::size_t node(int n, int i, int j, int k) { return (std::size_t(k) * n + j) * n + i; }
+std::size_t node(int n, int i, int j, int k) {
+  return (std::size_t(k) * n + j) * n + i;
+}
 }  // namespace
 
 TEST_CASE("FFT round trip and spectrum kept by backward()") {
@@ -92,8 +94,10 @@ TEST_CASE("spectrum table: log-log interpolation, extrapolation and errors") {
   const SpectrumTable p({1.0, 10.0, 100.0}, {1.0, 1e-2, 1e-5}, Extrapolation::power_law);
   CHECK(p(0.1) == doctest::Approx(100.0).epsilon(1e-13));
   CHECK(p(1000.0) == doctest::Approx(1e-8).epsilon(1e-13));
-  CHECK_THROWS_AS(SpectrumTable({1.0, 1.0}, {1.0, 2.0}, Extrapolation::none), std::invalid_argument);
-  CHECK_THROWS_AS(SpectrumTable({1.0, 2.0}, {1.0, 0.0}, Extrapolation::none), std::invalid_argument);
+  CHECK_THROWS_AS(SpectrumTable({1.0, 1.0}, {1.0, 2.0}, Extrapolation::none),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(SpectrumTable({1.0, 2.0}, {1.0, 0.0}, Extrapolation::none),
+                  std::invalid_argument);
 }
 
 TEST_CASE("random solenoidal field: prescribed spectrum, zero divergence, isotropy, seeding") {
@@ -117,8 +121,8 @@ TEST_CASE("random solenoidal field: prescribed spectrum, zero divergence, isotro
     }
   }
   const double div = spectral_divergence_ratio(u, v, w, n, L);
-  MESSAGE("random field 32^3: max shell |E/E_model - 1| = " << worst << ", energy outside "
-          << outside << ", divergence ratio " << div);
+  MESSAGE("random field 32^3: max shell |E/E_model - 1| = "
+          << worst << ", energy outside " << outside << ", divergence ratio " << div);
   CHECK(worst < 1e-12);
   CHECK(outside < 1e-15 * expected_total);
   CHECK(s.total() == doctest::Approx(expected_total).epsilon(1e-12));
@@ -135,21 +139,23 @@ TEST_CASE("random solenoidal field: prescribed spectrum, zero divergence, isotro
       for (int b = 0; b < n; ++b)
         for (int a = 0; a < n; ++a) {
           auto sg = [&](int i) { return i <= n / 2 ? i : i - n; };
-          const int sh = int(std::lround(std::sqrt(double(sg(a) * sg(a) + sg(b) * sg(b) + sg(c) * sg(c)))));
+          const int sh =
+              int(std::lround(std::sqrt(double(sg(a) * sg(a) + sg(b) * sg(b) + sg(c) * sg(c)))));
           if (sh >= 1 && sh <= n / 2 - 1) ++count[sh];
         }
     for (int sh = 1; sh <= n / 2 - 1; ++sh) {
       const double a = model(sh * s.dk) * s.dk / count[sh];  // energy per mode
-      bound += 0.5 * count[sh] * (2 * a) * (2 * a) / 4;       // count/2 independent pairs
+      bound += 0.5 * count[sh] * (2 * a) * (2 * a) / 4;      // count/2 independent pairs
       sum += count[sh] * a;
     }
   }
   const double sigma = std::sqrt(bound) / sum;
   double eu = 0, ev = 0, ew = 0;
-  for (std::size_t i = 0; i < u.size(); ++i) eu += u[i] * u[i], ev += v[i] * v[i], ew += w[i] * w[i];
+  for (std::size_t i = 0; i < u.size(); ++i)
+    eu += u[i] * u[i], ev += v[i] * v[i], ew += w[i] * w[i];
   const double et = eu + ev + ew;
   MESSAGE("component energy fractions " << eu / et << ", " << ev / et << ", " << ew / et
-          << " (1/3 each; std bound " << sigma << ")");
+                                        << " (1/3 each; std bound " << sigma << ")");
   CHECK(std::abs(eu / et - 1.0 / 3) < 4 * sigma);
   CHECK(std::abs(ev / et - 1.0 / 3) < 4 * sigma);
   CHECK(std::abs(ew / et - 1.0 / 3) < 4 * sigma);
@@ -179,7 +185,8 @@ TEST_CASE("gaussian random solenoidal field: spectrum within its chi^2 scatter")
   for (int c = 0; c < n; ++c)
     for (int b = 0; b < n; ++b)
       for (int a = 0; a < n; ++a) {
-        const int sh = int(std::lround(std::sqrt(double(sg(a) * sg(a) + sg(b) * sg(b) + sg(c) * sg(c)))));
+        const int sh =
+            int(std::lround(std::sqrt(double(sg(a) * sg(a) + sg(b) * sg(b) + sg(c) * sg(c)))));
         if (sh < n) ++count[sh];
       }
   double zmax = 0.0, chi2 = 0.0;
@@ -190,7 +197,8 @@ TEST_CASE("gaussian random solenoidal field: spectrum within its chi^2 scatter")
   }
   const double div = spectral_divergence_ratio(u, v, w, n, L);
   MESSAGE("gaussian field 32^3: shell 1 has " << count[1] << " modes, max |z| = " << zmax
-          << ", sum z^2 = " << chi2 << " (15 expected), divergence ratio " << div);
+                                              << ", sum z^2 = " << chi2
+                                              << " (15 expected), divergence ratio " << div);
   CHECK(count[1] == 18);
   CHECK(zmax < 4.5);
   CHECK(std::abs(chi2 - 15.0) < 4.0 * std::sqrt(30.0));
