@@ -271,3 +271,69 @@ TEST_CASE("a file cut anywhere gives MeshFileError or the complete mesh, never a
   }
   fs::remove_all(dir);
 }
+
+namespace {
+
+// Writes a meshed unit box (format 4.1 ASCII) after `setup` has run on the Gmsh model, and
+// returns the message of read_gmsh + check_mesh ("" when accepted).
+template <class Setup>
+std::string box_error(const std::string& name, Setup setup) {
+  const fs::path file = scratch_dir("variants") / (name + ".msh");
+  {
+    io::GmshSession session;
+    gmsh::model::add(name);
+    gmsh::model::occ::addBox(0, 0, 0, 1, 1, 1);
+    gmsh::model::occ::synchronize();
+    gmsh::option::setNumber("Mesh.MeshSizeMax", 0.7);
+    setup();
+    gmsh::model::mesh::generate(3);
+    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+    gmsh::write(file.string());
+  }
+  std::string message;
+  try {
+    flow::check_mesh(io::read_gmsh(file));
+  } catch (const flow::MeshError& e) {
+    message = e.what();
+  }
+  fs::remove(file);
+  return message;
+}
+
+}  // namespace
+
+TEST_CASE("Gmsh-written variants: second order, overlapping groups, no groups") {
+  auto contains = [](const std::string& message, const char* word) {
+    CAPTURE(message);
+    CAPTURE(word);
+    CHECK(message.find(word) != std::string::npos);
+  };
+  const std::string second_order = box_error("second_order", [] {
+    gmsh::model::addPhysicalGroup(2, {1, 2, 3, 4, 5, 6});
+    gmsh::model::addPhysicalGroup(3, {1});
+    gmsh::option::setNumber("Mesh.ElementOrder", 2);
+  });
+  contains(second_order, "unsupported type 'Tetrahedron 10'");
+  contains(second_order, "second_order.msh: element ");
+
+  const std::string two_groups = box_error("two_groups", [] {
+    gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {1, 2, 3, 4, 5, 6}), "wall");
+    gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {1}), "a");
+    gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {1}), "b");
+  });
+  contains(two_groups, "volume entity 1 belongs to two physical groups, 'a' and 'b'");
+
+  // Without physical groups Gmsh saves every element; no surface is a patch.
+  const std::string no_groups = box_error("no_groups", [] {});
+  contains(no_groups, "boundary faces belong to no boundary patch (missing physical group?)");
+  contains(no_groups, "(0, 0, 0) - (1, 1, 1)");
+
+  // Only part of the boundary tagged: the message locates the untagged faces (face x = 0 is
+  // surface 1 of an OpenCASCADE box).
+  const std::string part = box_error("part", [] {
+    gmsh::model::addPhysicalGroup(2, {2, 3, 4, 5, 6});
+    gmsh::model::addPhysicalGroup(3, {1});
+  });
+  contains(part, "missing physical group");
+  contains(part, "(0, 0, 0) - (0, 1, 1)");
+}
