@@ -8,9 +8,10 @@
 
 #include "flow/dual_metrics.hpp"
 #include "flow/local_mesh.hpp"
+#include "flow/mesh_check.hpp"
 #include "io/field_output.hpp"
 #include "io/gmsh_reader.hpp"
-//MESHINFO#include "io/mesh_info.hpp"
+#include "io/mesh_info.hpp"
 #include "io/mesh_source.hpp"
 #include "io/run_directory.hpp"
 #include "io/scene.hpp"
@@ -84,7 +85,8 @@ int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std
 int mesh_info(const std::filesystem::path& mesh_file, double scale) {
   auto mesh = io::read_gmsh(mesh_file);
   for (auto& x : mesh.nodes) x *= scale;
-  //MESHINFO if (world_rank() == 0) std::cout << io::mesh_info(mesh);
+  flow::check_mesh(mesh);
+  if (world_rank() == 0) std::cout << io::mesh_info(mesh);
   return 0;
 }
 
