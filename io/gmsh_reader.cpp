@@ -5,10 +5,11 @@
 
 #include <algorithm>
 #include <atomic>
-#include <fstream>
 #include <cctype>
+#include <fstream>
 #include <map>
 #include <optional>
+#include <system_error>
 #include <unordered_map>
 #include <vector>
 
@@ -171,10 +172,15 @@ void add_boundary_faces(flow::Mesh& mesh, const NodeNumbering& number, const std
 // A complete .msh file (ASCII or binary) ends with a "$End..." line; Gmsh itself accepts a file
 // cut right after a complete section, so we look at the last line ourselves.
 void check_complete(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw MeshFileError(fmt::format("{}: cannot open the mesh file ({})", path.string(),
+                                    std::filesystem::exists(path, ec) ? "not a regular file"
+                                                                      : "no such file"));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw MeshFileError(fmt::format("{}: cannot open the mesh file", path.string()));
   in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
+  const std::streamoff size = std::max<std::streamoff>(in.tellg(), 0);
   const std::streamoff tail = std::min<std::streamoff>(size, 256);
   std::string text(static_cast<std::size_t>(tail), '\0');
   in.seekg(size - tail);

@@ -229,6 +229,12 @@ TEST_CASE("missing and unreadable files give errors naming the file") {
     CHECK(std::string(e.what()).find(missing.string()) != std::string::npos);
     CHECK(std::string(e.what()).find("cannot open") != std::string::npos);
   }
+  try {
+    io::read_gmsh(missing.parent_path());
+    FAIL("no exception");
+  } catch (const io::MeshFileError& e) {
+    CHECK(std::string(e.what()).find("not a regular file") != std::string::npos);
+  }
   fs::remove_all(missing.parent_path());
 }
 
