@@ -1,0 +1,91 @@
+// Benchmark of the mesh pipeline on a Gmsh tetrahedral pipe of about 1 M cells (opt-in, not a
+// test): time to read the .msh file, compute the median-dual metrics and partition with METIS,
+// and peak memory per node. Run: bench_mesh_pipeline [target_size_m] [mesh_file]
+//   mpiexec -n 2 build/bin/bench_mesh_pipeline
+#include <fmt/format.h>
+#include <gmsh.h>
+#include <mpi.h>
+#include <sys/resource.h>
+
+#include <chrono>
+#include <filesystem>
+#include <string>
+
+#include "flow/dual_metrics.hpp"
+#include "flow/local_mesh.hpp"
+#include "io/gmsh_reader.hpp"
+
+namespace {
+
+double peak_rss_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux reports kB
+}
+
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// A 25 mm x 100 mm pipe meshed by Gmsh (written once, then reused).
+void write_pipe_mesh(const std::string& file, double size) {
+  gmsh::initialize();
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::option::setNumber("General.NumThreads", 1);
+  gmsh::model::add("bench_pipe");
+  const int volume = gmsh::model::occ::addCylinder(0, 0, 0, 0, 0, 0.1, 0.0125);
+  gmsh::model::occ::synchronize();
+  gmsh::vectorpair surfaces;
+  gmsh::model::getBoundary({{3, volume}}, surfaces, false, false, false);
+  std::vector<int> tags;
+  for (const auto& s : surfaces) tags.push_back(s.second);
+  gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, tags), "wall");
+  gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {volume}), "fluid");
+  gmsh::option::setNumber("Mesh.MeshSizeMin", size);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+  gmsh::model::mesh::generate(3);
+  gmsh::option::setNumber("Mesh.Binary", 1);
+  gmsh::write(file);
+  gmsh::finalize();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  MPI_Init(&argc, &argv);
+  int rank = 0, size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  const double target = argc > 1 ? std::stod(argv[1]) : 0.00065;
+  const std::string file =
+      argc > 2 ? argv[2] : fmt::format("bench_pipe_{:.6f}.msh", target);
+  if (rank == 0 && !std::filesystem::exists(file)) {
+    const auto t0 = std::chrono::steady_clock::now();
+    write_pipe_mesh(file, target);
+    fmt::print("gmsh meshing (not timed below): {:.1f} s -> {}\n", since(t0), file);
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+  const double rss0 = peak_rss_mb();
+  auto t0 = std::chrono::steady_clock::now();
+  const auto mesh = valsalva::io::read_gmsh(file);
+  const double t_read = since(t0);
+  t0 = std::chrono::steady_clock::now();
+  const auto metrics = valsalva::flow::compute_dual_metrics(mesh);
+  const double t_metrics = since(t0);
+  t0 = std::chrono::steady_clock::now();
+  const auto local = valsalva::flow::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  const double t_partition = since(t0);
+  double rss = peak_rss_mb(), rss_max = 0;
+  MPI_Reduce(&rss, &rss_max, 1, MPI_DOUBLE, MPI_MAX, 0, MPI_COMM_WORLD);
+  if (rank == 0) {
+    const double nodes = static_cast<double>(metrics.num_nodes());
+    fmt::print("ranks {} | cells {} | nodes {} | edges {}\n", size, mesh.num_cells(),
+               metrics.num_nodes(), metrics.edges.size());
+    fmt::print("read {:.2f} s | metrics {:.2f} s | partition+distribute {:.2f} s\n", t_read,
+               t_metrics, t_partition);
+    fmt::print("peak RSS per rank {:.0f} MB (before reading {:.0f} MB): {:.0f} bytes per node\n",
+               rss_max, rss0, (rss_max - rss0) * 1048576.0 / nodes);
+  }
+  MPI_Finalize();
+  return 0;
+}
