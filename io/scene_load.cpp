@@ -166,23 +166,18 @@ bool Loader::number(const KeyDecl& decl, const toml::node& v, const std::string&
     return false;
   }
   x = v.is_integer() ? static_cast<double>(*v.value<std::int64_t>()) : *v.value<double>();
-  if (!std::isfinite(x)) {
-    problem(loc, key, fmt::format("{} {} is not a finite number", what, x), accepted_values(decl));
-    return false;
-  }
-  if (!within_bounds(decl, x)) {
+  // "value 7 is out of range" or "element 2 is 7, out of range".
+  auto report = [&](std::string_view trouble, bool needs_is) {
     problem(loc, key,
-            what == "value" ? fmt::format("value {} is out of range", x)
-                            : fmt::format("{} is {}, out of range", what, x),
+            what == "value" ? fmt::format("value {} {}{}", x, needs_is ? "is " : "", trouble)
+                            : fmt::format("{} is {}, {}", what, x, trouble),
             accepted_values(decl));
     return false;
-  }
+  };
+  if (!std::isfinite(x)) return report("not a finite number", true);
+  if (!within_bounds(decl, x)) return report("out of range", true);
   // Integers are read as int by the code; keep them in its range.
-  if (integer && std::abs(x) > 2147483647.0) {
-    problem(loc, key, fmt::format("{} {} does not fit a 32-bit integer", what, x),
-            accepted_values(decl));
-    return false;
-  }
+  if (integer && std::abs(x) > 2147483647.0) return report("does not fit a 32-bit integer", false);
   return true;
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <set>
@@ -379,7 +380,12 @@ std::string format_value(const KeyValue& value) {
     }
     std::string operator()(const std::map<std::string, double>& v) const {
       std::string out;
-      for (const auto& [k, x] : v) out += (out.empty() ? "" : ", ") + k + " = " + toml_float(x);
+      for (const auto& [k, x] : v) {
+        const bool bare = !k.empty() && std::all_of(k.begin(), k.end(), [](char c) {
+          return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+        });
+        out += (out.empty() ? "" : ", ") + (bare ? k : quoted(k)) + " = " + toml_float(x);
+      }
       return "{ " + out + (out.empty() ? "}" : " }");
     }
   };

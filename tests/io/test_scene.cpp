@@ -177,6 +177,21 @@ velocity = [0, 0, 0.3]
         "(accepted: keys type, velocity)");
 }
 
+TEST_CASE("numbers that do not fit, non-finite floats and repeated directions are refused") {
+  CHECK(error_of("[mesh]\nsource = \"box\"\n[mesh.box]\ncells = [8, 3000000000, 8]\n") ==
+        "t.toml:4:13: key 'mesh.box.cells': element 2 is 3000000000, does not fit a 32-bit integer "
+        "(accepted: 3 values, each >= 1)");
+  CHECK(error_of("[mesh]\nsource = \"box\"\nscale = nan\n") ==
+        "t.toml:3:9: key 'mesh.scale': value nan is not a finite number (accepted: > 0)");
+  CHECK(error_of("[mesh]\nsource = \"box\"\n[mesh.box]\nperiodic = [\"y\", \"y\"]\n") ==
+        "t.toml:4:18: key 'mesh.box.periodic': element 2: \"y\" is repeated "
+        "(accepted: each of \"x\", \"y\", \"z\", no repeats)");
+  CHECK(error_of("[mesh]\nsource = \"box\"\nsource = \"pipe\"\n").rfind(
+            "t.toml:3:10: TOML syntax error: ", 0) == 0);  // a key written twice
+  CHECK(format_value(KeyValue{std::map<std::string, double>{{"a b", 1.0}, {"c", 2.5}}}) ==
+        "{ \"a b\" = 1.0, c = 2.5 }");
+}
+
 TEST_CASE("bad declarations are refused when the schema is checked") {
   Schema no_default;
   no_default.section("a", "A.");
