@@ -3,13 +3,13 @@
 #include <fmt/format.h>
 #include <hdf5.h>
 
-#include "flow/comm.hpp"
-
 #include <algorithm>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <type_traits>
+
+#include "flow/comm.hpp"
 
 namespace valsalva::io::h5 {
 
@@ -79,8 +79,8 @@ std::vector<U> exchange(const flow::Comm& comm, std::span<const U> send,
                         std::vector<int>& recv_counts) {
   const int p = comm.size();
   recv_counts.assign(p, 0);
-  VALSALVA_MPI(MPI_Alltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT,
-                            comm.get()));
+  VALSALVA_MPI(
+      MPI_Alltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT, comm.get()));
   auto bytes = [&](std::span<const int> counts, std::vector<int>& n, std::vector<int>& displ) {
     n.resize(p);
     displ.resize(p);
@@ -91,8 +91,8 @@ std::vector<U> exchange(const flow::Comm& comm, std::span<const U> send,
       total += static_cast<std::int64_t>(counts[r]) * width * sizeof(U);
     }
     if (total > std::numeric_limits<int>::max())
-      throw std::runtime_error(fmt::format("HDF5 row exchange: {} bytes exceed MPI's int counts",
-                                           total));
+      throw std::runtime_error(
+          fmt::format("HDF5 row exchange: {} bytes exceed MPI's int counts", total));
     return static_cast<std::size_t>(total / sizeof(U));
   };
   std::vector<int> sn, sd, rn, rd;
@@ -131,7 +131,9 @@ Handle transfer_list(bool parallel, const Context& check) {
   return dxpl;
 }
 
-Id plist_or_default(const Handle& h) { return h.valid() ? h.get() : H5P_DEFAULT; }
+Id plist_or_default(const Handle& h) {
+  return h.valid() ? h.get() : H5P_DEFAULT;
+}
 
 // Selects the rows of `run` (all columns) in a [rows x cols] file space.
 void select_run(Id space, Run run, int cols, const Context& check) {
@@ -157,13 +159,11 @@ Handle memory_space(std::size_t n, const Context& check) {
 
 }  // namespace
 
-void fail(const std::string& call, const std::filesystem::path& file,
-          const std::string& dataset) {
+void fail(const std::string& call, const std::filesystem::path& file, const std::string& dataset) {
   std::string detail;
   H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, collect_error, &detail);
   throw std::runtime_error(fmt::format("HDF5 error in {} (file '{}', dataset '{}'){}{}", call,
-                                       file.string(), dataset, detail.empty() ? "" : ": ",
-                                       detail));
+                                       file.string(), dataset, detail.empty() ? "" : ": ", detail));
 }
 
 Handle& Handle::operator=(Handle&& other) noexcept {
@@ -180,11 +180,21 @@ int Handle::reset() {
   if (id_ < 0) return 0;
   herr_t status = 0;
   switch (kind_) {
-    case Kind::file: status = H5Fclose(id_); break;
-    case Kind::dataset: status = H5Dclose(id_); break;
-    case Kind::dataspace: status = H5Sclose(id_); break;
-    case Kind::plist: status = H5Pclose(id_); break;
-    case Kind::attribute: status = H5Aclose(id_); break;
+    case Kind::file:
+      status = H5Fclose(id_);
+      break;
+    case Kind::dataset:
+      status = H5Dclose(id_);
+      break;
+    case Kind::dataspace:
+      status = H5Sclose(id_);
+      break;
+    case Kind::plist:
+      status = H5Pclose(id_);
+      break;
+    case Kind::attribute:
+      status = H5Aclose(id_);
+      break;
   }
   id_ = -1;
   return status;
@@ -198,9 +208,9 @@ File::File(MPI_Comm comm, std::filesystem::path path, Mode mode)
   Handle fapl(check(H5Pcreate(H5P_FILE_ACCESS), "H5Pcreate"), Handle::Kind::plist);
   check(H5Pset_fapl_mpio(fapl.get(), comm, MPI_INFO_NULL), "H5Pset_fapl_mpio");
   if (mode == Mode::create) {
-    file_ = Handle(check(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()),
-                         "H5Fcreate"),
-                   Handle::Kind::file);
+    file_ =
+        Handle(check(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), "H5Fcreate"),
+               Handle::Kind::file);
   } else {
     if (!std::filesystem::exists(path_)) check.error("no such file");
     file_ = Handle(check(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, fapl.get()), "H5Fopen"),
@@ -237,9 +247,8 @@ namespace {
 
 // Creates the dataset and writes rows `run` from `data` (run.count rows).
 template <class T>
-void write_run(Id file, bool parallel, const std::filesystem::path& path,
-               const std::string& name, std::int64_t global_rows, int cols, Run run,
-               std::span<const T> data) {
+void write_run(Id file, bool parallel, const std::filesystem::path& path, const std::string& name,
+               std::int64_t global_rows, int cols, Run run, std::span<const T> data) {
   Context check(path, name);
   const hsize_t dims[2] = {static_cast<hsize_t>(global_rows), static_cast<hsize_t>(cols)};
   Handle filespace(check(H5Screate_simple(cols == 0 ? 1 : 2, dims, nullptr), "H5Screate_simple"),
@@ -263,8 +272,7 @@ template <class T>
 void read_run(Id file, bool parallel, const std::filesystem::path& path, const std::string& name,
               int width, Run run, std::span<T> out) {
   Context check(path, name);
-  Handle dset(check(H5Dopen2(file, name.c_str(), H5P_DEFAULT), "H5Dopen2"),
-              Handle::Kind::dataset);
+  Handle dset(check(H5Dopen2(file, name.c_str(), H5P_DEFAULT), "H5Dopen2"), Handle::Kind::dataset);
   Handle filespace(check(H5Dget_space(dset.get()), "H5Dget_space"), Handle::Kind::dataspace);
   select_run(filespace.get(), run, width, check);
   Handle memspace = memory_space(out.size(), check);
@@ -280,7 +288,8 @@ std::string same_shape(MPI_Comm comm, std::int64_t global_rows, int cols) {
   if (comm == MPI_COMM_NULL) return {};
   const flow::Comm world(comm);
   const std::int64_t rows_hi = world.max(global_rows), rows_lo = -world.max(-global_rows);
-  const std::int64_t cols_hi = world.max(std::int64_t(cols)), cols_lo = -world.max(-std::int64_t(cols));
+  const std::int64_t cols_hi = world.max(std::int64_t(cols)),
+                     cols_lo = -world.max(-std::int64_t(cols));
   if (rows_lo == rows_hi && cols_lo == cols_hi) return {};
   return fmt::format("ranks disagree on the shape: rows {}..{}, columns {}..{}", rows_lo, rows_hi,
                      cols_lo, cols_hi);
@@ -331,7 +340,8 @@ void File::write_rows(const std::string& name, std::int64_t global_rows, int col
     const Run run = cover(sorted);
     std::vector<T> block(run.count * width, T{});
     for (std::size_t i = 0; i < sorted.size(); ++i)
-      std::copy_n(buffer.begin() + i * width, width, block.begin() + (sorted[i] - run.start) * width);
+      std::copy_n(buffer.begin() + i * width, width,
+                  block.begin() + (sorted[i] - run.start) * width);
     write_run<T>(file_.get(), false, path_, name, global_rows, cols, run, block);
     return;
   }
@@ -361,7 +371,8 @@ void File::write_block(const std::string& name, std::int64_t global_rows, int co
   const std::size_t width = std::max(cols, 1);
   std::string error = same_shape(comm_, global_rows, cols);
   const auto rows = static_cast<std::int64_t>(data.size() / width);
-  if (error.empty() && (data.size() % width != 0 || first_row < 0 || first_row + rows > global_rows))
+  if (error.empty() &&
+      (data.size() % width != 0 || first_row < 0 || first_row + rows > global_rows))
     error = fmt::format("block of {} values at row {} does not fit {} rows of {} columns",
                         data.size(), first_row, global_rows, width);
   if (!error.empty())
@@ -418,7 +429,8 @@ std::vector<T> File::read_rows(const std::string& name,
     std::vector<T> block(run.count * width);
     read_run<T>(file_.get(), false, path_, name, cols, run, block);
     for (std::size_t i = 0; i < unique.size(); ++i)
-      std::copy_n(block.begin() + (unique[i] - run.start) * width, width, values.begin() + i * width);
+      std::copy_n(block.begin() + (unique[i] - run.start) * width, width,
+                  values.begin() + i * width);
   } else {  // ask each block's rank for its rows; answers come back in the order asked
     const flow::Comm world(comm_);
     const BlockLayout layout{shape[0], world.size()};
@@ -432,7 +444,8 @@ std::vector<T> File::read_rows(const std::string& name,
     read_run<T>(file_.get(), true, path_, name, cols, run, block);
     std::vector<T> answers(asked.size() * width);
     for (std::size_t i = 0; i < asked.size(); ++i)
-      std::copy_n(block.begin() + (asked[i] - run.start) * width, width, answers.begin() + i * width);
+      std::copy_n(block.begin() + (asked[i] - run.start) * width, width,
+                  answers.begin() + i * width);
     values = exchange<T>(world, answers, asked_counts, width, answer_counts);
   }
   std::vector<T> out(row_ids.size() * width);
@@ -482,13 +495,13 @@ double File::read_attribute(const std::string& name) const {
   return value;
 }
 
-#define VALSALVA_H5_INSTANTIATE(T)                                                             \
-  template void File::write_rows<T>(const std::string&, std::int64_t, int,                     \
-                                    std::span<const std::int64_t>, std::span<const T>);        \
-  template void File::write_block<T>(const std::string&, std::int64_t, int, std::int64_t,      \
-                                     std::span<const T>);                                      \
+#define VALSALVA_H5_INSTANTIATE(T)                                                              \
+  template void File::write_rows<T>(const std::string&, std::int64_t, int,                      \
+                                    std::span<const std::int64_t>, std::span<const T>);         \
+  template void File::write_block<T>(const std::string&, std::int64_t, int, std::int64_t,       \
+                                     std::span<const T>);                                       \
   template std::vector<T> File::read_rows<T>(const std::string&, std::span<const std::int64_t>) \
-      const;                                                                                   \
+      const;                                                                                    \
   template std::vector<T> File::read_all<T>(const std::string&) const;
 
 VALSALVA_H5_INSTANTIATE(double)

@@ -32,10 +32,10 @@ struct XdmfCell {
   std::array<int, 8> order;
 };
 constexpr std::array<XdmfCell, 4> kXdmfCells = {{
-    {6, {0, 1, 2, 3}},                   // tetra
-    {7, {0, 1, 2, 3, 4}},                // pyramid
-    {8, {0, 2, 1, 3, 5, 4}},             // prism -> wedge
-    {9, {0, 1, 2, 3, 4, 5, 6, 7}},       // hexahedron
+    {6, {0, 1, 2, 3}},              // tetra
+    {7, {0, 1, 2, 3, 4}},           // pyramid
+    {8, {0, 2, 1, 3, 5, 4}},        // prism -> wedge
+    {9, {0, 1, 2, 3, 4, 5, 6, 7}},  // hexahedron
 }};
 
 std::string check_mesh(const std::string& who, std::int64_t global_nodes,
@@ -50,9 +50,10 @@ std::string check_mesh(const std::string& who, std::int64_t global_nodes,
                          global_nodes);
   if (offsets.size() != types.size() + 1 || offsets.front() != 0 ||
       offsets.back() != static_cast<std::int64_t>(cell_nodes.size()))
-    return fmt::format("{}: cell_offsets must have cells + 1 = {} entries from 0 to {} "
-                       "(got {} entries)",
-                       who, types.size() + 1, cell_nodes.size(), offsets.size());
+    return fmt::format(
+        "{}: cell_offsets must have cells + 1 = {} entries from 0 to {} "
+        "(got {} entries)",
+        who, types.size() + 1, cell_nodes.size(), offsets.size());
   for (std::size_t c = 0; c < types.size(); ++c) {
     if (types[c] >= kXdmfCells.size())
       return fmt::format("{}: cell {} has type {}; expected 0 tetra, 1 pyramid, 2 prism, 3 hexa",
@@ -83,7 +84,8 @@ std::span<const double> flat(std::span<const Eigen::Vector3d> v) {
 }  // namespace
 
 XdmfWriter::XdmfWriter(MPI_Comm comm, std::filesystem::path dir, std::string basename,
-                       std::int64_t global_nodes, std::span<const std::int64_t> owned_node_global_ids,
+                       std::int64_t global_nodes,
+                       std::span<const std::int64_t> owned_node_global_ids,
                        std::span<const Eigen::Vector3d> owned_node_coords,
                        std::span<const std::uint8_t> cell_types,
                        std::span<const std::int64_t> cell_offsets,
@@ -108,14 +110,14 @@ XdmfWriter::XdmfWriter(MPI_Comm comm, std::filesystem::path dir, std::string bas
   if (lo != hi)
     h5::settle(comm_, fmt::format("{}: ranks disagree on global_nodes ({}..{})", who, lo, hi));
   if (owned_total != global_nodes)
-    h5::settle(comm_, fmt::format("{}: ranks own {} nodes in total, expected global_nodes = {}", who,
-                             owned_total, global_nodes));
+    h5::settle(comm_, fmt::format("{}: ranks own {} nodes in total, expected global_nodes = {}",
+                                  who, owned_total, global_nodes));
 
   if (rank_ == 0) {
     std::error_code ec;
     std::filesystem::create_directories(dir_, ec);
-    if (ec) error = fmt::format("{}: cannot create directory '{}': {}", who, dir_.string(),
-                                ec.message());
+    if (ec)
+      error = fmt::format("{}: cannot create directory '{}': {}", who, dir_.string(), ec.message());
   }
   h5::settle(comm_, error);
 
@@ -155,8 +157,8 @@ std::filesystem::path XdmfWriter::write_step(double time, std::span<const Scalar
   auto check_field = [&](const std::string& name, std::size_t size, int components) {
     if (!error.empty()) return;
     if (!valid_name(name))
-      error = fmt::format("{}: field name '{}' must be non-empty and use only [A-Za-z0-9_.-]",
-                          who, name);
+      error = fmt::format("{}: field name '{}' must be non-empty and use only [A-Za-z0-9_.-]", who,
+                          name);
     else if (!names.insert(name).second)
       error = fmt::format("{}: field '{}' given twice", who, name);
     else if (size != owned_ids_.size())
@@ -197,7 +199,8 @@ void XdmfWriter::write_xmf() const {
       "<?xml version=\"1.0\" ?>\n"
       "<Xdmf Version=\"3.0\">\n"
       "  <Domain>\n"
-      "    <Grid Name=\"" + basename_ + "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+      "    <Grid Name=\"" +
+      basename_ + "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   for (std::size_t s = 0; s < steps_.size(); ++s) {
     const Step& step = steps_[s];
     xml += fmt::format(
@@ -223,8 +226,8 @@ void XdmfWriter::write_xmf() const {
           "          <DataItem Dimensions=\"{}{}\" NumberType=\"Float\" Precision=\"8\" "
           "Format=\"HDF\">{}:/{}</DataItem>\n"
           "        </Attribute>\n",
-          name, components == 3 ? "Vector" : "Scalar", global_nodes_,
-          components == 3 ? " 3" : "", step.file, name);
+          name, components == 3 ? "Vector" : "Scalar", global_nodes_, components == 3 ? " 3" : "",
+          step.file, name);
     xml += "      </Grid>\n";
   }
   xml += "    </Grid>\n  </Domain>\n</Xdmf>\n";
@@ -242,8 +245,8 @@ void XdmfWriter::write_xmf() const {
   std::error_code ec;
   std::filesystem::rename(tmp, target, ec);
   if (ec)
-    throw std::runtime_error(fmt::format("XdmfWriter: cannot rename '{}' to '{}': {}",
-                                         tmp.string(), target.string(), ec.message()));
+    throw std::runtime_error(fmt::format("XdmfWriter: cannot rename '{}' to '{}': {}", tmp.string(),
+                                         target.string(), ec.message()));
 }
 
 namespace {

@@ -54,7 +54,7 @@ class XdmfWriter {
  private:
   struct Step {
     double time;
-    std::string file;                                  // name relative to dir_
+    std::string file;                                 // name relative to dir_
     std::vector<std::pair<std::string, int>> fields;  // name, components (1 or 3)
   };
   void write_xmf() const;

@@ -34,7 +34,9 @@ fs::path scratch(const std::string& name) {
   return dir / name;
 }
 
-double value(std::int64_t row, int col) { return 1.0 / (3.0 + row) + 0.25 * col; }
+double value(std::int64_t row, int col) {
+  return 1.0 / (3.0 + row) + 0.25 * col;
+}
 
 }  // namespace
 
@@ -68,8 +70,7 @@ TEST_CASE("serial h5::File: scattered rows, gaps at zero, rows read back in any 
   const std::vector<std::int64_t> ask = {40, 0, 40, 4, 49};  // duplicates and unwritten rows
   const std::vector<double> some = file.read_rows<double>("xyz", ask);
   REQUIRE(some.size() == 15);
-  for (std::size_t i = 0; i < ask.size(); ++i)
-    CHECK(some[3 * i + 1] == all[3 * ask[i] + 1]);
+  for (std::size_t i = 0; i < ask.size(); ++i) CHECK(some[3 * i + 1] == all[3 * ask[i] + 1]);
 
   CHECK_THROWS_WITH(file.read_rows<double>("xyz", std::vector<std::int64_t>{50}),
                     doctest::Contains("outside [0, 50)"));
@@ -117,8 +118,9 @@ TEST_CASE("parallel h5::File: bad calls fail on every rank, naming file and data
 
   // Only rank 0 passes a row out of range: every rank must throw, none may hang.
   const std::vector<std::int64_t> far = {rank == 0 ? 99 : rank};
-  CHECK_THROWS_WITH(file.write_rows<double>("a", size, 0, far, one),
-                    doctest::Contains(rank == 0 ? "dataset 'a': row id 99 outside" : "another rank"));
+  CHECK_THROWS_WITH(
+      file.write_rows<double>("a", size, 0, far, one),
+      doctest::Contains(rank == 0 ? "dataset 'a': row id 99 outside" : "another rank"));
   const std::vector<std::int64_t> twice = {rank, rank};
   const std::vector<double> two = {1.0, 2.0};
   CHECK_THROWS_WITH(file.write_rows<double>("b", size, 0, twice, two),
@@ -128,8 +130,9 @@ TEST_CASE("parallel h5::File: bad calls fail on every rank, naming file and data
                       doctest::Contains("ranks disagree on the shape"));
     // Every rank writes row 0; rank 0 holds that row's block and finds the clash.
     const std::vector<std::int64_t> zero = {0};
-    CHECK_THROWS_WITH(file.write_rows<double>("d", size, 0, zero, one),
-                      doctest::Contains(rank == 0 ? "row id 0 given by two ranks" : "another rank"));
+    CHECK_THROWS_WITH(
+        file.write_rows<double>("d", size, 0, zero, one),
+        doctest::Contains(rank == 0 ? "row id 0 given by two ranks" : "another rank"));
   }
   file.write_rows<double>("e", size, 0, row, one);
   CHECK_THROWS_WITH(file.write_rows<double>("e", size, 0, row, one),

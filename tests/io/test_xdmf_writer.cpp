@@ -2,7 +2,9 @@
 // in a scattered, shuffled order is written with two steps; coordinates, fields, topology,
 // partition and times are read back by global id and compared exactly (the HDF5 files store
 // the same doubles, so any difference is a bug, not round-off). The .xmf is checked to reference
-// existing datasets with the stated dimensions, in C++ and with Python's xml.etree + h5py.
+// existing datasets with the stated dimensions, in C++ and with Python's xml.etree + h5py
+// (and, where python3-vtk9 is installed, that every cell is positively oriented in VTK's node
+// order, which XDMF uses: the check of the Gmsh-prism to VTK-wedge reordering).
 #include <doctest/doctest.h>
 #include <mpi.h>
 
@@ -36,7 +38,9 @@ constexpr int kCubes = 3;  // per direction
 constexpr int kPts = kCubes + 1;
 constexpr std::int64_t kNodes = kPts * kPts * kPts;
 
-std::int64_t node_id(int i, int j, int k) { return i + kPts * (j + kPts * k); }
+std::int64_t node_id(int i, int j, int k) {
+  return i + kPts * (j + kPts * k);
+}
 
 Eigen::Vector3d coord(std::int64_t id) {
   const double i = id % kPts, j = (id / kPts) % kPts, k = id / (kPts * kPts);
@@ -45,7 +49,9 @@ Eigen::Vector3d coord(std::int64_t id) {
           0.1 * k + 1e-3 * std::sin(3.0 * id)};
 }
 
-int node_owner(std::int64_t id, int size) { return static_cast<int>((7 * id + 3) % size); }
+int node_owner(std::int64_t id, int size) {
+  return static_cast<int>((7 * id + 3) % size);
+}
 
 // Cells of cube (i, j, k) in Gmsh order: a hexahedron, two prisms, three pyramids with apex at
 // the far corner, or six Kuhn tetrahedra around the main diagonal, by cube index.
@@ -71,10 +77,14 @@ CellList cells_of_rank(int rank, int size) {
     for (int j = 0; j < kCubes; ++j)
       for (int i = 0; i < kCubes; ++i, ++cube) {
         if (cube % size != rank) continue;
-        const std::int64_t v[8] = {node_id(i, j, k),         node_id(i + 1, j, k),
-                                   node_id(i + 1, j + 1, k), node_id(i, j + 1, k),
-                                   node_id(i, j, k + 1),     node_id(i + 1, j, k + 1),
-                                   node_id(i + 1, j + 1, k + 1), node_id(i, j + 1, k + 1)};
+        const std::int64_t v[8] = {node_id(i, j, k),
+                                   node_id(i + 1, j, k),
+                                   node_id(i + 1, j + 1, k),
+                                   node_id(i, j + 1, k),
+                                   node_id(i, j, k + 1),
+                                   node_id(i + 1, j, k + 1),
+                                   node_id(i + 1, j + 1, k + 1),
+                                   node_id(i, j + 1, k + 1)};
         switch (cube % 4) {
           case 0:
             list.add(3, {v, v + 8}, {v, v + 8});
@@ -89,7 +99,8 @@ CellList cells_of_rank(int rank, int size) {
             list.add(1, {v[0], v[3], v[7], v[4], v[6]}, {v[0], v[3], v[7], v[4], v[6]});
             break;
           default:
-            static constexpr int paths[6][2] = {{1, 2}, {1, 5}, {3, 2}, {3, 7}, {4, 5}, {4, 7}};
+            // Ordered for a positive volume (base normal towards the apex v6).
+            static constexpr int paths[6][2] = {{1, 2}, {5, 1}, {2, 3}, {3, 7}, {4, 5}, {7, 4}};
             for (const auto& p : paths)
               list.add(0, {v[0], v[p[0]], v[p[1]], v[6]}, {v[0], v[p[0]], v[p[1]], v[6]});
         }
@@ -97,7 +108,9 @@ CellList cells_of_rank(int rank, int size) {
   return list;
 }
 
-double pressure(std::int64_t id, double t) { return std::exp(-t) * std::cos(0.37 * id) + t; }
+double pressure(std::int64_t id, double t) {
+  return std::exp(-t) * std::cos(0.37 * id) + t;
+}
 Eigen::Vector3d velocity(std::int64_t id, double t) {
   return {std::sin(0.1 * id + t), 1.0 / (1.0 + id + t), -std::sqrt(double(id)) * t};
 }
@@ -171,7 +184,8 @@ TEST_CASE("XdmfWriter writes coordinates, fields and topology readable by global
     CHECK(io::h5::File(out.steps[s], io::h5::Mode::read).read_attribute("time") == t);
 
     // Parallel read of this rank's own rows, in its shuffled order.
-    const std::vector<double> mine = io::read_nodal_field(MPI_COMM_WORLD, out.steps[s], "velocity", out.owned);
+    const std::vector<double> mine =
+        io::read_nodal_field(MPI_COMM_WORLD, out.steps[s], "velocity", out.owned);
     REQUIRE(mine.size() == 3 * out.owned.size());
     for (std::size_t i = 0; i < out.owned.size(); ++i)
       for (int d = 0; d < 3; ++d) CHECK(mine[3 * i + d] == velocity(out.owned[i], t)[d]);
@@ -215,7 +229,8 @@ struct Item {
 std::vector<Item> data_items(const std::string& xml) {
   const std::regex re(R"re(<DataItem Dimensions="([0-9 ]+)"[^>]*>([^:<]+):/([^<]+)</DataItem>)re");
   std::vector<Item> items;
-  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), re); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), re); it != std::sregex_iterator();
+       ++it)
     items.push_back({(*it)[1], (*it)[2], (*it)[3]});
   return items;
 }
@@ -247,7 +262,8 @@ TEST_CASE("The .xmf time series references existing datasets with their dimensio
     const io::h5::File file(out.dir / item.file, io::h5::Mode::read);
     REQUIRE(file.has(item.dataset));
     std::string dims;
-    for (std::int64_t d : file.dims(item.dataset)) dims += (dims.empty() ? "" : " ") + std::to_string(d);
+    for (std::int64_t d : file.dims(item.dataset))
+      dims += (dims.empty() ? "" : " ") + std::to_string(d);
     CHECK(dims == item.dims);
   }
 
@@ -272,12 +288,13 @@ TEST_CASE("XdmfWriter and read_nodal_field reject bad input with clear errors") 
       xyz.push_back(coord(id));
     }
   CellList cells = cells_of_rank(w.rank, w.size);
-  io::XdmfWriter writer(MPI_COMM_WORLD, dir, "bad", kNodes, owned, xyz, cells.types,
-                        cells.offsets, cells.nodes);
+  io::XdmfWriter writer(MPI_COMM_WORLD, dir, "bad", kNodes, owned, xyz, cells.types, cells.offsets,
+                        cells.nodes);
   const std::vector<double> short_p(owned.size() + 1, 0.0);
   const io::ScalarField wrong_size[] = {{"p", short_p}};
-  CHECK_THROWS_WITH(writer.write_step(0.0, wrong_size),
-                    doctest::Contains(("field 'p' has " + std::to_string(short_p.size()) + " values").c_str()));
+  CHECK_THROWS_WITH(
+      writer.write_step(0.0, wrong_size),
+      doctest::Contains(("field 'p' has " + std::to_string(short_p.size()) + " values").c_str()));
   const std::vector<double> p(owned.size(), 1.0);
   const io::ScalarField bad_name[] = {{"p/x", p}};
   CHECK_THROWS_WITH(writer.write_step(0.0, bad_name), doctest::Contains("field name 'p/x'"));
@@ -290,14 +307,14 @@ TEST_CASE("XdmfWriter and read_nodal_field reject bad input with clear errors") 
                                    cells.offsets, cells.nodes),
                     doctest::Contains("cell 0 has type 7"));
   cells.types[0] = cells_of_rank(w.rank, w.size).types[0];
-  CHECK_THROWS_WITH(io::XdmfWriter(MPI_COMM_WORLD, dir, "bad", kNodes + 1, owned, xyz,
-                                   cells.types, cells.offsets, cells.nodes),
-                    doctest::Contains(("expected global_nodes = " + std::to_string(kNodes + 1)).c_str()));
+  CHECK_THROWS_WITH(
+      io::XdmfWriter(MPI_COMM_WORLD, dir, "bad", kNodes + 1, owned, xyz, cells.types, cells.offsets,
+                     cells.nodes),
+      doctest::Contains(("expected global_nodes = " + std::to_string(kNodes + 1)).c_str()));
 
   CHECK_THROWS_WITH(io::read_nodal_field(writer.mesh_file(), "pressure"),
                     doctest::Contains("dataset 'pressure'"));
   CHECK_THROWS_WITH(io::read_nodal_field(writer.mesh_file(), "topology"),
                     doctest::Contains("not a nodal field"));
-  CHECK_THROWS_WITH(io::read_nodal_field(dir / "missing.h5", "p"),
-                    doctest::Contains("missing.h5"));
+  CHECK_THROWS_WITH(io::read_nodal_field(dir / "missing.h5", "p"), doctest::Contains("missing.h5"));
 }

@@ -58,7 +58,8 @@ TEST_CASE("Gmsh: box mesh with physical groups") {
       for (int d = 0; d < 3; ++d) e[k][d] = xyz[3 * index[n[k + 1]] + d] - xyz[3 * index[n[0]] + d];
     total += std::abs(e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
                       e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-                      e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) / 6.0;
+                      e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
+             6.0;
   }
   MESSAGE("Gmsh: ", tets, " tetrahedra, volume ", total);
   CHECK(total == doctest::Approx(6.0).epsilon(1e-12));

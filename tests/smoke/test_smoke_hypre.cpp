@@ -116,8 +116,10 @@ TEST_CASE("hypre: IJ assembly across ranks, PCG + BoomerAMG on the 1D Laplacian"
     CHECK(r.residual < 1e-12);
     CHECK(r.error < bound);
     CHECK(r.iterations <= 20);
-    if (n == 1000) coarse_iterations = r.iterations;
-    else CHECK(r.iterations <= coarse_iterations + 3);
+    if (n == 1000)
+      coarse_iterations = r.iterations;
+    else
+      CHECK(r.iterations <= coarse_iterations + 3);
   }
   HYPRE_Finalize();
 }

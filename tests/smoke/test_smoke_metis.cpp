@@ -26,9 +26,9 @@ TEST_CASE("METIS: k-way partition of a grid graph is balanced with a small edge 
   std::vector<idx_t> part(n, -1);
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
-  const int status = METIS_PartGraphKway(&vertices, &constraints, xadj.data(), adjncy.data(),
-                                         nullptr, nullptr, nullptr, &parts, nullptr, nullptr,
-                                         options, &cut, part.data());
+  const int status =
+      METIS_PartGraphKway(&vertices, &constraints, xadj.data(), adjncy.data(), nullptr, nullptr,
+                          nullptr, &parts, nullptr, nullptr, options, &cut, part.data());
   REQUIRE(status == METIS_OK);
 
   std::vector<int> count(parts, 0);
