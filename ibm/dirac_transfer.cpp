@@ -1,0 +1,210 @@
+#include "ibm/dirac_transfer.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cassert>
+#include <limits>
+
+#include "ibm/collective_error.hpp"
+#include "ibm/rkpm.hpp"
+
+namespace valsalva::ibm {
+
+namespace {
+
+std::string where(int marker, const Eigen::Vector3d& x) {
+  return fmt::format("ibm: marker {} at ({:.6g}, {:.6g}, {:.6g}) m", marker, x.x(), x.y(), x.z());
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 1.0;
+  auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+}  // namespace
+
+DiracTransfer::DiracTransfer(flow::LocalMesh& mesh, const TransferOptions& options)
+    : mesh_(&mesh), options_(options) {
+  if (!(options.kernel.width > 0))
+    throw std::invalid_argument(
+        fmt::format("ibm: kernel width {} must be > 0 (in units of h)", options.kernel.width));
+  if (!(options.growth_factor > 1) || options.max_growth < 0)
+    throw std::invalid_argument(fmt::format("ibm: growth factor {} must be > 1, max growth {} >= 0",
+                                            options.growth_factor, options.max_growth));
+  // Buckets about one mesh size wide: a 4h support box visits ~125 buckets of ~1 node each.
+  grid_ = BucketGrid(mesh.position, median(mesh.h));
+  for (double h : mesh.h) h_max_ = std::max(h_max_, h);
+  int outer = 0;
+  for (int layer : mesh.ghost_layer) outer = std::max(outer, layer);
+  outer_layer_ = static_cast<int>(mesh.comm.max(static_cast<std::int64_t>(outer)));
+  // Ghost positions are those of the periodic representative, so an edge whose vector differs
+  // from the position difference crosses a periodic boundary.
+  periodic_node_.assign(static_cast<std::size_t>(mesh.num_local()), 0);
+  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
+    const auto [a, b] = mesh.edges[e];
+    const Eigen::Vector3d gap = mesh.edge_vector[e] - (mesh.position[b] - mesh.position[a]);
+    if (gap.norm() > 1e-8 * mesh.edge_vector[e].norm()) periodic_node_[a] = periodic_node_[b] = 1;
+  }
+}
+
+void DiracTransfer::locate(std::span<const Eigen::Vector3d> markers) {
+  const auto& mesh = *mesh_;
+  num_markers_ = static_cast<int>(markers.size());
+  supports_.clear();
+  weights_.clear();
+
+  // Nearest owned node of every marker on this rank, then the rank with the nearest overall.
+  const double reach = options_.kernel.width * h_max_;
+  struct DistanceRank {
+    double distance;
+    int rank;
+  };
+  std::vector<DistanceRank> mine(markers.size()), best(markers.size());
+  std::vector<int> nearest(markers.size(), -1);
+  const int num_owned = mesh.num_owned;
+  for (std::size_t i = 0; i < markers.size(); ++i) {
+    const auto found = grid_.nearest(markers[i], reach, [&](int n) { return n < num_owned; });
+    nearest[i] = found.index;
+    mine[i] = {found.index >= 0 ? found.distance : std::numeric_limits<double>::max(),
+               mesh.comm.rank()};
+  }
+  if (!markers.empty())
+    VALSALVA_MPI(MPI_Allreduce(mine.data(), best.data(), static_cast<int>(markers.size()),
+                               MPI_DOUBLE_INT, MPI_MINLOC, mesh.comm.get()));
+
+  std::string error;
+  for (std::size_t i = 0; i < markers.size() && error.empty(); ++i) {
+    const int marker = static_cast<int>(i);
+    if (best[i].distance == std::numeric_limits<double>::max()) {
+      error = fmt::format("{} is outside the fluid mesh: no fluid node within {:.6g} m", where(marker, markers[i]),
+                          reach);
+    } else if (best[i].rank == mesh.comm.rank()) {
+      error = build_support(marker, markers[i], nearest[i]);
+    }
+  }
+  settle(mesh.comm, error);
+}
+
+std::string DiracTransfer::build_support(int marker, const Eigen::Vector3d& x, int nearest) {
+  const auto& mesh = *mesh_;
+  const double h = mesh.h[static_cast<std::size_t>(nearest)];
+  KernelShape shape = options_.kernel;
+  RkpmResult result;
+  for (int attempt = 0; attempt <= options_.max_growth; ++attempt) {
+    if (attempt > 0) shape.width *= options_.growth_factor;
+    const double radius = support_radius(shape, h);
+    grid_.in_box(x, radius, candidates_);
+    offset_.clear();
+    psi_.clear();
+    volume_.clear();
+    std::size_t kept = 0;
+    for (int n : candidates_) {
+      if (outer_layer_ > 0 && mesh.ghost_layer[n] == outer_layer_)
+        return fmt::format(
+            "{}: its kernel support (half-width {:.6g} m) reaches the outermost ghost layer ({}) on "
+            "rank {}, so nodes beyond it would be missed; distribute the mesh with more ghost "
+            "layers or use a narrower kernel",
+            where(marker, x), radius, outer_layer_, mesh.comm.rank());
+      if (periodic_node_[n])
+        return fmt::format(
+            "{}: its kernel support (half-width {:.6g} m) touches a periodic boundary; periodic "
+            "images of the kernel are not implemented",
+            where(marker, x), radius);
+      const Eigen::Vector3d y = mesh.position[n] - x;
+      const double p = kernel_3d(shape, y, h);
+      if (p <= 0.0) continue;
+      candidates_[kept++] = n;
+      offset_.push_back(y);
+      psi_.push_back(p);
+      volume_.push_back(mesh.volume[n]);
+    }
+    candidates_.resize(kept);
+    phi_.resize(kept);
+    result = rkpm_correct(offset_, psi_, volume_, radius, options_.min_rcond, phi_);
+    if (result.ok) break;
+  }
+  if (!result.ok)
+    return fmt::format(
+        "{}: the kernel's moment matrix is ill-conditioned (reciprocal condition number {:.3g} < "
+        "{:.3g}) even with the support grown to {:.3g} h (h = {:.6g} m); the marker is probably "
+        "outside the fluid or the mesh too coarse there",
+        where(marker, x), result.rcond, options_.min_rcond, shape.width, h);
+  MarkerSupport s{marker, h, shape.width, result.rcond, static_cast<int>(weights_.size()), 0};
+  for (std::size_t k = 0; k < candidates_.size(); ++k) weights_.push_back({candidates_[k], phi_[k]});
+  s.end = static_cast<int>(weights_.size());
+  supports_.push_back(s);
+  return {};
+}
+
+void DiracTransfer::spread(std::span<const double> marker_force, int components,
+                           std::span<double> density) {
+  const auto c = static_cast<std::size_t>(components);
+  if (marker_force.size() != c * static_cast<std::size_t>(num_markers_) ||
+      density.size() != c * static_cast<std::size_t>(mesh_->num_local()))
+    throw std::invalid_argument(fmt::format(
+        "ibm: spread got {} marker values and {} node values for {} markers, {} local nodes, {} "
+        "components",
+        marker_force.size(), density.size(), num_markers_, mesh_->num_local(), components));
+  std::fill(density.begin(), density.end(), 0.0);
+  for (const auto& s : supports_) {
+    const double* force = &marker_force[c * static_cast<std::size_t>(s.marker)];
+    for (int k = s.begin; k < s.end; ++k) {
+      double* f = &density[c * static_cast<std::size_t>(weights_[k].node)];
+      for (std::size_t d = 0; d < c; ++d) f[d] += force[d] * weights_[k].phi;
+    }
+  }
+  mesh_->halo.exchange(density, components, flow::HaloMode::add);
+  mesh_->halo.exchange(density, components, flow::HaloMode::insert);
+}
+
+void DiracTransfer::interpolate(std::span<double> field, int components,
+                                std::span<double> marker_values) {
+  const auto c = static_cast<std::size_t>(components);
+  if (marker_values.size() != c * static_cast<std::size_t>(num_markers_) ||
+      field.size() != c * static_cast<std::size_t>(mesh_->num_local()))
+    throw std::invalid_argument(fmt::format(
+        "ibm: interpolate got {} node values and {} marker values for {} local nodes, {} "
+        "markers, {} components",
+        field.size(), marker_values.size(), mesh_->num_local(), num_markers_, components));
+  mesh_->halo.exchange(field, components, flow::HaloMode::insert);
+  std::fill(marker_values.begin(), marker_values.end(), 0.0);
+  for (const auto& s : supports_) {
+    double* value = &marker_values[c * static_cast<std::size_t>(s.marker)];
+    for (int k = s.begin; k < s.end; ++k) {
+      const auto n = static_cast<std::size_t>(weights_[k].node);
+      const double w = weights_[k].phi * mesh_->volume[n];
+      for (std::size_t d = 0; d < c; ++d) value[d] += w * field[c * n + d];
+    }
+  }
+  // One rank evaluates each marker and the others hold exact zeros: the sum is exact.
+  if (!marker_values.empty())
+    VALSALVA_MPI(MPI_Allreduce(MPI_IN_PLACE, marker_values.data(),
+                               static_cast<int>(marker_values.size()), MPI_DOUBLE, MPI_SUM,
+                               mesh_->comm.get()));
+}
+
+namespace {
+// Eigen::Vector3d is three packed doubles, so a span of them is a node-major span of doubles.
+static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double));
+std::span<double> flat(std::span<Eigen::Vector3d> v) {
+  return {reinterpret_cast<double*>(v.data()), 3 * v.size()};
+}
+std::span<const double> flat(std::span<const Eigen::Vector3d> v) {
+  return {reinterpret_cast<const double*>(v.data()), 3 * v.size()};
+}
+}  // namespace
+
+void DiracTransfer::spread(std::span<const Eigen::Vector3d> marker_force,
+                           std::span<Eigen::Vector3d> density) {
+  spread(flat(marker_force), 3, flat(density));
+}
+
+void DiracTransfer::interpolate(std::span<Eigen::Vector3d> field,
+                                std::span<Eigen::Vector3d> marker_values) {
+  interpolate(flat(field), 3, flat(marker_values));
+}
+
+}  // namespace valsalva::ibm

@@ -1,0 +1,93 @@
+// Force spreading and velocity interpolation between Lagrangian markers and the distributed
+// fluid mesh through the RKPM-corrected discrete Dirac kernel (ibm/kernels.hpp, ibm/rkpm.hpp):
+//   spreading      f_j  = sum_i F_i phi(x_j, X_i)          (force density at fluid nodes)
+//   interpolation  U_i  = sum_j u_j phi(x_j, X_i) V_j
+// so that sum_j V_j f_j . u_j = sum_i F_i . U_i exactly: the two are adjoint.
+//
+// Marker ownership: markers are replicated on every rank (the same array everywhere). Each one
+// is evaluated by exactly one rank, the owner of the fluid node nearest to it (ties to the lower
+// rank, by MPI_MINLOC). That rank holds the marker's whole support among its owned and ghost
+// nodes with the fewest ghost layers, and the rule needs no other knowledge than positions, so
+// it does not depend on the partition shape. The evaluating rank builds phi over its owned and
+// ghost nodes; spreading adds into them and a halo "add" returns ghost contributions to their
+// owners; interpolation reads owned and ghost values after a halo "insert".
+//
+// The local mesh size at a marker is h of its nearest fluid node (it therefore jumps where the
+// nearest node changes; on a graded mesh the kernel changes width there).
+#pragma once
+
+#include <Eigen/Dense>
+#include <span>
+#include <vector>
+
+#include "flow/local_mesh.hpp"
+#include "ibm/bucket_grid.hpp"
+#include "ibm/kernels.hpp"
+
+namespace valsalva::ibm {
+
+struct TransferOptions {
+  KernelShape kernel;
+  double min_rcond = 1e-6;     // smallest accepted reciprocal condition number of scaled M
+  int max_growth = 2;          // an ill-conditioned M widens the support at most this often
+  double growth_factor = 1.5;  // by this factor each time
+};
+
+class DiracTransfer {
+ public:
+  struct Weight {
+    int node = 0;      // local node (owned or ghost)
+    double phi = 0.0;  // corrected kernel phi(x_node, X) [1/m^3]
+  };
+  struct MarkerSupport {
+    int marker = 0;     // index in the replicated marker array
+    double h = 0.0;     // local mesh size used
+    double width = 0.0; // support width used, in units of h (grown if M was ill-conditioned)
+    double rcond = 0.0; // reciprocal condition number of the scaled moment matrix
+    int begin = 0, end = 0;  // range in weights()
+  };
+
+  // The mesh must outlive the transfer (its halo is used for every exchange).
+  explicit DiracTransfer(flow::LocalMesh& mesh, const TransferOptions& options = {});
+
+  // Collective. Assigns every marker to its evaluating rank and builds the corrected kernel
+  // there. Throws the same error on every rank, naming the marker index and position, when a
+  // marker is outside the fluid mesh, when its support reaches the outermost ghost layer (or a
+  // periodic boundary), or when its moment matrix stays ill-conditioned after growing.
+  void locate(std::span<const Eigen::Vector3d> markers);
+
+  // Collective. `marker_force` (components per marker, replicated) -> `density` (components per
+  // local node, overwritten): complete on owned nodes, ghosts refreshed by a halo insert.
+  void spread(std::span<const double> marker_force, int components, std::span<double> density);
+  void spread(std::span<const Eigen::Vector3d> marker_force, std::span<Eigen::Vector3d> density);
+
+  // Collective. Refreshes the ghosts of `field` (halo insert), then writes the interpolated
+  // values at every marker into `marker_values` (replicated on every rank).
+  void interpolate(std::span<double> field, int components, std::span<double> marker_values);
+  void interpolate(std::span<Eigen::Vector3d> field, std::span<Eigen::Vector3d> marker_values);
+
+  int num_markers() const { return num_markers_; }
+  const std::vector<MarkerSupport>& supports() const { return supports_; }  // this rank's
+  const std::vector<Weight>& weights() const { return weights_; }
+  const flow::LocalMesh& mesh() const { return *mesh_; }
+
+ private:
+  // Builds the support of one marker on this rank; returns an error message or "".
+  std::string build_support(int marker, const Eigen::Vector3d& x, int nearest);
+
+  flow::LocalMesh* mesh_;
+  TransferOptions options_;
+  BucketGrid grid_;
+  double h_max_ = 0.0;
+  int outer_layer_ = 0;                 // outermost ghost layer of the distribution (0: none)
+  std::vector<char> periodic_node_;     // node has a local edge across a periodic boundary
+  int num_markers_ = 0;
+  std::vector<MarkerSupport> supports_;
+  std::vector<Weight> weights_;
+  // Scratch reused between markers and calls (no allocation once warm).
+  std::vector<int> candidates_;
+  std::vector<Eigen::Vector3d> offset_;
+  std::vector<double> psi_, volume_, phi_;
+};
+
+}  // namespace valsalva::ibm
