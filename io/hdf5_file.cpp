@@ -178,60 +178,37 @@ Handle& Handle::operator=(Handle&& other) noexcept {
 
 int Handle::reset() {
   if (id_ < 0) return 0;
-  herr_t status = 0;
-  switch (kind_) {
-    case Kind::file:
-      status = H5Fclose(id_);
-      break;
-    case Kind::dataset:
-      status = H5Dclose(id_);
-      break;
-    case Kind::dataspace:
-      status = H5Sclose(id_);
-      break;
-    case Kind::plist:
-      status = H5Pclose(id_);
-      break;
-    case Kind::attribute:
-      status = H5Aclose(id_);
-      break;
-  }
+  // In the order of Handle::Kind.
+  static herr_t (*const close[])(hid_t) = {H5Fclose, H5Dclose, H5Sclose, H5Pclose, H5Aclose};
+  const herr_t status = close[static_cast<int>(kind_)](id_);
   id_ = -1;
   return status;
 }
 
+namespace {
+Handle open_file(const std::filesystem::path& path, Mode mode, Id fapl) {
+  silence_hdf5_error_printing();
+  const std::string none;
+  Context check(path, none);
+  if (mode == Mode::create)
+    return {check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), "H5Fcreate"),
+            Handle::Kind::file};
+  if (!std::filesystem::exists(path)) check.error("no such file");
+  return {check(H5Fopen(path.c_str(), H5F_ACC_RDONLY, fapl), "H5Fopen"), Handle::Kind::file};
+}
+}  // namespace
+
 File::File(MPI_Comm comm, std::filesystem::path path, Mode mode)
     : path_(std::move(path)), parallel_(true), comm_(comm) {
-  silence_hdf5_error_printing();
   const std::string none;
   Context check(path_, none);
   Handle fapl(check(H5Pcreate(H5P_FILE_ACCESS), "H5Pcreate"), Handle::Kind::plist);
   check(H5Pset_fapl_mpio(fapl.get(), comm, MPI_INFO_NULL), "H5Pset_fapl_mpio");
-  if (mode == Mode::create) {
-    file_ =
-        Handle(check(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), "H5Fcreate"),
-               Handle::Kind::file);
-  } else {
-    if (!std::filesystem::exists(path_)) check.error("no such file");
-    file_ = Handle(check(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, fapl.get()), "H5Fopen"),
-                   Handle::Kind::file);
-  }
+  file_ = open_file(path_, mode, fapl.get());
 }
 
-File::File(std::filesystem::path path, Mode mode) : path_(std::move(path)), parallel_(false) {
-  silence_hdf5_error_printing();
-  const std::string none;
-  Context check(path_, none);
-  if (mode == Mode::create) {
-    file_ = Handle(
-        check(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "H5Fcreate"),
-        Handle::Kind::file);
-  } else {
-    if (!std::filesystem::exists(path_)) check.error("no such file");
-    file_ = Handle(check(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "H5Fopen"),
-                   Handle::Kind::file);
-  }
-}
+File::File(std::filesystem::path path, Mode mode)
+    : path_(std::move(path)), parallel_(false), file_(open_file(path_, mode, H5P_DEFAULT)) {}
 
 void File::close() {
   if (file_.reset() < 0) fail("H5Fclose", path_, "");
