@@ -1,0 +1,221 @@
+// Edge-based operators: exact for linear fields on perturbed/mixed meshes, second-order for a
+// smooth periodic field on uniform hexahedra and split tetrahedra (observed order >= 1.9 from
+// the two finest of three levels; 1.8 for the Laplacian on split tetrahedra, still
+// pre-asymptotic; perturbed tetrahedra are reported), and np = N reproduces the
+// single-rank numbers to 1e-12.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "field_test_utils.hpp"
+#include "flow/operators.hpp"
+
+using namespace valsalva;
+using flow::ScalarField;
+using flow::TensorField;
+using flow::VectorField;
+
+namespace {
+
+constexpr double k = 2 * std::numbers::pi;
+
+double phi_exact(const Eigen::Vector3d& x) {
+  return std::sin(k * x.x()) * std::cos(k * x.y()) * std::sin(k * x.z());
+}
+Eigen::Vector3d grad_phi_exact(const Eigen::Vector3d& x) {
+  const double sx = std::sin(k * x.x()), cx = std::cos(k * x.x());
+  const double sy = std::sin(k * x.y()), cy = std::cos(k * x.y());
+  const double sz = std::sin(k * x.z()), cz = std::cos(k * x.z());
+  return k * Eigen::Vector3d(cx * cy * sz, -sx * sy * sz, sx * cy * cz);
+}
+Eigen::Vector3d u_exact(const Eigen::Vector3d& x) {
+  return {std::sin(k * x.x()) * std::cos(k * x.y()), std::cos(k * x.x()) * std::sin(k * x.z()),
+          std::sin(k * x.y()) * std::cos(k * x.z())};
+}
+Eigen::Matrix3d grad_u_exact(const Eigen::Vector3d& x) {
+  const double sx = std::sin(k * x.x()), cx = std::cos(k * x.x());
+  const double sy = std::sin(k * x.y()), cy = std::cos(k * x.y());
+  const double sz = std::sin(k * x.z()), cz = std::cos(k * x.z());
+  Eigen::Matrix3d g;
+  g << cx * cy, -sx * sy, 0, -sx * sz, 0, cx * cz, 0, cy * cz, -sy * sz;
+  return k * g;
+}
+
+struct Errors {
+  double grad = 0, div = 0, lap = 0, conv = 0, visc = 0;
+};
+
+// Volume-weighted L2 errors of every operator at owned nodes.
+Errors operator_errors(const flow::LocalMesh& mesh) {
+  const int n = mesh.num_local();
+  ScalarField phi(n), div, lap;
+  VectorField u(n), grad, conv, visc;
+  TensorField grad_u;
+  for (int i = 0; i < n; ++i) {
+    phi[i] = phi_exact(mesh.position[i]);
+    u[i] = u_exact(mesh.position[i]);
+  }
+  const auto weights = flow::laplacian_weights(mesh);
+  flow::gradient(mesh, phi, grad);
+  flow::gradient(mesh, u, grad_u);
+  flow::divergence(mesh, u, div);
+  flow::laplacian(mesh, weights, phi, grad, lap);
+  flow::convection(mesh, u, u, conv);
+  flow::viscous(mesh, weights, 0.5, u, grad_u, visc);
+  Errors e;
+  for (int i = 0; i < mesh.num_owned; ++i) {
+    const auto& x = mesh.position[i];
+    const double v = mesh.volume[i];
+    const Eigen::Matrix3d gu = grad_u_exact(x);
+    const Eigen::Vector3d ue = u_exact(x);
+    e.grad += v * (grad[i] - grad_phi_exact(x)).squaredNorm();
+    e.div += v * std::pow(div[i] - gu.trace(), 2);
+    e.lap += v * std::pow(lap[i] + 3 * k * k * phi_exact(x), 2);
+    e.conv += v * (conv[i] - (gu * ue + ue * gu.trace())).squaredNorm();
+    e.visc += v * (visc[i] + 0.5 * 2 * k * k * ue).squaredNorm();
+  }
+  for (double* p : {&e.grad, &e.div, &e.lap, &e.conv, &e.visc}) *p = std::sqrt(mesh.comm.sum(*p));
+  return e;
+}
+
+flow::LocalMesh local_box(const io::BoxSpec& spec, MPI_Comm comm) {
+  const auto mesh = io::generate_box(spec);
+  return flow::distribute(mesh, flow::compute_dual_metrics(mesh), comm, {2, "metis"});
+}
+
+}  // namespace
+
+TEST_CASE("operators are exact for linear fields") {
+  for (std::string type : {"tetra", "hexa", "mixed"}) {
+    CAPTURE(type);
+    io::BoxSpec spec;
+    spec.cell_type = type;
+    spec.cells = {5, 4, 6};
+    spec.length = Eigen::Vector3d(1.0, 0.8, 1.2);
+    spec.perturbation = 0.2;
+    const auto mesh = local_box(spec, MPI_COMM_WORLD);
+    const int n = mesh.num_local();
+    const Eigen::Vector3d g(0.7, -1.3, 2.1);
+    Eigen::Matrix3d A;
+    A << 0.3, -1.2, 0.5, 2.0, -0.4, 0.9, -0.6, 1.1, 0.1;
+    const Eigen::Vector3d u0(0.4, -0.9, 1.5);
+    ScalarField phi(n), div, lap;
+    VectorField u(n), v(n), uc(n, u0), grad, conv, visc;
+    TensorField grad_v;
+    for (int i = 0; i < n; ++i) {
+      phi[i] = 1.5 + g.dot(mesh.position[i]);
+      v[i] = A * mesh.position[i];
+    }
+    const auto weights = flow::laplacian_weights(mesh);
+    flow::gradient(mesh, phi, grad);
+    flow::gradient(mesh, v, grad_v);
+    flow::divergence(mesh, v, div);
+    flow::laplacian(mesh, weights, phi, grad, lap);
+    flow::convection(mesh, uc, v, conv);
+    flow::viscous(mesh, weights, 1.0, v, grad_v, visc);
+    std::vector<char> on_boundary(n, 0);
+    for (const auto& b : mesh.boundary) on_boundary[b.node] = 1;
+    std::int64_t exact_nodes = 0;
+    double e_grad = 0, e_gradv = 0, e_lap = 0, e_visc = 0, e_div = 0, e_conv = 0;
+    for (int i = 0; i < n; ++i) {  // ghosts too: the halo insert must have filled them
+      const double hi = mesh.h[i];
+      e_grad = std::max(e_grad, (grad[i] - g).norm() / g.norm());
+      e_gradv = std::max(e_gradv, (grad_v[i] - A).norm() / A.norm());
+      // Laplacian of a linear field vanishes; scale: |g| / h.
+      e_lap = std::max(e_lap, std::abs(lap[i]) * hi / g.norm());
+      e_visc = std::max(e_visc, visc[i].norm() * hi / A.norm());
+      // Divergence and convection carry no correction matrix: exact where M_j = I (interior
+      // nodes of simplicial meshes; perturbed hexahedra have M_j != I).
+      if (!on_boundary[i] && (mesh.gradient_correction[i] - Eigen::Matrix3d::Identity()).norm() < 1e-12) {
+        ++exact_nodes;
+        e_div = std::max(e_div, std::abs(div[i] - A.trace()) / A.norm());
+        e_conv = std::max(e_conv, (conv[i] - A * u0).norm() / (A.norm() * u0.norm()));
+      }
+    }
+    const auto& comm = mesh.comm;
+    CHECK(comm.max(e_grad) < 1e-12);
+    CHECK(comm.max(e_gradv) < 1e-12);
+    CHECK(comm.max(e_lap) < 1e-11);
+    CHECK(comm.max(e_visc) < 1e-11);
+    CHECK(comm.max(e_div) < 1e-12);
+    CHECK(comm.max(e_conv) < 1e-12);
+    if (type == "tetra") CHECK(comm.sum(exact_nodes) > 0);
+  }
+}
+
+TEST_CASE("operators converge at second order on periodic boxes") {
+  struct Level {
+    std::string type;
+    double perturbation;
+    bool asserted;
+  };
+  for (const Level& level : {Level{"hexa", 0.0, true}, Level{"tetra", 0.0, true},
+                             Level{"tetra", 0.2, false}}) {
+    CAPTURE(level.type);
+    CAPTURE(level.perturbation);
+    std::vector<Errors> errors;
+    const std::vector<int> ns = {8, 16, 32};
+    for (int n : ns)
+      errors.push_back(operator_errors(
+          local_box(test::periodic_box(level.type, n, level.perturbation), MPI_COMM_WORLD)));
+    auto order = [&](double Errors::*field) {
+      return test::observed_order(errors[1].*field, errors[2].*field, 1.0 / ns[1], 1.0 / ns[2]);
+    };
+    const double o_grad = order(&Errors::grad), o_div = order(&Errors::div),
+                 o_lap = order(&Errors::lap), o_conv = order(&Errors::conv),
+                 o_visc = order(&Errors::visc);
+    MESSAGE(level.type << " perturbation " << level.perturbation << ": orders grad " << o_grad
+                       << " div " << o_div << " lap " << o_lap << " conv " << o_conv << " visc "
+                       << o_visc << "; finest errors grad " << errors[2].grad << " lap "
+                       << errors[2].lap << " conv " << errors[2].conv);
+    if (level.asserted) {
+      CHECK(o_grad >= 1.9);
+      CHECK(o_div >= 1.9);
+      CHECK(o_conv >= 1.9);
+      // On split tetrahedra the corrected Laplacian is still pre-asymptotic at these sizes:
+      // measured orders 1.73 (12 -> 24) and 1.85 (16 -> 32), rising towards 2.
+      const double lap_order = level.type == "hexa" ? 1.9 : 1.8;
+      CHECK(o_lap >= lap_order);
+      CHECK(o_visc >= lap_order);
+    }
+  }
+}
+
+TEST_CASE("operators at np ranks reproduce one rank") {
+  const auto spec = test::periodic_box("tetra", 6, 0.2);
+  const auto par = local_box(spec, MPI_COMM_WORLD);
+  const auto ser = local_box(spec, MPI_COMM_SELF);
+  const auto nodes = par.comm.sum(static_cast<std::int64_t>(par.num_owned));
+  auto run = [&](const flow::LocalMesh& mesh) {
+    const int n = mesh.num_local();
+    ScalarField phi(n), div, lap;
+    VectorField u(n), grad, conv, visc;
+    TensorField grad_u;
+    for (int i = 0; i < n; ++i) {
+      phi[i] = phi_exact(mesh.position[i]);
+      u[i] = u_exact(mesh.position[i]);
+    }
+    const auto weights = flow::laplacian_weights(mesh);
+    flow::gradient(mesh, phi, grad);
+    flow::gradient(mesh, u, grad_u);
+    flow::divergence(mesh, u, div);
+    flow::laplacian(mesh, weights, phi, grad, lap);
+    flow::convection(mesh, u, u, conv);
+    flow::viscous(mesh, weights, 1.0, u, grad_u, visc);
+    std::vector<double> all;
+    for (int i = 0; i < n; ++i) {
+      all.insert(all.end(), grad[i].data(), grad[i].data() + 3);
+      all.insert(all.end(), conv[i].data(), conv[i].data() + 3);
+      all.insert(all.end(), visc[i].data(), visc[i].data() + 3);
+      all.push_back(div[i]);
+      all.push_back(lap[i]);
+    }
+    return test::gather_by_dual_node(mesh, all, 11, nodes);
+  };
+  const auto a = run(par);
+  const auto b = run(ser);
+  double scale = 0;
+  for (double x : b) scale = std::max(scale, std::abs(x));
+  CHECK(test::max_abs_difference(a, b) / scale < 1e-12);
+}
