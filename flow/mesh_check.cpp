@@ -141,17 +141,17 @@ void check_node_indices(const Mesh& mesh) {
 void check_cell_shapes(const Mesh& mesh) {
   for (GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
     const double h = longest_edge(mesh, c);
-    const double volume = cell_volume(mesh, c);
+    double volume = 0.0, worst = std::numeric_limits<double>::infinity();
+    int worst_face = -1;
+    GlobalIndex worst_node = -1;
+    for_each_subtet(mesh, c, [&](double v, int lf, GlobalIndex a) {
+      volume += v;
+      if (v < worst) worst = v, worst_face = lf, worst_node = a;
+    });
     if (!(std::abs(volume) >= 1e-12 * h * h * h))
       fail(mesh, fmt::format("degenerate {}: volume {:.3g} is below 1e-12 h^3 (h = longest "
                              "edge = {:.3g}) near {}",
                              describe_cell(mesh, c), volume, h, point(centroid(mesh, mesh.cell(c)))));
-    double worst = std::numeric_limits<double>::infinity();
-    int worst_face = -1;
-    GlobalIndex worst_node = -1;
-    for_each_subtet(mesh, c, [&](double v, int lf, GlobalIndex a) {
-      if (v < worst) worst = v, worst_face = lf, worst_node = a;
-    });
     if (worst < 0.0)
       fail(mesh, fmt::format("inverted {}: the sub-tetrahedron at node {} of local face {} has "
                              "signed volume {:.3g} (cell volume {:.3g}) near {}",
