@@ -45,6 +45,13 @@ struct NewtonOptions {
   double rtol = 1e-9;     // residual / max(|lambda f_ext|, |reactions|)
   int max_cuts = 8;       // successive halvings of a failing increment
   bool line_search = true;
+  // Pseudo-transient continuation (Kelley & Keyes, SIAM J. Numer. Anal. 35:508, 1998): each
+  // increment solves f(x) - d (x - x_start) = 0 with d = damping * mean diag(K), which carries the
+  // solve through limit points (snap-through of curved shells) where load control alone fails.
+  // After the full load, damped relaxation steps at lambda = 1 with d halved each time continue
+  // until the undamped residual converges. 0 disables it.
+  double damping = 0;
+  int max_relaxation_steps = 200;
   bool verbose = false;
 };
 

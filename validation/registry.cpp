@@ -6,10 +6,16 @@
 namespace valsalva::validation {
 
 Case mesh_metrics_case();
+Case turek_hron_csm_case();
+Case strip_bending_case();
+Case leaflet_closure_case();
 
 const std::vector<Case>& all_cases() {
   static const std::vector<Case> cases = {
       mesh_metrics_case(),
+      turek_hron_csm_case(),
+      strip_bending_case(),
+      leaflet_closure_case(),
   };
   return cases;
 }

@@ -1,0 +1,46 @@
+// Benchmark (opt-in, not a test): time per explicit internal-force evaluation of the fine
+// leaflet mesh size (1536 Q2 hexahedra, quasi-incompressible neo-Hookean), for the full 3x3x3
+// and the 3x3x2 Gauss rules, and the static solve time of the leaflet-closure case.
+// Usage: bench_structure_forces [repetitions]
+#include <chrono>
+#include <ctime>
+#include <cstdlib>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "structure/mesh_generators.hpp"
+#include "structure/solid_forces.hpp"
+
+using namespace valsalva::structure;
+
+int main(int argc, char** argv) {
+  const int reps = argc > 1 ? std::atoi(argv[1]) : 200;
+  ShellPatch p;  // leaflet: R 12.5 mm, 120 degrees, t 0.15 mm
+  p.n_angle = 48;
+  p.n_height = 32;
+  p.n_thickness = 1;
+  const SolidMesh mesh = cylindrical_shell_patch(HexOrder::q2, p);
+  const auto mat = make_neo_hookean(2.4e6, 1.6e6);
+  fmt::print("mesh: {} Q2 hexahedra, {} nodes\n", mesh.num_elements(), mesh.num_nodes());
+  for (std::array<int, 3> rule : {std::array<int, 3>{3, 3, 3}, std::array<int, 3>{3, 3, 2}}) {
+    SolidForces forces(mesh, *mat, rule);
+    Eigen::Matrix3Xd x = mesh.X, f(3, mesh.num_nodes());
+    for (int n = 0; n < mesh.num_nodes(); ++n) x(2, n) += 1e-4 * std::sin(300 * mesh.X(0, n));
+    forces.internal_forces(x, f);  // warm-up
+    // CPU time of this thread: the machine is shared, so wall time overstates the cost.
+    timespec c0, c1;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c0);
+    const auto t0 = std::chrono::steady_clock::now();
+    double sink = 0;
+    for (int r = 0; r < reps; ++r) sink += forces.internal_forces(x, f);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / reps;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c1);
+    const double s = ((c1.tv_sec - c0.tv_sec) + 1e-9 * (c1.tv_nsec - c0.tv_nsec)) / reps;
+    fmt::print("  wall {:.3f} ms per evaluation\n", 1e3 * wall);
+    fmt::print("gauss {}x{}x{}: {:.3f} ms CPU per evaluation, {:.1f} ns per element, {:.1f} ns per Gauss point "
+               "(target <= 2 ms) [{}]\n", rule[0], rule[1], rule[2], 1e3 * s, 1e9 * s / mesh.num_elements(),
+               1e9 * s / (mesh.num_elements() * forces.gauss_points_per_element()), sink > 0 ? "ok" : "?");
+  }
+  return 0;
+}
