@@ -139,15 +139,21 @@ std::string DiracTransfer::build_support(int marker, const Eigen::Vector3d& x, i
   return {};
 }
 
+void DiracTransfer::check_sizes(const char* what, std::size_t marker_values,
+                                std::size_t node_values, int components) const {
+  const auto c = static_cast<std::size_t>(components);
+  if (components < 1 || marker_values != c * static_cast<std::size_t>(num_markers_) ||
+      node_values != c * static_cast<std::size_t>(mesh_->num_local()))
+    throw std::invalid_argument(fmt::format(
+        "ibm: {} got {} marker values and {} node values for {} located markers, {} local nodes "
+        "and {} components",
+        what, marker_values, node_values, num_markers_, mesh_->num_local(), components));
+}
+
 void DiracTransfer::spread(std::span<const double> marker_force, int components,
                            std::span<double> density) {
+  check_sizes("spread", marker_force.size(), density.size(), components);
   const auto c = static_cast<std::size_t>(components);
-  if (marker_force.size() != c * static_cast<std::size_t>(num_markers_) ||
-      density.size() != c * static_cast<std::size_t>(mesh_->num_local()))
-    throw std::invalid_argument(fmt::format(
-        "ibm: spread got {} marker values and {} node values for {} markers, {} local nodes, {} "
-        "components",
-        marker_force.size(), density.size(), num_markers_, mesh_->num_local(), components));
   std::fill(density.begin(), density.end(), 0.0);
   for (const auto& s : supports_) {
     const double* force = &marker_force[c * static_cast<std::size_t>(s.marker)];
@@ -162,13 +168,8 @@ void DiracTransfer::spread(std::span<const double> marker_force, int components,
 
 void DiracTransfer::interpolate(std::span<double> field, int components,
                                 std::span<double> marker_values) {
+  check_sizes("interpolate", marker_values.size(), field.size(), components);
   const auto c = static_cast<std::size_t>(components);
-  if (marker_values.size() != c * static_cast<std::size_t>(num_markers_) ||
-      field.size() != c * static_cast<std::size_t>(mesh_->num_local()))
-    throw std::invalid_argument(fmt::format(
-        "ibm: interpolate got {} node values and {} marker values for {} local nodes, {} "
-        "markers, {} components",
-        field.size(), marker_values.size(), mesh_->num_local(), num_markers_, components));
   mesh_->halo.exchange(field, components, flow::HaloMode::insert);
   std::fill(marker_values.begin(), marker_values.end(), 0.0);
   for (const auto& s : supports_) {

@@ -74,6 +74,8 @@ class DiracTransfer {
  private:
   // Builds the support of one marker on this rank; returns an error message or "".
   std::string build_support(int marker, const Eigen::Vector3d& x, int nearest);
+  void check_sizes(const char* what, std::size_t marker_values, std::size_t node_values,
+                   int components) const;
 
   flow::LocalMesh* mesh_;
   TransferOptions options_;
