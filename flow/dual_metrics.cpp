@@ -62,12 +62,6 @@ FaceKey face_key(const Range& nodes) {
   return k;
 }
 
-struct CellFaceRecord {
-  GlobalIndex cell;
-  int local_face;
-  int count;
-};
-
 Vec centroid(const Mesh& mesh, std::span<const GlobalIndex> nodes) {
   Vec c = Vec::Zero();
   for (GlobalIndex n : nodes) c += mesh.nodes[n];
@@ -82,28 +76,104 @@ bool on_periodic_patch(const Mesh& mesh, int patch) {
   return false;
 }
 
-using CellFaceMap = std::unordered_map<FaceKey, CellFaceRecord, FaceKeyHash>;
+// Unique edges between dual nodes in CSR form (row j lists k > j, sorted): cache-friendly
+// lookups instead of a hash map over all edges.
+struct EdgeTable {
+  std::vector<GlobalIndex> row_start;  // size n + 1
+  std::vector<GlobalIndex> column;
+  std::vector<std::array<GlobalIndex, 2>> pairs;
+  GlobalIndex find(GlobalIndex a, GlobalIndex b) const {
+    const GlobalIndex j = std::min(a, b), k = std::max(a, b);
+    for (GlobalIndex e = row_start[j]; e < row_start[j + 1]; ++e)
+      if (column[e] == k) return e;
+    throw std::logic_error("dual metrics: edge missing from the edge table");
+  }
+};
+
+EdgeTable build_edges(const Mesh& mesh, const std::vector<GlobalIndex>& dual, GlobalIndex n) {
+  std::vector<GlobalIndex> count(n + 1, 0);
+  auto for_each_edge = [&](auto&& visit) {
+    for (GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
+      const auto cell = mesh.cell(c);
+      for (const auto& [p, q] : cell_edges(mesh.cell_types[c])) {
+        const GlobalIndex a = dual[cell[p]], b = dual[cell[q]];
+        visit(std::min(a, b), std::max(a, b));
+      }
+    }
+  };
+  for_each_edge([&](GlobalIndex j, GlobalIndex) { ++count[j + 1]; });
+  for (GlobalIndex j = 0; j < n; ++j) count[j + 1] += count[j];
+  std::vector<GlobalIndex> raw(count[n]);
+  std::vector<GlobalIndex> fill(count.begin(), count.end() - 1);
+  for_each_edge([&](GlobalIndex j, GlobalIndex k) { raw[fill[j]++] = k; });
+  EdgeTable t;
+  t.row_start.assign(n + 1, 0);
+  for (GlobalIndex j = 0; j < n; ++j) {
+    auto first = raw.begin() + count[j], last = raw.begin() + count[j + 1];
+    std::sort(first, last);
+    last = std::unique(first, last);
+    for (auto it = first; it != last; ++it) {
+      t.column.push_back(*it);
+      t.pairs.push_back({j, *it});
+    }
+    t.row_start[j + 1] = static_cast<GlobalIndex>(t.column.size());
+  }
+  return t;
+}
+
+// The tagged boundary faces, and which cell face each one is (found while the cells are
+// visited, so that no map over all cell faces is needed).
+class TaggedFaces {
+ public:
+  explicit TaggedFaces(const Mesh& mesh) : mesh_(mesh), owner_(mesh.num_faces()) {
+    index_.reserve(static_cast<std::size_t>(mesh.num_faces()));
+    for (GlobalIndex f = 0; f < mesh.num_faces(); ++f)
+      if (!index_.try_emplace(face_key(mesh.face(f)), f).second)
+        throw std::runtime_error(fmt::format("{}: boundary face {} with nodes ({}) is tagged twice",
+                                             mesh.source, f, fmt::join(mesh.face(f), ", ")));
+  }
+  void visit(const std::vector<GlobalIndex>& face_nodes, GlobalIndex cell, int local_face) {
+    auto it = index_.find(face_key(face_nodes));
+    if (it == index_.end()) return;
+    auto& o = owner_[it->second];
+    ++o.hits;
+    o.cell = cell;
+    o.local_face = local_face;
+  }
+  struct Owner {
+    GlobalIndex cell = -1;
+    int local_face = -1;
+    int hits = 0;
+  };
+  // Throws when a tagged face is not exactly one cell's boundary face.
+  const Owner& owner(GlobalIndex f) const {
+    const auto& o = owner_[f];
+    if (o.hits != 1)
+      throw std::runtime_error(fmt::format(
+          "{}: boundary face {} of patch '{}' with nodes ({}) is {}", mesh_.source, f,
+          mesh_.patch_names[mesh_.face_patches[f]], fmt::join(mesh_.face(f), ", "),
+          o.hits == 0 ? "not a face of any cell" : "an interior face (shared by two cells)"));
+    return o;
+  }
+
+ private:
+  const Mesh& mesh_;
+  std::unordered_map<FaceKey, GlobalIndex, FaceKeyHash> index_;
+  std::vector<Owner> owner_;
+};
 
 // Boundary dual faces from the tagged boundary faces, oriented like the owning cell's face
-// (outward); every cell face that has only one cell must be tagged.
-void add_boundary_faces(const Mesh& mesh, CellFaceMap& cell_faces_by_key, DualMetrics& m) {
+// (outward).
+void add_boundary_faces(const Mesh& mesh, const TaggedFaces& tagged, DualMetrics& m) {
   const int num_patches = static_cast<int>(mesh.patch_names.size());
   std::unordered_map<std::int64_t, std::size_t> slot;  // (dual node, patch) -> boundary index
   std::vector<GlobalIndex> fnodes;
   for (GlobalIndex f = 0; f < mesh.num_faces(); ++f) {
-    const auto face = mesh.face(f);
-    auto it = cell_faces_by_key.find(face_key(face));
-    if (it == cell_faces_by_key.end() || it->second.count != 1)
-      throw std::runtime_error(fmt::format(
-          "{}: boundary face {} of patch '{}' with nodes ({}) is {}", mesh.source, f,
-          mesh.patch_names[mesh.face_patches[f]], fmt::join(face, ", "),
-          it == cell_faces_by_key.end() ? "not a face of any cell"
-                                        : "an interior face (shared by two cells)"));
-    it->second.count = -1;  // mark as tagged
+    const auto& owner = tagged.owner(f);
     const int patch = mesh.face_patches[f];
     if (on_periodic_patch(mesh, patch)) continue;
-    const auto cell = mesh.cell(it->second.cell);
-    const auto& local = cell_faces(mesh.cell_types[it->second.cell])[it->second.local_face];
+    const auto cell = mesh.cell(owner.cell);
+    const auto& local = cell_faces(mesh.cell_types[owner.cell])[owner.local_face];
     fnodes.clear();
     for (int i : local) fnodes.push_back(cell[i]);
     const Vec cf = centroid(mesh, fnodes);
@@ -121,16 +191,24 @@ void add_boundary_faces(const Mesh& mesh, CellFaceMap& cell_faces_by_key, DualMe
       }
     }
   }
-  for (const auto& [key, rec] : cell_faces_by_key)
-    if (rec.count == 1) {
-      const auto cell = mesh.cell(rec.cell);
-      std::vector<GlobalIndex> nodes;
-      for (int i : cell_faces(mesh.cell_types[rec.cell])[rec.local_face]) nodes.push_back(cell[i]);
-      const Vec c = centroid(mesh, nodes);
+}
+
+// A dual volume that does not close has a boundary face without a patch (or a broken cell):
+// the closure identity is exact by construction otherwise.
+void check_closure(const Mesh& mesh, const DualMetrics& m) {
+  std::vector<Vec> sum(m.num_nodes(), Vec::Zero());
+  for (std::size_t e = 0; e < m.edges.size(); ++e) {
+    sum[m.edges[e][0]] += m.edge_normal[e];
+    sum[m.edges[e][1]] -= m.edge_normal[e];
+  }
+  for (const auto& b : m.boundary) sum[b.node] += b.area;
+  for (GlobalIndex j = 0; j < m.num_nodes(); ++j)
+    if (sum[j].norm() > 1e-9 * m.h[j] * m.h[j]) {
+      const Vec& x = m.position[j];
       throw std::runtime_error(fmt::format(
-          "{}: boundary face of cell {} with nodes ({}) near ({:.6g}, {:.6g}, {:.6g}) belongs to "
-          "no boundary patch (missing physical group)",
-          mesh.source, rec.cell, fmt::join(nodes, ", "), c[0], c[1], c[2]));
+          "{}: the dual volume of node {} at ({:.6g}, {:.6g}, {:.6g}) is not closed: a boundary "
+          "face there belongs to no boundary patch (missing physical group)",
+          mesh.source, m.mesh_node_of_dual[j], x[0], x[1], x[2]));
     }
 }
 
@@ -191,23 +269,11 @@ DualMetrics compute_dual_metrics(const Mesh& mesh) {
   m.first_moment.assign(n, Vec::Zero());
   m.second_moment.assign(n, SymTensor{});
 
-  std::unordered_map<std::uint64_t, GlobalIndex> edge_index;
-  edge_index.reserve(static_cast<std::size_t>(mesh.num_cells()) * 2);
-  auto edge_of = [&](GlobalIndex a, GlobalIndex b) -> GlobalIndex {
-    const GlobalIndex j = std::min(a, b), k = std::max(a, b);
-    const std::uint64_t key = static_cast<std::uint64_t>(j) * static_cast<std::uint64_t>(n) +
-                              static_cast<std::uint64_t>(k);
-    auto [it, inserted] = edge_index.try_emplace(key, static_cast<GlobalIndex>(m.edges.size()));
-    if (inserted) {
-      m.edges.push_back({j, k});
-      m.edge_normal.push_back(Vec::Zero());
-      m.edge_vector.push_back(Vec::Zero());
-    }
-    return it->second;
-  };
-
-  CellFaceMap cell_face_map;
-  cell_face_map.reserve(static_cast<std::size_t>(mesh.num_cells()) * 3);
+  const EdgeTable edge_table = build_edges(mesh, m.dual_of_mesh_node, n);
+  m.edges = edge_table.pairs;
+  m.edge_normal.assign(m.edges.size(), Vec::Zero());
+  m.edge_vector.assign(m.edges.size(), Vec::Zero());
+  TaggedFaces tagged(mesh);
 
   std::vector<GlobalIndex> fnodes;
   for (GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
@@ -218,12 +284,7 @@ DualMetrics compute_dual_metrics(const Mesh& mesh) {
       const auto& f = faces[lf];
       fnodes.clear();
       for (int i : f) fnodes.push_back(cell[i]);
-      auto [it, inserted] = cell_face_map.try_emplace(face_key(fnodes), CellFaceRecord{c, lf, 0});
-      if (++it->second.count > 2)
-        throw std::runtime_error(fmt::format(
-            "{}: face with nodes ({}) is shared by more than two cells (cells {} and {} and more): "
-            "non-manifold mesh",
-            mesh.source, fmt::join(fnodes, ", "), it->second.cell, c));
+      tagged.visit(fnodes, c, lf);
       const Vec cf = centroid(mesh, fnodes);
       const std::size_t nf = fnodes.size();
       for (std::size_t i = 0; i < nf; ++i) {
@@ -240,7 +301,7 @@ DualMetrics compute_dual_metrics(const Mesh& mesh) {
         add_tet_moments(mid, xb, cf, cc, vb, xb, m.first_moment[db], m.second_moment[db]);
         // Dual-face piece (mid, cf, cc) between a and b, area vector oriented a -> b.
         const Vec s_ab = 0.5 * (cc - mid).cross(cf - mid);
-        const GlobalIndex e = edge_of(da, db);
+        const GlobalIndex e = edge_table.find(da, db);
         const bool forward = da < db;
         m.edge_normal[e] += forward ? s_ab : Vec(-s_ab);
         // Edge vector x_k - x_j between the images of the two dual nodes inside this cell;
@@ -258,8 +319,9 @@ DualMetrics compute_dual_metrics(const Mesh& mesh) {
     }
   }
 
-  add_boundary_faces(mesh, cell_face_map, m);
+  add_boundary_faces(mesh, tagged, m);
   finish_derived_metrics(m);
+  check_closure(mesh, m);
   return m;
 }
 

@@ -47,6 +47,25 @@ std::span<const std::vector<int>> cell_faces(CellType type) {
   throw std::logic_error("unknown cell type");
 }
 
+std::span<const std::pair<int, int>> cell_edges(CellType type) {
+  // Derived once from the faces: every face side (a, b) is an edge, kept once.
+  static const auto table = [] {
+    std::array<std::vector<std::pair<int, int>>, 4> edges;
+    for (CellType t : {CellType::tetra, CellType::pyramid, CellType::prism, CellType::hexa}) {
+      auto& list = edges[static_cast<int>(t)];
+      for (const auto& f : cell_faces(t))
+        for (std::size_t i = 0; i < f.size(); ++i) {
+          const int a = std::min(f[i], f[(i + 1) % f.size()]);
+          const int b = std::max(f[i], f[(i + 1) % f.size()]);
+          if (std::find(list.begin(), list.end(), std::pair{a, b}) == list.end())
+            list.emplace_back(a, b);
+        }
+    }
+    return edges;
+  }();
+  return table[static_cast<int>(type)];
+}
+
 int Mesh::patch_index(const std::string& patch) const {
   auto it = std::find(patch_names.begin(), patch_names.end(), patch);
   return it == patch_names.end() ? -1 : static_cast<int>(it - patch_names.begin());

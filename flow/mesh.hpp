@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace valsalva::flow {
@@ -22,6 +23,8 @@ const char* name(CellType type);
 // Faces of a cell in its local node numbering, ordered so that the right-hand normal points out
 // of the cell (for a positively oriented cell in Gmsh order).
 std::span<const std::vector<int>> cell_faces(CellType type);
+// Edges of a cell in its local node numbering (each once).
+std::span<const std::pair<int, int>> cell_edges(CellType type);
 
 // Periodic link: every node on patch `slave` sits at a node of patch `master` + translation.
 struct PeriodicLink {

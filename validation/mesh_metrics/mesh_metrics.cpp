@@ -9,9 +9,9 @@
 
 #include <cmath>
 
-#include "flow/compensated_sum.hpp"
 #include "flow/dual_metrics.hpp"
 #include "flow/local_mesh.hpp"
+#include "flow/metric_identities.hpp"
 #include "io/box_generator.hpp"
 #include "io/pipe_generator.hpp"
 #include "validation/case.hpp"
@@ -28,31 +28,8 @@ struct Identities {
 Identities check_identities(const flow::Mesh& mesh, MPI_Comm comm) {
   const auto metrics = flow::compute_dual_metrics(mesh);
   const auto local = flow::distribute(mesh, metrics, comm, {2, "metis"});
-  flow::CompensatedSum owned_volume;
-  for (int i = 0; i < local.num_owned; ++i) owned_volume.add(local.volume[i]);
-  const double reference = flow::mesh_volume(mesh);
-  const double volume_error = std::abs(local.comm.sum(owned_volume.value()) - reference) / reference;
-
-  const Eigen::Vector3d g(0.3, -1.1, 2.4);
-  std::vector<Eigen::Vector3d> closure(local.num_local(), Eigen::Vector3d::Zero());
-  std::vector<Eigen::Vector3d> raw(local.num_local(), Eigen::Vector3d::Zero());
-  for (int e = 0; e < local.num_owned_edges; ++e) {
-    const auto [a, b] = local.edges[e];
-    closure[a] += local.edge_normal[e];
-    closure[b] -= local.edge_normal[e];
-    const double dphi = g.dot(local.edge_vector[e]);
-    raw[a] += 0.5 * dphi * local.edge_normal[e];
-    raw[b] += 0.5 * dphi * local.edge_normal[e];
-  }
-  for (const auto& f : local.boundary) closure[f.node] += f.area;
-  double closure_error = 0, gradient_error = 0;
-  for (int i = 0; i < local.num_owned; ++i) {
-    closure_error = std::max(closure_error, closure[i].norm() / (local.h[i] * local.h[i]));
-    const Eigen::Vector3d grad = local.gradient_correction[i] * raw[i] / local.volume[i];
-    gradient_error = std::max(gradient_error, (grad - g).norm() / g.norm());
-  }
-  return {volume_error, local.comm.max(closure_error), local.comm.max(gradient_error),
-          metrics.num_nodes()};
+  const auto id = flow::measure_metric_identities(local, flow::mesh_volume(mesh));
+  return {id.volume_error, id.closure_error, id.gradient_error, metrics.num_nodes()};
 }
 
 void run(const Context& ctx, Report& report) {
