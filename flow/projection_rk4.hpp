@@ -1,0 +1,65 @@
+// Incremental-pressure projection with a low-storage RK4 predictor (Chorin, Math. Comp. 22,
+// 1968; stage form as in YALES2, Moureau, Domingo & Vervisch, C. R. Mécanique 339, 2011):
+//   w_0 = v^n;  w_i = v^n + alpha_i dt [ -div(w_{i-1} w_{i-1}) + nu lap(w_{i-1}) + f_b
+//                                        - grad(p^n)/rho ],   alpha = 1/4, 1/3, 1/2, 1
+//   v* = w_4;   lap(dp) = rho div(v*) / dt;   v^{n+1} = v* - dt grad(dp) / rho;
+//   p^{n+1} = p^n + dp.
+// The stage form is 4th order in time for linear autonomous right-hand sides and 2nd order for
+// the nonlinear momentum equation. Spatial operators: flow/operators.hpp (2nd-order centred),
+// Poisson: flow/pressure_poisson.hpp. Boundary handling so far: periodic patches (no boundary
+// faces); other patches enter only through the operators' boundary dual faces (zero-gradient
+// pressure increment).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "flow/local_mesh.hpp"
+#include "flow/operators.hpp"
+#include "flow/pressure_poisson.hpp"
+
+namespace valsalva::flow {
+
+struct FlowState {
+  VectorField velocity;  // m/s, owned + ghosts
+  ScalarField pressure;  // Pa
+  double time = 0;       // s
+};
+
+struct ProjectionOptions {
+  double density = 1.0;    // kg/m^3
+  double viscosity = 0.0;  // kinematic, m^2/s
+  PoissonOptions poisson;
+};
+
+struct StepReport {
+  PoissonResult poisson;
+  double max_divergence = 0;  // max |div v^{n+1}| over owned nodes, 1/s
+};
+
+class ProjectionRK4 {
+ public:
+  // `poisson_weights`: edge weights of the Poisson matrix (flow::poisson_weights); empty means
+  // the two-point weights of flow::laplacian_weights (consistent on uniform hexahedra only).
+  ProjectionRK4(const LocalMesh& mesh, ProjectionOptions options,
+                std::vector<double> poisson_weights = {});
+
+  // Advances `state` by dt; ghosts of the state are valid on return.
+  StepReport step(FlowState& state, double dt);
+
+  // Momentum right-hand side without the pressure gradient: -div(u u) + nu lap(u).
+  void momentum_rhs(const VectorField& u, VectorField& rhs);
+
+  const std::vector<double>& laplacian_weights() const { return weights_; }
+
+ private:
+  const LocalMesh& mesh_;
+  ProjectionOptions options_;
+  std::vector<double> weights_, poisson_weights_;
+  PressurePoisson poisson_;
+  ScalarField dp_, div_;  // dp_ is kept between steps: warm start of the next solve
+  VectorField grad_p_, rhs_, conv_, stage_;
+  TensorField grad_u_;
+};
+
+}  // namespace valsalva::flow
