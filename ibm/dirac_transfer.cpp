@@ -41,12 +41,29 @@ DiracTransfer::DiracTransfer(flow::LocalMesh& mesh, const TransferOptions& optio
   for (int layer : mesh.ghost_layer) outer = std::max(outer, layer);
   outer_layer_ = static_cast<int>(mesh.comm.max(static_cast<std::int64_t>(outer)));
   // Ghost positions are those of the periodic representative, so an edge whose vector differs
-  // from the position difference crosses a periodic boundary.
-  periodic_node_.assign(static_cast<std::size_t>(mesh.num_local()), 0);
+  // from the position difference crosses a periodic boundary by one period (up to sign).
   for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
     const auto [a, b] = mesh.edges[e];
     const Eigen::Vector3d gap = mesh.edge_vector[e] - (mesh.position[b] - mesh.position[a]);
-    if (gap.norm() > 1e-8 * mesh.edge_vector[e].norm()) periodic_node_[a] = periodic_node_[b] = 1;
+    if (gap.norm() <= 1e-8 * mesh.edge_vector[e].norm()) continue;
+    // Corner edges cross several periodic planes at once: split the gap by axis.
+    for (int d = 0; d < 3; ++d) {
+      if (std::abs(gap[d]) <= 1e-8 * gap.norm()) continue;
+      Eigen::Vector3d period = Eigen::Vector3d::Zero();
+      period[d] = std::abs(gap[d]);
+      const bool known = std::any_of(periods_.begin(), periods_.end(), [&](const auto& p) {
+        return (p - period).norm() <= 1e-8 * period.norm();
+      });
+      if (!known) periods_.push_back(period);
+    }
+  }
+  images_.assign(1, Eigen::Vector3d::Zero());
+  for (const auto& p : periods_) {
+    const std::size_t n = images_.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      images_.push_back(images_[k] + p);
+      images_.push_back(images_[k] - p);
+    }
   }
 }
 
@@ -96,33 +113,33 @@ std::string DiracTransfer::build_support(int marker, const Eigen::Vector3d& x, i
   for (int attempt = 0; attempt <= options_.max_growth; ++attempt) {
     if (attempt > 0) shape.width *= options_.growth_factor;
     const double radius = support_radius(shape, h);
-    grid_.in_box(x, radius, candidates_);
+    for (const auto& p : periods_)
+      if (2 * radius >= p.norm())
+        return fmt::format("{}: its kernel support ({:.6g} m wide) is wider than the period {:.6g} m",
+                           where(marker, x), 2 * radius, p.norm());
+    candidates_.clear();
     offset_.clear();
     psi_.clear();
     volume_.clear();
-    std::size_t kept = 0;
-    for (int n : candidates_) {
-      if (outer_layer_ > 0 && mesh.ghost_layer[n] == outer_layer_)
-        return fmt::format(
-            "{}: its kernel support (half-width {:.6g} m) reaches the outermost ghost layer ({}) on "
-            "rank {}, so nodes beyond it would be missed; distribute the mesh with more ghost "
-            "layers or use a narrower kernel",
-            where(marker, x), radius, outer_layer_, mesh.comm.rank());
-      if (periodic_node_[n])
-        return fmt::format(
-            "{}: its kernel support (half-width {:.6g} m) touches a periodic boundary; periodic "
-            "images of the kernel are not implemented",
-            where(marker, x), radius);
-      const Eigen::Vector3d y = mesh.position[n] - x;
-      const double p = kernel_3d(shape, y, h);
-      if (p <= 0.0) continue;
-      candidates_[kept++] = n;
-      offset_.push_back(y);
-      psi_.push_back(p);
-      volume_.push_back(mesh.volume[n]);
+    for (const auto& t : images_) {
+      grid_.in_box(x - t, radius, found_);  // node j at its image x_j + t lies in the box
+      for (int n : found_) {
+        if (outer_layer_ > 0 && mesh.ghost_layer[n] == outer_layer_)
+          return fmt::format(
+              "{}: its kernel support (half-width {:.6g} m) reaches the outermost ghost layer ({}) "
+              "on rank {}, so nodes beyond it would be missed; distribute the mesh with more "
+              "ghost layers or use a narrower kernel",
+              where(marker, x), radius, outer_layer_, mesh.comm.rank());
+        const Eigen::Vector3d y = mesh.position[n] + t - x;
+        const double p = kernel_3d(shape, y, h);
+        if (p <= 0.0) continue;
+        candidates_.push_back(n);
+        offset_.push_back(y);
+        psi_.push_back(p);
+        volume_.push_back(mesh.volume[n]);
+      }
     }
-    candidates_.resize(kept);
-    phi_.resize(kept);
+    phi_.resize(candidates_.size());
     result = rkpm_correct(offset_, psi_, volume_, radius, options_.min_rcond, phi_);
     if (result.ok) break;
   }
@@ -133,7 +150,8 @@ std::string DiracTransfer::build_support(int marker, const Eigen::Vector3d& x, i
         "outside the fluid or the mesh too coarse there",
         where(marker, x), result.rcond, options_.min_rcond, shape.width, h);
   MarkerSupport s{marker, h, shape.width, result.rcond, static_cast<int>(weights_.size()), 0};
-  for (std::size_t k = 0; k < candidates_.size(); ++k) weights_.push_back({candidates_[k], phi_[k]});
+  for (std::size_t k = 0; k < candidates_.size(); ++k)
+    weights_.push_back({candidates_[k], phi_[k], offset_[k]});
   s.end = static_cast<int>(weights_.size());
   supports_.push_back(s);
   return {};

@@ -14,6 +14,11 @@
 //
 // The local mesh size at a marker is h of its nearest fluid node (it therefore jumps where the
 // nearest node changes; on a graded mesh the kernel changes width there).
+//
+// Periodic meshes: a node stands at its periodic representative's position, so the support is
+// searched around X - t for every period combination t (read off the local edges whose vector
+// differs from the position difference) and each node is used at its image x_j + t. Markers must
+// lie inside the periodic box (the structure wraps them); the nearest-node rule ignores images.
 #pragma once
 
 #include <Eigen/Dense>
@@ -36,8 +41,9 @@ struct TransferOptions {
 class DiracTransfer {
  public:
   struct Weight {
-    int node = 0;      // local node (owned or ghost)
-    double phi = 0.0;  // corrected kernel phi(x_node, X) [1/m^3]
+    int node = 0;                               // local node (owned or ghost)
+    double phi = 0.0;                           // corrected kernel phi(x_node, X) [1/m^3]
+    Eigen::Vector3d offset{0.0, 0.0, 0.0};      // x_node - X, periodic image included
   };
   struct MarkerSupport {
     int marker = 0;     // index in the replicated marker array
@@ -52,8 +58,8 @@ class DiracTransfer {
 
   // Collective. Assigns every marker to its evaluating rank and builds the corrected kernel
   // there. Throws the same error on every rank, naming the marker index and position, when a
-  // marker is outside the fluid mesh, when its support reaches the outermost ghost layer (or a
-  // periodic boundary), or when its moment matrix stays ill-conditioned after growing.
+  // marker is outside the fluid mesh, when its support reaches the outermost ghost layer or is
+  // wider than a period, or when its moment matrix stays ill-conditioned after growing.
   void locate(std::span<const Eigen::Vector3d> markers);
 
   // Collective. `marker_force` (components per marker, replicated) -> `density` (components per
@@ -82,12 +88,13 @@ class DiracTransfer {
   BucketGrid grid_;
   double h_max_ = 0.0;
   int outer_layer_ = 0;                 // outermost ghost layer of the distribution (0: none)
-  std::vector<char> periodic_node_;     // node has a local edge across a periodic boundary
+  std::vector<Eigen::Vector3d> periods_;  // independent periodic shifts seen on local edges
+  std::vector<Eigen::Vector3d> images_;   // all sums of -1/0/+1 times each period (0 first)
   int num_markers_ = 0;
   std::vector<MarkerSupport> supports_;
   std::vector<Weight> weights_;
   // Scratch reused between markers and calls (no allocation once warm).
-  std::vector<int> candidates_;
+  std::vector<int> candidates_, found_;
   std::vector<Eigen::Vector3d> offset_;
   std::vector<double> psi_, volume_, phi_;
 };
