@@ -42,8 +42,7 @@ std::array<int, 3> BucketGrid::cell_of(const Eigen::Vector3d& x) const {
   return c;
 }
 
-void BucketGrid::in_box(const Eigen::Vector3d& centre, double radius,
-                        std::vector<int>& out) const {
+void BucketGrid::in_box(const Eigen::Vector3d& centre, double radius, std::vector<int>& out) const {
   out.clear();
   if (points_.empty()) return;
   const auto lo = cell_of(centre - Eigen::Vector3d::Constant(radius));

@@ -75,31 +75,28 @@ void DiracTransfer::locate(std::span<const Eigen::Vector3d> markers) {
 
   // Nearest owned node of every marker on this rank, then the rank with the nearest overall.
   const double reach = options_.kernel.width * h_max_;
-  struct DistanceRank {
-    double distance;
-    int rank;
-  };
-  std::vector<DistanceRank> mine(markers.size()), best(markers.size());
-  std::vector<int> nearest(markers.size(), -1);
+  mine_.resize(markers.size());
+  best_.resize(markers.size());
+  nearest_.resize(markers.size());
   const int num_owned = mesh.num_owned;
   for (std::size_t i = 0; i < markers.size(); ++i) {
     const auto found = grid_.nearest(markers[i], reach, [&](int n) { return n < num_owned; });
-    nearest[i] = found.index;
-    mine[i] = {found.index >= 0 ? found.distance : std::numeric_limits<double>::max(),
-               mesh.comm.rank()};
+    nearest_[i] = found.index;
+    mine_[i] = {found.index >= 0 ? found.distance : std::numeric_limits<double>::max(),
+                mesh.comm.rank()};
   }
   if (!markers.empty())
-    VALSALVA_MPI(MPI_Allreduce(mine.data(), best.data(), static_cast<int>(markers.size()),
+    VALSALVA_MPI(MPI_Allreduce(mine_.data(), best_.data(), static_cast<int>(markers.size()),
                                MPI_DOUBLE_INT, MPI_MINLOC, mesh.comm.get()));
 
   std::string error;
   for (std::size_t i = 0; i < markers.size() && error.empty(); ++i) {
     const int marker = static_cast<int>(i);
-    if (best[i].distance == std::numeric_limits<double>::max()) {
-      error = fmt::format("{} is outside the fluid mesh: no fluid node within {:.6g} m", where(marker, markers[i]),
-                          reach);
-    } else if (best[i].rank == mesh.comm.rank()) {
-      error = build_support(marker, markers[i], nearest[i]);
+    if (best_[i].distance == std::numeric_limits<double>::max()) {
+      error = fmt::format("{} is outside the fluid mesh: no fluid node within {:.6g} m",
+                          where(marker, markers[i]), reach);
+    } else if (best_[i].rank == mesh.comm.rank()) {
+      error = build_support(marker, markers[i], nearest_[i]);
     }
   }
   settle(mesh.comm, error);
@@ -115,8 +112,9 @@ std::string DiracTransfer::build_support(int marker, const Eigen::Vector3d& x, i
     const double radius = support_radius(shape, h);
     for (const auto& p : periods_)
       if (2 * radius >= p.norm())
-        return fmt::format("{}: its kernel support ({:.6g} m wide) is wider than the period {:.6g} m",
-                           where(marker, x), 2 * radius, p.norm());
+        return fmt::format(
+            "{}: its kernel support ({:.6g} m wide) is wider than the period {:.6g} m",
+            where(marker, x), 2 * radius, p.norm());
     candidates_.clear();
     offset_.clear();
     psi_.clear();

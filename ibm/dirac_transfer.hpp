@@ -41,15 +41,15 @@ struct TransferOptions {
 class DiracTransfer {
  public:
   struct Weight {
-    int node = 0;                               // local node (owned or ghost)
-    double phi = 0.0;                           // corrected kernel phi(x_node, X) [1/m^3]
-    Eigen::Vector3d offset{0.0, 0.0, 0.0};      // x_node - X, periodic image included
+    int node = 0;                           // local node (owned or ghost)
+    double phi = 0.0;                       // corrected kernel phi(x_node, X) [1/m^3]
+    Eigen::Vector3d offset{0.0, 0.0, 0.0};  // x_node - X, periodic image included
   };
   struct MarkerSupport {
-    int marker = 0;     // index in the replicated marker array
-    double h = 0.0;     // local mesh size used
-    double width = 0.0; // support width used, in units of h (grown if M was ill-conditioned)
-    double rcond = 0.0; // reciprocal condition number of the scaled moment matrix
+    int marker = 0;          // index in the replicated marker array
+    double h = 0.0;          // local mesh size used
+    double width = 0.0;      // support width used, in units of h (grown if M was ill-conditioned)
+    double rcond = 0.0;      // reciprocal condition number of the scaled moment matrix
     int begin = 0, end = 0;  // range in weights()
   };
 
@@ -87,13 +87,19 @@ class DiracTransfer {
   TransferOptions options_;
   BucketGrid grid_;
   double h_max_ = 0.0;
-  int outer_layer_ = 0;                 // outermost ghost layer of the distribution (0: none)
+  int outer_layer_ = 0;                   // outermost ghost layer of the distribution (0: none)
   std::vector<Eigen::Vector3d> periods_;  // independent periodic shifts seen on local edges
   std::vector<Eigen::Vector3d> images_;   // all sums of -1/0/+1 times each period (0 first)
   int num_markers_ = 0;
   std::vector<MarkerSupport> supports_;
   std::vector<Weight> weights_;
   // Scratch reused between markers and calls (no allocation once warm).
+  struct DistanceRank {  // layout of MPI_DOUBLE_INT for MPI_MINLOC
+    double distance;
+    int rank;
+  };
+  std::vector<DistanceRank> mine_, best_;
+  std::vector<int> nearest_;
   std::vector<int> candidates_, found_;
   std::vector<Eigen::Vector3d> offset_;
   std::vector<double> psi_, volume_, phi_;

@@ -19,9 +19,12 @@ KernelType parse_kernel_type(std::string_view name) {
 
 std::string_view kernel_name(KernelType type) {
   switch (type) {
-    case KernelType::peskin4: return "peskin4";
-    case KernelType::roma3: return "roma3";
-    case KernelType::bspline3: return "bspline3";
+    case KernelType::peskin4:
+      return "peskin4";
+    case KernelType::roma3:
+      return "roma3";
+    case KernelType::bspline3:
+      return "bspline3";
   }
   return "?";
 }
@@ -51,18 +54,25 @@ double bspline3(double r) {
   return 0.0;
 }
 
-double natural_width(KernelType type) { return type == KernelType::roma3 ? 3.0 : 4.0; }
+double natural_width(KernelType type) {
+  return type == KernelType::roma3 ? 3.0 : 4.0;
+}
 
 double kernel_1d(KernelType type, double r) {
   switch (type) {
-    case KernelType::peskin4: return peskin4(r);
-    case KernelType::roma3: return roma3(r);
-    case KernelType::bspline3: return bspline3(r);
+    case KernelType::peskin4:
+      return peskin4(r);
+    case KernelType::roma3:
+      return roma3(r);
+    case KernelType::bspline3:
+      return bspline3(r);
   }
   return 0.0;
 }
 
-double support_radius(const KernelShape& shape, double h) { return 0.5 * shape.width * h; }
+double support_radius(const KernelShape& shape, double h) {
+  return 0.5 * shape.width * h;
+}
 
 double kernel_3d(const KernelShape& shape, const Eigen::Vector3d& y, double h) {
   const double a = shape.width * h / natural_width(shape.type);

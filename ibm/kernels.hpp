@@ -2,7 +2,8 @@
 // 3D form psi(y) dilated to a support `width * h` wide around a marker, h the local mesh size.
 //  - Peskin 4-point cosine: phi(r) = (1 + cos(pi r / 2)) / 4 for |r| <= 2
 //    (C. S. Peskin, "The immersed boundary method", Acta Numerica 11:479-517, 2002, section 6).
-//  - Roma 3-point: (1 + sqrt(1 - 3 r^2)) / 3 for |r| <= 1/2, (5 - 3|r| - sqrt(1 - 3 (1 - |r|)^2)) / 6
+//  - Roma 3-point: (1 + sqrt(1 - 3 r^2)) / 3 for |r| <= 1/2, (5 - 3|r| - sqrt(1 - 3 (1 - |r|)^2)) /
+//  6
 //    for 1/2 <= |r| <= 3/2 (A. M. Roma, C. S. Peskin, M. J. Berger, J. Comput. Phys. 153:509-534,
 //    1999).
 //  - Cubic B-spline: 2/3 - r^2 + |r|^3 / 2 for |r| <= 1, (2 - |r|)^3 / 6 for 1 <= |r| <= 2

@@ -55,9 +55,9 @@ TEST_CASE("base kernels: discrete moments, support and continuity") {
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j)
         for (int k = 0; k < n; ++k)
-          integral += ibm::kernel_3d(shape, Eigen::Vector3d(-a + (i + 0.5) * dx,
-                                                           -a + (j + 0.5) * dx,
-                                                           -a + (k + 0.5) * dx), h);
+          integral += ibm::kernel_3d(
+              shape, Eigen::Vector3d(-a + (i + 0.5) * dx, -a + (j + 0.5) * dx, -a + (k + 0.5) * dx),
+              h);
     CHECK(integral * dx * dx * dx == doctest::Approx(1.0).epsilon(2e-3));
     CHECK(ibm::kernel_3d(shape, Eigen::Vector3d(a * 1.0001, 0, 0), h) == 0.0);
   }

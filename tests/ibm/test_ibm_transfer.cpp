@@ -6,11 +6,10 @@
 // on one rank), the errors for markers outside the mesh and for too few ghost layers, and the
 // order of convergence of interpolation.
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <cmath>
 #include <numbers>
-#include <fmt/format.h>
-
 #include <random>
 
 #include "flow/compensated_sum.hpp"
@@ -45,15 +44,15 @@ std::vector<Vec> markers(double cell) {
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < 2 * n; ++j) {
       const double theta = std::numbers::pi * (i + 0.5) / n, p = std::numbers::pi * j / n;
-      x.push_back(centre + 0.22 * Vec(std::sin(theta) * std::cos(p),
-                                      std::sin(theta) * std::sin(p), std::cos(theta)));
+      x.push_back(centre + 0.22 * Vec(std::sin(theta) * std::cos(p), std::sin(theta) * std::sin(p),
+                                      std::cos(theta)));
     }
   for (double d : {0.0, 0.05, 0.3}) {
-    x.emplace_back(d * cell, 0.37, 0.29);                       // xmin face
-    x.emplace_back(0.61, kLength.y() - d * cell, 0.21);         // ymax face
-    x.emplace_back(0.45, 0.52, d * cell);                       // zmin face
-    x.emplace_back(d * cell, d * cell, 0.33);                   // edge
-    x.push_back(kLength - Vec::Constant(d * cell));             // corner
+    x.emplace_back(d * cell, 0.37, 0.29);                // xmin face
+    x.emplace_back(0.61, kLength.y() - d * cell, 0.21);  // ymax face
+    x.emplace_back(0.45, 0.52, d * cell);                // zmin face
+    x.emplace_back(d * cell, d * cell, 0.33);            // edge
+    x.push_back(kLength - Vec::Constant(d * cell));      // corner
   }
   return x;
 }
@@ -78,7 +77,9 @@ struct Level {
       : mesh(box(n, periodic_z)), metrics(flow::compute_dual_metrics(mesh)) {}
 };
 
-double global_sum(const flow::Comm& comm, flow::CompensatedSum s) { return comm.sum(s.value()); }
+double global_sum(const flow::Comm& comm, flow::CompensatedSum s) {
+  return comm.sum(s.value());
+}
 
 // All identities for the three kernels. With a z-periodic mesh the torque (ill-defined across
 // periods) is skipped and the linear field is taken independent of z.
@@ -189,14 +190,15 @@ void check_identities(const Level& level, const std::vector<Vec>& x, bool period
     for (std::size_t i = 0; i < nm; ++i) diff_u = std::max(diff_u, (at_markers[i] - at1[i]).norm());
     CHECK(comm.max(diff_f) < 1e-12 * comm.max(max_f));
     CHECK(diff_u < 1e-13);
-    const double adjoint = std::abs(global_sum(comm, eulerian) - lagrangian.value()) /
-                           global_sum(comm, size);
+    const double adjoint =
+        std::abs(global_sum(comm, eulerian) - lagrangian.value()) / global_sum(comm, size);
     const double rank_f = comm.max(diff_f) / comm.max(max_f);
     if (comm.root())
-      MESSAGE(fmt::format("{}{} ranks {}: |sum phi V - 1| {:.2e}, |first moment|/h {:.2e}, "
-                          "linear {:.2e}, adjoint {:.2e}, vs 1 rank: f {:.2e}, U {:.2e}",
-                          periodic_z ? "periodic z, " : "", ibm::kernel_name(type), comm.size(), w0, w1, worst_linear, adjoint,
-                          rank_f, diff_u));
+      MESSAGE(
+          fmt::format("{}{} ranks {}: |sum phi V - 1| {:.2e}, |first moment|/h {:.2e}, "
+                      "linear {:.2e}, adjoint {:.2e}, vs 1 rank: f {:.2e}, U {:.2e}",
+                      periodic_z ? "periodic z, " : "", ibm::kernel_name(type), comm.size(), w0, w1,
+                      worst_linear, adjoint, rank_f, diff_u));
   }
 }
 
@@ -213,6 +215,28 @@ TEST_CASE("periodic images: supports wrap across a periodic direction") {
   for (double z : {0.0, 0.004, 0.03, kLength.z() - 0.03, kLength.z() - 0.004})
     for (double y : {0.0, 0.33, kLength.y()}) x.emplace_back(0.47, y, z);
   check_identities(Level(10, true), x, true);
+}
+
+TEST_CASE("locating again after the markers move gives the supports of a fresh transfer") {
+  const int n = 10;
+  const Level level(n);
+  auto local = flow::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {5, "metis"});
+  auto x = markers(kLength.x() / n);
+  ibm::DiracTransfer moving(local);
+  moving.locate(x);
+  const auto before = local.comm.sum(static_cast<std::int64_t>(moving.weights().size()));
+  for (auto& p : x) p = 0.5 * kLength + 0.8 * (p - 0.5 * kLength) + Vec(0.03, -0.02, 0.01);
+  moving.locate(x);
+  ibm::DiracTransfer fresh(local);
+  fresh.locate(x);
+  REQUIRE(moving.supports().size() == fresh.supports().size());
+  REQUIRE(moving.weights().size() == fresh.weights().size());
+  int differ = 0;
+  for (std::size_t k = 0; k < fresh.weights().size(); ++k)
+    differ += moving.weights()[k].node != fresh.weights()[k].node ||
+              moving.weights()[k].phi != fresh.weights()[k].phi;
+  CHECK(differ == 0);
+  CHECK(local.comm.sum(static_cast<std::int64_t>(moving.weights().size())) != before);
 }
 
 TEST_CASE("errors name the marker: outside the mesh, too few ghost layers, ill-conditioned") {
@@ -252,7 +276,8 @@ TEST_CASE("errors name the marker: outside the mesh, too few ghost layers, ill-c
 TEST_CASE("interpolation converges at second order on perturbed tetrahedra") {
   // Markers at fixed physical positions: the sphere and points 0.01 m from the walls.
   std::vector<Vec> x = markers(0.0);
-  for (const auto& p : markers(0.0)) x.push_back(p.cwiseMax(Vec::Constant(0.01)).cwiseMin(kLength - Vec::Constant(0.01)));
+  for (const auto& p : markers(0.0))
+    x.push_back(p.cwiseMax(Vec::Constant(0.01)).cwiseMin(kLength - Vec::Constant(0.01)));
   std::vector<double> error;
   for (int n : {8, 16, 32}) {
     const Level level(n);
