@@ -6,6 +6,7 @@
 namespace valsalva::validation {
 
 Case mesh_metrics_case();
+Case taylor_green_case();
 Case turek_hron_csm_case();
 Case strip_bending_case();
 Case leaflet_closure_case();
@@ -13,6 +14,7 @@ Case leaflet_closure_case();
 const std::vector<Case>& all_cases() {
   static const std::vector<Case> cases = {
       mesh_metrics_case(),
+      taylor_green_case(),
       turek_hron_csm_case(),
       strip_bending_case(),
       leaflet_closure_case(),

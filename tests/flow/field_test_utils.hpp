@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "flow/dual_metrics.hpp"
@@ -11,6 +12,17 @@
 #include "io/box_generator.hpp"
 
 namespace valsalva::test {
+
+// The meshes of the order-of-accuracy tests: uniform hexahedra and split tetrahedra (order
+// asserted) and tetrahedra perturbed by 20% of h (order reported).
+struct MeshKind {
+  std::string type;
+  double perturbation;
+  bool asserted;
+};
+inline std::vector<MeshKind> order_mesh_kinds() {
+  return {{"hexa", 0.0, true}, {"tetra", 0.0, true}, {"tetra", 0.2, false}};
+}
 
 inline io::BoxSpec periodic_box(const std::string& type, int n, double perturbation = 0.0) {
   io::BoxSpec spec;

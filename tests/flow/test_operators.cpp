@@ -145,13 +145,7 @@ TEST_CASE("operators are exact for linear fields") {
 }
 
 TEST_CASE("operators converge at second order on periodic boxes") {
-  struct Level {
-    std::string type;
-    double perturbation;
-    bool asserted;
-  };
-  for (const Level& level : {Level{"hexa", 0.0, true}, Level{"tetra", 0.0, true},
-                             Level{"tetra", 0.2, false}}) {
+  for (const auto& level : test::order_mesh_kinds()) {
     CAPTURE(level.type);
     CAPTURE(level.perturbation);
     std::vector<Errors> errors;

@@ -12,13 +12,7 @@
 using namespace valsalva;
 
 TEST_CASE("Taylor-Green vortex converges at second order") {
-  struct Kind {
-    std::string type;
-    double perturbation;
-    bool asserted;
-  };
-  for (const Kind& kind : {Kind{"hexa", 0.0, true}, Kind{"tetra", 0.0, true},
-                           Kind{"tetra", 0.2, false}}) {
+  for (const auto& kind : test::order_mesh_kinds()) {
     CAPTURE(kind.type);
     std::vector<validation::TgvResult> results;
     for (int n : {16, 32, 64}) {
