@@ -106,7 +106,7 @@ int validate(const std::string& case_name, bool list, bool quick, const std::str
   ctx.out_dir = out.empty() ? std::filesystem::path("validation-results") / case_name
                             : std::filesystem::path(out);
   ctx.case_dir = std::filesystem::path(VALSALVA_SOURCE_DIR) / "validation" / case_name;
-  ctx.refdata_dir = std::filesystem::path(VALSALVA_SOURCE_DIR).parent_path() / "shared" / "refdata";
+  ctx.refdata_dir = std::filesystem::path(VALSALVA_SOURCE_DIR) / "validation" / "refdata";
   if (rank == 0) std::filesystem::create_directories(ctx.out_dir);
   MPI_Barrier(MPI_COMM_WORLD);
   const auto t0 = std::chrono::steady_clock::now();

@@ -32,7 +32,7 @@ struct Context {
   bool quick = false;
   std::filesystem::path out_dir;   // created before the case runs
   std::filesystem::path case_dir;  // validation/<case>/ in the source tree (reference data, plot.py)
-  std::filesystem::path refdata_dir;  // ../shared/refdata when present
+  std::filesystem::path refdata_dir;  // validation/refdata (copies of ../shared/refdata)
 };
 
 class Report {

@@ -17,7 +17,7 @@ using namespace valsalva::les;
 
 namespace {
 const std::string dir =
-    std::string(VALSALVA_SOURCE_DIR) + "/../shared/refdata/cbc_decaying_turbulence/";
+    std::string(VALSALVA_SOURCE_DIR) + "/validation/refdata/cbc_decaying_turbulence/";
 
 // Plain numeric table: rows of numbers (other transcriptions, for the cross-check).
 std::vector<std::vector<double>> numeric_rows(const std::string& path) {

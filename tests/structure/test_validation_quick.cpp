@@ -17,7 +17,7 @@ void run_quick(const std::string& name) {
   Context ctx;
   ctx.quick = true;
   ctx.case_dir = std::filesystem::path(VALSALVA_SOURCE_DIR) / "validation" / name;
-  ctx.refdata_dir = std::filesystem::path(VALSALVA_SOURCE_DIR) / ".." / "shared" / "refdata";
+  ctx.refdata_dir = std::filesystem::path(VALSALVA_SOURCE_DIR) / "validation" / "refdata";
   ctx.out_dir = std::filesystem::temp_directory_path() / ("valsalva_quick_" + name);
   std::filesystem::create_directories(ctx.out_dir);
   Report report;
