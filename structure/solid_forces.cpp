@@ -38,7 +38,18 @@ SolidForces::SolidForces(const SolidMesh& mesh, const Material& material, std::a
       wdetj_[static_cast<std::size_t>(e) * ngp_ + g] = q.weights[g] * det;
     }
   }
+  gauss_ = gauss;
+  setup_sumfact(q, gauss);
 }
+
+namespace {
+void check_sizes(const SolidMesh& mesh, const Eigen::Ref<const Eigen::Matrix3Xd>& x, Eigen::Ref<Eigen::Matrix3Xd> f) {
+  if (x.cols() != mesh.num_nodes() || f.cols() != mesh.num_nodes())
+    throw std::invalid_argument(fmt::format("internal_forces: {} positions and {} force columns for a mesh of {} nodes",
+                                            x.cols(), f.cols(), mesh.num_nodes()));
+  f.setZero();
+}
+}  // namespace
 
 template <int NEN>
 double SolidForces::forces_kernel(const double* x, double* f) const {
@@ -79,10 +90,17 @@ double SolidForces::forces_kernel(const double* x, double* f) const {
 
 double SolidForces::internal_forces(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
                                     Eigen::Ref<Eigen::Matrix3Xd> f) const {
-  if (x.cols() != mesh_.num_nodes() || f.cols() != mesh_.num_nodes())
-    throw std::invalid_argument(fmt::format("internal_forces: {} positions and {} force columns for a mesh of {} nodes",
-                                            x.cols(), f.cols(), mesh_.num_nodes()));
-  f.setZero();
+  check_sizes(mesh_, x, f);
+  if (sumfact_) {
+    if (gauss_[2] == 3) return sumfact_kernel<3, 3, 3>(x.data(), f.data());
+    return sumfact_kernel<3, 3, 2>(x.data(), f.data());
+  }
+  return nen_ == 27 ? forces_kernel<27>(x.data(), f.data()) : forces_kernel<8>(x.data(), f.data());
+}
+
+double SolidForces::internal_forces_direct(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
+                                           Eigen::Ref<Eigen::Matrix3Xd> f) const {
+  check_sizes(mesh_, x, f);
   return nen_ == 27 ? forces_kernel<27>(x.data(), f.data()) : forces_kernel<8>(x.data(), f.data());
 }
 
