@@ -5,10 +5,13 @@
 
 #include <chrono>
 #include <iostream>
+#include <map>
+#include <memory>
 
 #include "flow/dual_metrics.hpp"
 #include "flow/local_mesh.hpp"
 #include "flow/mesh_check.hpp"
+#include "flow/run_loop.hpp"
 #include "io/field_output.hpp"
 #include "io/gmsh_reader.hpp"
 #include "io/mesh_info.hpp"
@@ -16,6 +19,7 @@
 #include "io/run_directory.hpp"
 #include "io/scene.hpp"
 #include "io/scene_docs.hpp"
+#include "io/scene_keys_flow.hpp"
 #include "validation/case.hpp"
 
 namespace valsalva::app {
@@ -60,23 +64,47 @@ int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std
   options.method = scene.get<std::string>("partition.method");
   const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, options);
 
-  // Until the flow solver lands, a run prepares and writes the distributed mesh: owner rank,
-  // dual volume and mesh size per node.
-  std::vector<double> owner(local.num_local(), local.comm.rank());
-  io::FieldOutput output(mesh, metrics, local, run_dir.path(), "fields");
-  output.write(0.0, {{"rank", &owner}, {"dual_volume", &local.volume}, {"h", &local.h}});
-
-  double owned_volume = 0;
-  for (int i = 0; i < local.num_owned; ++i) owned_volume += local.volume[i];
-  const double total = local.comm.sum(owned_volume);
+  // Fields go to <basename>.xmf/.h5 in the run directory: "fields" at the output interval,
+  // "last_good" when the run stops on a bad state. FieldOutput is collective; the run loop
+  // calls the sink on every rank.
+  std::map<std::string, std::unique_ptr<io::FieldOutput>> outputs;
+  auto sink = [&](const std::string& basename, double time, const flow::FieldSet& set) {
+    auto& o = outputs[basename];
+    if (!o) o = std::make_unique<io::FieldOutput>(mesh, metrics, local, run_dir.path(), basename);
+    std::vector<io::FieldOutput::Scalar> scalars;
+    std::vector<io::FieldOutput::Vector> vectors;
+    for (const auto& [name, f] : set.scalars) scalars.push_back({name, f});
+    for (const auto& [name, f] : set.vectors) vectors.push_back({name, f});
+    o->write(time, scalars, vectors);
+  };
+  const auto run_options = io::flow_run_options(scene, run_dir.path());
   if (rank == 0) {
-    fmt::print("mesh: {} nodes ({} dual nodes), {} cells, volume {:.9g} m^3 (cells {:.9g})\n",
-               mesh.num_nodes(), metrics.num_nodes(), mesh.num_cells(), total,
-               flow::mesh_volume(mesh));
-    fmt::print("partition: {} ranks, {} ghost layers, method {}\n", local.comm.size(),
+    fmt::print("mesh: {} nodes ({} dual nodes), {} cells; partition: {} ranks, {} ghost layers, "
+               "method {}\n",
+               mesh.num_nodes(), metrics.num_nodes(), mesh.num_cells(), local.comm.size(),
                options.ghost_layers, options.method);
-    fmt::print("results: {} (open {} in ParaView)\n", run_dir.path().string(),
-               output.xmf_file().string());
+    fmt::print("flow: rho {:.6g} kg/m3, nu {:.6g} m2/s, scheme {}, initial state {}\n",
+               run_options.projection.density, run_options.projection.viscosity,
+               scene.get<std::string>("flow.scheme"), run_options.initial.type);
+  }
+  flow::RunLoop loop(mesh, metrics, local, run_options, sink);
+  flow::RunSummary summary;
+  try {
+    summary = loop.run();
+  } catch (const flow::RunError& e) {
+    if (e.key().empty()) throw;
+    throw std::runtime_error(scene.location(e.key()).str() + ": " + e.what());
+  }
+  if (rank == 0) {
+    fmt::print("finished: {} steps to t = {:.6g} s, max |div v| {:.3e} 1/s, max Poisson "
+               "iterations {}\n",
+               summary.steps, summary.time, summary.max_divergence,
+               summary.max_poisson_iterations);
+    if (outputs.count("fields"))
+      fmt::print("results: {} (open {} in ParaView)\n", run_dir.path().string(),
+                 outputs.at("fields")->xmf_file().string());
+    else
+      fmt::print("results: {} (no fields: output.interval = 0)\n", run_dir.path().string());
     fmt::print("wall time: {:.2f} s\n", seconds_since(t0));
   }
   return 0;

@@ -19,6 +19,7 @@ const Schema& scene_schema() {
     declare_run_keys(s);
     declare_mesh_keys(s);
     declare_partition_keys(s);
+    declare_flow_keys(s);
     s.check();
     return s;
   }();

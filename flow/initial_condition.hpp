@@ -1,0 +1,36 @@
+// Initial states of a flow run. The 2D Taylor-Green vortex (Taylor & Green, Proc. R. Soc. A 158,
+// 1937) is also an exact solution of the Navier-Stokes equations on a periodic box of side
+// 2 pi L, used to measure the error of a run:
+//   u =  U0 sin(x/L) cos(y/L) F,   v = -U0 cos(x/L) sin(y/L) F,   w = 0,
+//   p = rho U0^2 / 4 (cos(2x/L) + cos(2y/L)) F^2,   F = exp(-2 nu t / L^2),
+// with x, y measured from the coordinate origin and Re = U0 L / nu.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <string>
+
+namespace valsalva::flow {
+
+struct InitialCondition {
+  std::string type = "rest";  // rest | taylor_green
+  double velocity = 1.0;      // U0, m/s (taylor_green)
+  double length = 1.0;        // L, m: the period is 2 pi L (taylor_green)
+};
+
+struct TaylorGreen {
+  double u0, length, nu, rho;
+  double decay(double t) const { return std::exp(-2 * nu * t / (length * length)); }
+  Eigen::Vector3d velocity(const Eigen::Vector3d& x, double t) const {
+    const double a = x.x() / length, b = x.y() / length, f = u0 * decay(t);
+    return {std::sin(a) * std::cos(b) * f, -std::cos(a) * std::sin(b) * f, 0.0};
+  }
+  double pressure(const Eigen::Vector3d& x, double t) const {
+    const double f = decay(t);
+    return rho * u0 * u0 / 4 * (std::cos(2 * x.x() / length) + std::cos(2 * x.y() / length)) *
+           f * f;
+  }
+};
+
+}  // namespace valsalva::flow

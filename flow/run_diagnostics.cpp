@@ -1,0 +1,86 @@
+// Stability estimate, kinetic energy, vorticity and the state guard; see run_diagnostics.hpp.
+#include "flow/run_diagnostics.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace valsalva::flow {
+
+StabilityRates stability_rates(const LocalMesh& mesh, const std::vector<double>& weights,
+                               double nu, const VectorField& u, std::vector<double>& scratch) {
+  const int n = mesh.num_local();
+  // Per-node sums of |u_jk . S_jk| / 2 and a_jk over the edges (each edge feeds both ends).
+  scratch.assign(2 * static_cast<std::size_t>(n), 0.0);
+  double* conv = scratch.data();
+  double* visc = scratch.data() + n;
+  for (int e = 0; e < mesh.num_owned_edges; ++e) {
+    const auto [j, k] = mesh.edges[e];
+    const double flux = 0.25 * std::abs((u[j] + u[k]).dot(mesh.edge_normal[e]));
+    conv[j] += flux;
+    conv[k] += flux;
+    visc[j] += weights[e];
+    visc[k] += weights[e];
+  }
+  StabilityRates r;
+  for (int j = 0; j < mesh.num_owned; ++j) {
+    const double rc = conv[j] / mesh.volume[j], rv = 2 * nu * visc[j] / mesh.volume[j];
+    r.stability = std::max(r.stability, rc / rk4_imaginary_limit + rv / rk4_real_limit);
+    r.convective = std::max(r.convective, u[j].norm() / mesh.h[j]);
+    r.viscous = std::max(r.viscous, nu / (mesh.h[j] * mesh.h[j]));
+  }
+  r.stability = mesh.comm.max(r.stability);
+  r.convective = mesh.comm.max(r.convective);
+  r.viscous = mesh.comm.max(r.viscous);
+  return r;
+}
+
+double kinetic_energy(const LocalMesh& mesh, double rho, const VectorField& u) {
+  double e = 0;
+  for (int j = 0; j < mesh.num_owned; ++j) e += mesh.volume[j] * u[j].squaredNorm();
+  return 0.5 * rho * mesh.comm.sum(e);
+}
+
+void vorticity(const TensorField& grad, VectorField& omega) {
+  omega.resize(grad.size());
+  for (std::size_t j = 0; j < grad.size(); ++j) {
+    const auto& g = grad[j];
+    omega[j] = {g(2, 1) - g(1, 2), g(0, 2) - g(2, 0), g(1, 0) - g(0, 1)};
+  }
+}
+
+std::string find_bad_state(const LocalMesh& mesh, const VectorField& u, const ScalarField& p,
+                           double velocity_limit) {
+  // The first bad owned node of this rank, then the one with the lowest dual-node number.
+  int bad = -1;
+  for (int j = 0; j < mesh.num_owned && bad < 0; ++j)
+    if (!u[j].allFinite() || !std::isfinite(p[j]) || u[j].norm() > velocity_limit) bad = j;
+  const auto none = std::numeric_limits<std::int64_t>::max();
+  // dual_node numbers are the same for every partition, so is the reported node.
+  const std::int64_t mine = bad < 0 ? none : static_cast<std::int64_t>(mesh.dual_node[bad]);
+  const std::int64_t first = -mesh.comm.max(-mine);
+  if (first == none) return {};
+  // The owner fills [kind, value, x, y, z]; a sum over ranks hands it to everyone.
+  std::array<double, 5> info{};
+  if (mine == first) {
+    const int j = bad;
+    if (!u[j].allFinite()) info = {0, u[j].norm(), 0, 0, 0};
+    else if (!std::isfinite(p[j])) info = {1, p[j], 0, 0, 0};
+    else info = {2, u[j].norm(), 0, 0, 0};
+    for (int d = 0; d < 3; ++d) info[2 + d] = mesh.position[j][d];
+  }
+  for (auto& x : info) x = mesh.comm.sum(x);
+  const int kind = static_cast<int>(std::lround(info[0]));
+  const char* what = kind == 0   ? "velocity is not finite"
+                     : kind == 1 ? "pressure is not finite"
+                                 : "velocity magnitude exceeds flow.velocity_limit";
+  std::string value = kind == 2 ? fmt::format("|u| = {:.6g} m/s > {:.6g} m/s", info[1],
+                                              velocity_limit)
+                                : fmt::format("value {}", info[1]);
+  return fmt::format("{} ({}) at node {} (x, y, z) = ({:.6g}, {:.6g}, {:.6g}) m", what, value,
+                     first, info[2], info[3], info[4]);
+}
+
+}  // namespace valsalva::flow

@@ -1,0 +1,252 @@
+// The time loop of a flow run; see run_loop.hpp.
+#include "flow/run_loop.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <utility>
+
+#include "flow/poisson_weights.hpp"
+
+namespace valsalva::flow {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+
+// Boundary conditions do not exist yet: every boundary patch must be periodic (periodic
+// patches carry no boundary faces in the LocalMesh).
+void require_periodic(const LocalMesh& local) {
+  std::vector<std::int64_t> faces(local.patch_names.size(), 0);
+  for (const auto& f : local.boundary) ++faces[f.patch];
+  std::string open;
+  for (std::size_t p = 0; p < faces.size(); ++p)
+    if (local.comm.sum(faces[p]) > 0) open += (open.empty() ? "'" : ", '") + local.patch_names[p] + "'";
+  if (!open.empty())
+    throw RunError("flow run: boundary patches " + open +
+                   " are not periodic; boundary conditions are not implemented yet, so a flow "
+                   "run needs a fully periodic mesh (mesh.box.periodic = [\"x\", \"y\", \"z\"] "
+                   "or [mesh.periodic.<pair>] tables)");
+}
+
+}  // namespace
+
+RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& local,
+                 RunOptions options, FieldSink sink)
+    : local_(local),
+      options_(std::move(options)),
+      sink_(std::move(sink)),
+      solver_((require_periodic(local), local), options_.projection,
+              poisson_weights(mesh, metrics, local)) {
+  const auto& ic = options_.initial;
+  const int n = local.num_local();
+  state_.velocity.assign(n, Eigen::Vector3d::Zero());
+  state_.pressure.assign(n, 0.0);
+  if (ic.type == "taylor_green") {
+    const TaylorGreen tg{ic.velocity, ic.length, options_.projection.viscosity,
+                         options_.projection.density};
+    for (int j = 0; j < n; ++j) {
+      state_.velocity[j] = tg.velocity(local.position[j], 0.0);
+      state_.pressure[j] = tg.pressure(local.position[j], 0.0);
+    }
+  } else if (ic.type != "rest") {
+    throw RunError("flow run: unknown initial.type '" + ic.type + "' (accepted: rest, taylor_green)");
+  }
+  last_good_ = state_;
+}
+
+double RunLoop::choose_dt(double remaining) {
+  const auto& t = options_.time;
+  const double nu = options_.projection.viscosity;
+  rates_ = stability_rates(local_, solver_.laplacian_weights(), nu, state_.velocity, scratch_);
+  const double limit = 1.0 / rates_.stability;  // +inf at rest without viscosity
+  double dt = t.dt;
+  if (dt > 0) {
+    if (options_.enforce_stability_limit && dt > limit)
+      throw RunError(fmt::format(
+          "time.dt = {:.6g} s exceeds the stability limit {:.6g} s of the explicit RK4 terms at "
+          "step {} (CFL {:.3g}, Fourier number {:.3g}; convection and viscosity by Gershgorin "
+          "bounds, see flow/run_diagnostics.hpp): set time.dt <= {:.6g} or time.dt = 0 to derive "
+          "it from time.cfl",
+          dt, limit, step_, dt * rates_.convective, dt * rates_.viscous, limit),
+          "time.dt");
+  } else {
+    dt = std::numeric_limits<double>::infinity();
+    if (rates_.convective > 0) dt = t.cfl / rates_.convective;
+    if (rates_.viscous > 0) dt = std::min(dt, t.fourier / rates_.viscous);
+    if (!std::isfinite(dt))
+      throw RunError("time.dt = 0 asks for a time step from time.cfl and time.fourier, but the "
+                     "fluid is at rest and inviscid: set time.dt",
+                     "time.dt");
+    if (options_.enforce_stability_limit && dt > limit * (1 + 1e-12))
+      throw RunError(fmt::format(
+          "time.cfl = {:.4g} and time.fourier = {:.4g} give dt = {:.6g} s, beyond the stability "
+          "limit {:.6g} s of the explicit RK4 terms at step {} (the limit corresponds to CFL "
+          "{:.3g}, Fourier number {:.3g}; see flow/run_diagnostics.hpp): lower time.cfl or "
+          "time.fourier",
+          t.cfl, t.fourier, dt, limit, step_, limit * rates_.convective, limit * rates_.viscous),
+          "time.cfl");
+  }
+  // Land on the next event (end, output time) without a sliver of a step: the last two steps
+  // before it share the remaining time when it is less than two steps.
+  if (remaining <= dt * (1 + 1e-9)) return remaining;
+  return remaining < 2 * dt ? remaining / 2 : dt;
+}
+
+void RunLoop::write_fields(const std::string& basename, const FlowState& state) {
+  if (!sink_) return;
+  const auto& out = options_.output;
+  FieldSet set;
+  if (out.velocity) set.vectors.emplace_back("velocity", &state.velocity);
+  if (out.pressure) set.scalars.emplace_back("pressure", &state.pressure);
+  if (out.vorticity) {
+    gradient(local_, state.velocity, grad_);
+    vorticity(grad_, omega_);
+    set.vectors.emplace_back("vorticity", &omega_);
+  }
+  sink_(basename, state.time, set);
+}
+
+void RunLoop::fail(const std::string& why) {
+  const bool written = static_cast<bool>(sink_);
+  write_fields("last_good", last_good_);
+  throw RunError(fmt::format("flow run stopped at step {} (t = {:.9g} s): {}; {}", step_,
+                             state_.time, why,
+                             written ? fmt::format("the last good state (t = {:.9g} s) is in "
+                                                   "last_good.xmf of the run directory",
+                                                   last_good_.time)
+                                     : std::string("no field output was configured")));
+}
+
+RunSummary RunLoop::run() {
+  const auto& t = options_.time;
+  const auto& out = options_.output;
+  const bool root = local_.comm.root();
+  const double rho = options_.projection.density;
+  const auto start = Clock::now();
+  std::ofstream csv;
+  if (root && !out.dir.empty()) {
+    csv.open(out.dir / "log.csv");
+    if (!csv) throw RunError("flow run: cannot write " + (out.dir / "log.csv").string());
+    csv << "step,time,dt,cfl,fourier,max_div,kinetic_energy,poisson_iterations,"
+           "poisson_residual,wall_per_step,eta\n";
+  }
+  const bool fields = out.interval > 0;
+  if (fields) write_fields("fields", state_);
+  const double eps = 1e-12 * std::max(t.end, std::numeric_limits<double>::min());
+  double next_output = out.interval;  // in seconds when !interval_in_steps
+  std::int64_t last_written = 0, last_logged = 0;
+  auto last_log_time = Clock::now();
+  RunSummary summary;
+  StepReport report;
+  double dt = 0;
+  const double energy0 = kinetic_energy(local_, rho, state_.velocity);  // collective
+  if (root && out.print)
+    fmt::print("flow: t = 0 s, kinetic energy {:.6e} J, running to t = {:.6g} s\n", energy0,
+               t.end);
+
+  while (t.end - state_.time > eps && (t.max_steps == 0 || step_ < t.max_steps)) {
+    double remaining = t.end - state_.time;
+    if (fields && !out.interval_in_steps) remaining = std::min(remaining, next_output - state_.time);
+    dt = choose_dt(remaining);
+    last_good_.velocity = state_.velocity;  // sizes match: no allocation
+    last_good_.pressure = state_.pressure;
+    last_good_.time = state_.time;
+    try {
+      report = solver_.step(state_, dt);
+    } catch (const std::exception& e) {
+      ++step_;
+      const auto bad = find_bad_state(local_, state_.velocity, state_.pressure,
+                                      options_.velocity_limit);
+      fail(bad.empty() ? std::string(e.what()) : bad + " (" + e.what() + ")");
+    }
+    ++step_;
+    if (auto bad = find_bad_state(local_, state_.velocity, state_.pressure,
+                                  options_.velocity_limit);
+        !bad.empty())
+      fail(bad);
+    summary.max_divergence = std::max(summary.max_divergence, report.max_divergence);
+    summary.max_poisson_iterations =
+        std::max(summary.max_poisson_iterations, report.poisson.iterations);
+
+    const bool finished = t.end - state_.time <= eps || step_ == t.max_steps;
+    if (step_ % out.log_every == 0 || finished) {
+      const auto now = Clock::now();
+      const double per_step = local_.comm.max(seconds(last_log_time, now)) /
+                              static_cast<double>(step_ - last_logged);
+      last_log_time = now;
+      last_logged = step_;
+      const double eta = per_step * std::max(0.0, t.end - state_.time) / dt;
+      const double energy = kinetic_energy(local_, rho, state_.velocity);
+      const double cfl = dt * rates_.convective, fourier = dt * rates_.viscous;
+      if (root && out.print)
+        fmt::print("step {:>7} t {:.6e} s dt {:.3e} s CFL {:.3f} Fo {:.3f} max|div| {:.2e} 1/s "
+                   "KE {:.6e} J Poisson {} it {:.1e} wall/step {:.3e} s ETA {:.1f} s\n",
+                   step_, state_.time, dt, cfl, fourier, report.max_divergence, energy,
+                   report.poisson.iterations, report.poisson.relative_residual, per_step, eta);
+      if (csv.is_open())
+        csv << fmt::format("{},{:.17g},{:.17g},{:.9g},{:.9g},{:.9g},{:.17g},{},{:.6g},{:.6g},{:.6g}\n",
+                           step_, state_.time, dt, cfl, fourier, report.max_divergence, energy,
+                           report.poisson.iterations, report.poisson.relative_residual,
+                           per_step, eta)
+            << std::flush;
+    }
+    if (fields) {
+      const bool due = out.interval_in_steps
+                           ? step_ % static_cast<std::int64_t>(std::llround(out.interval)) == 0
+                           : state_.time >= next_output - eps;
+      if (due) {
+        write_fields("fields", state_);
+        last_written = step_;
+        if (!out.interval_in_steps)
+          while (next_output <= state_.time + eps) next_output += out.interval;
+      }
+    }
+  }
+  if (fields && last_written != step_) write_fields("fields", state_);
+
+  summary.steps = step_;
+  summary.time = state_.time;
+  summary.wall_seconds = local_.comm.max(seconds(start, Clock::now()));
+  if (options_.initial.type == "taylor_green") {
+    const auto e = taylor_green_error();
+    summary.taylor_green = e;
+    if (root && !out.dir.empty()) {
+      std::ofstream f(out.dir / "taylor_green_error.csv");
+      f << "time,velocity_l2,velocity_linf,exact_l2,relative_l2\n"
+        << fmt::format("{:.17g},{:.9e},{:.9e},{:.9e},{:.9e}\n", state_.time, e.velocity_l2,
+                       e.velocity_linf, e.exact_l2, e.velocity_l2 / e.exact_l2);
+    }
+    if (root && out.print)
+      fmt::print("Taylor-Green velocity error at t = {:.6g} s: L2 {:.6e} m/s ({:.4e} of the exact "
+                 "L2 norm), Linf {:.6e} m/s\n",
+                 state_.time, e.velocity_l2, e.velocity_l2 / e.exact_l2, e.velocity_linf);
+  }
+  return summary;
+}
+
+TaylorGreenError RunLoop::taylor_green_error() const {
+  const TaylorGreen tg{options_.initial.velocity, options_.initial.length,
+                       options_.projection.viscosity, options_.projection.density};
+  double volume = 0, e2 = 0, einf = 0, x2 = 0;
+  for (int j = 0; j < local_.num_owned; ++j) {
+    const auto exact = tg.velocity(local_.position[j], state_.time);
+    const double du = (state_.velocity[j] - exact).norm();
+    volume += local_.volume[j];
+    e2 += local_.volume[j] * du * du;
+    x2 += local_.volume[j] * exact.squaredNorm();
+    einf = std::max(einf, du);
+  }
+  const auto& c = local_.comm;
+  volume = c.sum(volume);
+  return {std::sqrt(c.sum(e2) / volume), c.max(einf), std::sqrt(c.sum(x2) / volume)};
+}
+
+}  // namespace valsalva::flow

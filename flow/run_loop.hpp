@@ -1,0 +1,119 @@
+// A flow run from an initial state to an end time: time step fixed or from CFL and Fourier
+// targets (refused beyond the RK4 stability limit, see run_diagnostics.hpp), a progress line
+// and a CSV row (log.csv) every log_every steps, fields at the output interval, and a guard
+// that stops the run on NaN/Inf or a runaway velocity after writing the last good state.
+// Fields go through a FieldSink so that flow/ stays independent of io/ (app/ plugs in
+// io::FieldOutput). Periodic domains only until boundary conditions exist: a mesh with
+// non-periodic boundary patches is refused, naming them.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "flow/dual_metrics.hpp"
+#include "flow/initial_condition.hpp"
+#include "flow/local_mesh.hpp"
+#include "flow/mesh.hpp"
+#include "flow/projection_rk4.hpp"
+#include "flow/run_diagnostics.hpp"
+
+namespace valsalva::flow {
+
+struct TimeOptions {
+  double end = 0;            // s
+  double dt = 0;             // s; 0 = from the cfl and fourier targets
+  double cfl = 0.5;          // target max |u| dt / h
+  double fourier = 0.2;      // target max nu dt / h^2
+  std::int64_t max_steps = 0;  // 0 = no cap
+};
+
+struct OutputOptions {
+  std::filesystem::path dir;  // run directory: log.csv and the Taylor-Green error go there
+  double interval = 0;        // 0 = no field output
+  bool interval_in_steps = false;
+  bool velocity = true, pressure = true, vorticity = true;
+  int log_every = 10;
+  bool print = true;          // progress lines on stdout (rank 0)
+};
+
+struct RunOptions {
+  ProjectionOptions projection;  // density, kinematic viscosity, Poisson settings
+  TimeOptions time;
+  OutputOptions output;
+  InitialCondition initial;
+  double velocity_limit = 50;    // m/s
+  // Tests only: let a time step beyond the stability limit through to exercise the guard.
+  bool enforce_stability_limit = true;
+};
+
+// Writes named nodal fields (local arrays, owned values read) as `basename` at `time`.
+struct FieldSet {
+  std::vector<std::pair<std::string, const ScalarField*>> scalars;
+  std::vector<std::pair<std::string, const VectorField*>> vectors;
+};
+using FieldSink = std::function<void(const std::string& basename, double time, const FieldSet&)>;
+
+// A time step the scheme cannot take, a blown-up state or a failed Poisson solve.
+// `key` names the scene key at fault, when there is one, so that the front end can point at
+// its file and line.
+class RunError : public std::runtime_error {
+ public:
+  explicit RunError(const std::string& what, std::string key = {})
+      : std::runtime_error(what), key_(std::move(key)) {}
+  const std::string& key() const { return key_; }
+
+ private:
+  std::string key_;
+};
+
+struct TaylorGreenError {
+  double velocity_l2 = 0;    // sqrt(sum V |u - u_exact|^2 / sum V), m/s
+  double velocity_linf = 0;  // m/s
+  double exact_l2 = 0;       // sqrt(sum V |u_exact|^2 / sum V), m/s
+};
+
+struct RunSummary {
+  std::int64_t steps = 0;
+  double time = 0;
+  double wall_seconds = 0;
+  double max_divergence = 0;  // over all steps, 1/s
+  int max_poisson_iterations = 0;
+  std::optional<TaylorGreenError> taylor_green;
+};
+
+class RunLoop {
+ public:
+  // The meshes must outlive the loop.
+  RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& local, RunOptions options,
+          FieldSink sink = {});
+
+  // Runs from the initial condition to time.end (or max_steps). Throws RunError.
+  RunSummary run();
+
+  const FlowState& state() const { return state_; }
+  // Velocity error against the exact Taylor-Green solution at the current time (collective).
+  TaylorGreenError taylor_green_error() const;
+
+ private:
+  double choose_dt(double remaining);
+  void write_fields(const std::string& basename, const FlowState& state);
+  [[noreturn]] void fail(const std::string& why);
+
+  const LocalMesh& local_;
+  RunOptions options_;
+  FieldSink sink_;
+  ProjectionRK4 solver_;
+  FlowState state_, last_good_;
+  std::int64_t step_ = 0;
+  TensorField grad_;
+  VectorField omega_;
+  std::vector<double> scratch_;
+  StabilityRates rates_;
+};
+
+}  // namespace valsalva::flow

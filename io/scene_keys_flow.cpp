@@ -1,0 +1,173 @@
+// Scene keys of the flow solver (flow/projection_rk4, flow/pressure_poisson, flow/run_loop):
+// fluid properties, time stepping, the pressure Poisson solver, the initial state and the
+// field output; and their reader flow_run_options.
+#include <algorithm>
+#include <cmath>
+
+#include "io/scene_keys.hpp"
+#include "io/scene_keys_flow.hpp"
+
+namespace valsalva::io {
+
+void declare_flow_keys(Schema& s) {
+  s.section("flow", "Fluid properties and the discretisation of the momentum equation.");
+  s.real("flow.density")
+      .def(1100.0)
+      .above(0)
+      .unit_of("kg/m3")
+      .doc("Fluid density; 1100 is the blood-analogue fluid of the reference pulse-duplicator experiment");
+  s.real("flow.viscosity")
+      .def(3.6e-3)
+      .at_least(0)
+      .unit_of("Pa s")
+      .doc("Dynamic viscosity (Newtonian); 3.6e-3 is the reference experiment's blood analogue");
+  s.choice("flow.scheme", {"central2"})
+      .def("central2")
+      .unit_of("-")
+      .doc("Convective scheme: 2nd-order centred, kinetic-energy conserving (the 4th-order scheme is not implemented yet)");
+  s.real("flow.velocity_limit")
+      .def(50.0)
+      .above(0)
+      .unit_of("m/s")
+      .doc("A velocity magnitude above this stops the run with a diagnosis (blood flows stay below a few m/s)");
+
+  s.section("time", "Time stepping of the projection + RK4 scheme.");
+  s.real("time.end")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("s")
+      .doc("End time; 0 takes no time step (only the initial state is written)");
+  s.real("time.dt")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("s")
+      .doc("Fixed time step, refused beyond the RK4 stability limit; 0 = from time.cfl and time.fourier at every step");
+  s.real("time.cfl")
+      .def(0.5)
+      .above(0)
+      .unit_of("-")
+      .doc("Target convective CFL number max |u| dt / h when time.dt = 0");
+  s.real("time.fourier")
+      .def(0.2)
+      .above(0)
+      .unit_of("-")
+      .doc("Target viscous Fourier number max nu dt / h^2 when time.dt = 0 (nu = viscosity / density)");
+  s.integer("time.max_steps")
+      .def(0)
+      .at_least(0)
+      .unit_of("-")
+      .doc("Stop after this many steps even before time.end; 0 = no limit");
+
+  s.section("poisson", "Pressure Poisson solver: hypre PCG preconditioned by BoomerAMG.");
+  s.real("poisson.tolerance").def(1e-8).above(0).unit_of("-").doc("Relative residual ||b - A x|| / ||b|| to reach");
+  s.integer("poisson.max_iterations")
+      .def(200)
+      .at_least(1)
+      .unit_of("-")
+      .doc("PCG iteration cap; reaching it without the tolerance stops the run");
+  s.real("poisson.strong_threshold")
+      .def(0.5)
+      .in_range(0, 1)
+      .unit_of("-")
+      .doc("BoomerAMG strength threshold (0.5 is hypre's advice in 3D)");
+  s.integer("poisson.coarsen_type")
+      .def(10)
+      .in_range(0, 22)
+      .unit_of("-")
+      .doc("BoomerAMG coarsening, hypre numbering (6 Falgout, 8 PMIS, 10 HMIS)");
+  s.integer("poisson.interp_type")
+      .def(6)
+      .in_range(0, 17)
+      .unit_of("-")
+      .doc("BoomerAMG interpolation, hypre numbering (0 classical, 6 extended+i)");
+  s.integer("poisson.relax_type")
+      .def(6)
+      .in_range(0, 18)
+      .unit_of("-")
+      .doc("BoomerAMG smoother, hypre numbering (6 hybrid symmetric Gauss-Seidel, 3 hybrid Gauss-Seidel)");
+  s.integer("poisson.aggressive_levels")
+      .def(0)
+      .in_range(0, 10)
+      .unit_of("-")
+      .doc("Levels of aggressive coarsening (cheaper set-up, weaker AMG)");
+  s.integer("poisson.print_level").def(0).in_range(0, 3).unit_of("-").doc("hypre's own diagnostic output (0 = none)");
+
+  s.section("initial", "The state at t = 0.");
+  s.choice("initial.type", {"rest", "taylor_green"})
+      .def("rest")
+      .unit_of("-")
+      .doc("Fluid at rest, or the 2D Taylor-Green vortex ([initial.taylor_green]), whose exact decay gives the run's error");
+  s.section("initial.taylor_green",
+            "u = U0 sin(x/L) cos(y/L) F, v = -U0 cos(x/L) sin(y/L) F, w = 0, p = rho U0^2/4 (cos 2x/L + cos 2y/L) F^2, "
+            "F = exp(-2 nu t / L^2), Re = U0 L / nu; exact on a periodic box of side 2 pi L in x and y.");
+  s.when("initial.taylor_green", "initial.type", {"taylor_green"});
+  s.real("initial.taylor_green.velocity").required().above(0).unit_of("m/s").doc("Velocity amplitude U0");
+  s.real("initial.taylor_green.length")
+      .required()
+      .above(0)
+      .unit_of("m")
+      .doc("Length L: the vortex period is 2 pi L in x and y, measured from the origin");
+
+  s.section("output", "Fields written to HDF5 + XDMF (fields.xmf in the run directory).");
+  s.real("output.interval")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("s or steps")
+      .doc("Write the fields at t = 0, every interval and at the end; 0 = no fields");
+  s.choice("output.interval_unit", {"s", "steps"})
+      .def("s")
+      .unit_of("-")
+      .doc("Whether output.interval is simulated time or a whole number of time steps");
+  s.string_list("output.fields")
+      .def(std::vector<std::string>{"velocity", "pressure", "vorticity"})
+      .values({"velocity", "pressure", "vorticity"})
+      .unit_of("-")
+      .doc("Fields to write; vorticity is the curl of the nodal velocity gradient");
+}
+
+flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::path& run_dir) {
+  flow::RunOptions o;
+  const double rho = scene.get<double>("flow.density");
+  o.projection.density = rho;
+  o.projection.viscosity = scene.get<double>("flow.viscosity") / rho;
+  o.velocity_limit = scene.get<double>("flow.velocity_limit");
+
+  o.time.end = scene.get<double>("time.end");
+  o.time.dt = scene.get<double>("time.dt");
+  o.time.cfl = scene.get<double>("time.cfl");
+  o.time.fourier = scene.get<double>("time.fourier");
+  o.time.max_steps = scene.get<std::int64_t>("time.max_steps");
+
+  auto& p = o.projection.poisson;
+  p.tolerance = scene.get<double>("poisson.tolerance");
+  p.max_iterations = scene.get<int>("poisson.max_iterations");
+  p.strong_threshold = scene.get<double>("poisson.strong_threshold");
+  p.coarsen_type = scene.get<int>("poisson.coarsen_type");
+  p.interp_type = scene.get<int>("poisson.interp_type");
+  p.relax_type = scene.get<int>("poisson.relax_type");
+  p.aggressive_levels = scene.get<int>("poisson.aggressive_levels");
+  p.print_level = scene.get<int>("poisson.print_level");
+
+  o.initial.type = scene.get<std::string>("initial.type");
+  if (o.initial.type == "taylor_green") {
+    o.initial.velocity = scene.get<double>("initial.taylor_green.velocity");
+    o.initial.length = scene.get<double>("initial.taylor_green.length");
+  }
+
+  auto& out = o.output;
+  out.dir = run_dir;
+  out.log_every = scene.get<int>("run.log_every");
+  out.interval = scene.get<double>("output.interval");
+  out.interval_in_steps = scene.get<std::string>("output.interval_unit") == "steps";
+  if (out.interval_in_steps && out.interval != std::floor(out.interval))
+    throw scene.error("output.interval", "a step interval must be a whole number of steps",
+                      "0, 1, 2, ...");
+  const auto fields = scene.get<std::vector<std::string>>("output.fields");
+  auto wants = [&](const char* f) { return std::find(fields.begin(), fields.end(), f) != fields.end(); };
+  out.velocity = wants("velocity");
+  out.pressure = wants("pressure");
+  out.vorticity = wants("vorticity");
+  return o;
+}
+
+}  // namespace valsalva::io

@@ -1,0 +1,262 @@
+// The flow run loop: a small Taylor-Green run (error against the exact solution, np = 1 and 2
+// agree with a serial run to 1e-10), the refused time step beyond the RK4 stability limit, the
+// blow-up diagnosis with the last good state written, the periodicity requirement, and the
+// scene reader of the flow keys.
+#include <doctest/doctest.h>
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "field_test_utils.hpp"
+#include "flow/run_loop.hpp"
+#include "io/scene.hpp"
+#include "io/scene_keys_flow.hpp"
+
+using namespace valsalva;
+
+namespace {
+
+// A Taylor-Green set-up in units U0 = L = 1, rho = 1, Re = 100 on n x n x 3 hexahedra.
+struct Setup {
+  flow::Mesh mesh;
+  flow::DualMetrics metrics;
+  flow::LocalMesh local;
+  Setup(int n, MPI_Comm comm, bool periodic_z = true) {
+    io::BoxSpec box;
+    const double two_pi = 2 * std::numbers::pi;
+    box.cells = {n, n, 3};
+    box.length = Eigen::Vector3d(two_pi, two_pi, 3 * two_pi / n);
+    box.periodic = {true, true, periodic_z};
+    mesh = io::generate_box(box);
+    metrics = flow::compute_dual_metrics(mesh);
+    local = flow::distribute(mesh, metrics, comm);
+  }
+};
+
+flow::RunOptions tgv_options(double end) {
+  flow::RunOptions o;
+  o.projection.density = 1.0;
+  o.projection.viscosity = 0.01;
+  o.projection.poisson.tolerance = 1e-13;  // np agreement to 1e-10 needs a tight projection
+  o.initial = {"taylor_green", 1.0, 1.0};
+  o.time.end = end;
+  o.output.print = false;
+  return o;
+}
+
+// Records what the loop hands to the field sink.
+struct Recorder {
+  std::vector<std::pair<std::string, double>> writes;
+  std::vector<std::string> names;
+  flow::FieldSink sink() {
+    return [this](const std::string& base, double t, const flow::FieldSet& set) {
+      writes.emplace_back(base, t);
+      names.clear();
+      for (const auto& s : set.scalars) names.push_back(s.first);
+      for (const auto& v : set.vectors) names.push_back(v.first);
+    };
+  }
+};
+
+std::vector<double> flatten(const flow::VectorField& u) {
+  std::vector<double> out;
+  for (const auto& v : u) out.insert(out.end(), {v.x(), v.y(), v.z()});
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("Taylor-Green run: exact-solution error, output times, rank independence") {
+  Setup s(16, MPI_COMM_WORLD);
+  auto options = tgv_options(0.5);
+  options.output.interval = 0.2;
+  options.output.print = true;  // the progress lines hold collectives too: run them at np 2
+  options.output.log_every = 2;
+  Recorder rec;
+  flow::RunLoop loop(s.mesh, s.metrics, s.local, options, rec.sink());
+  const auto summary = loop.run();
+  REQUIRE(summary.taylor_green);
+  const auto& e = *summary.taylor_green;
+  MESSAGE("n 16: steps " << summary.steps << " L2 " << e.velocity_l2 << " rel "
+                         << e.velocity_l2 / e.exact_l2 << " Linf " << e.velocity_linf
+                         << " max div " << summary.max_divergence << " Poisson its "
+                         << summary.max_poisson_iterations);
+  CHECK(summary.time == doctest::Approx(0.5).epsilon(1e-14));
+  // CFL 0.5 with max |u| = 1 and h = 2 pi / 16: dt = 0.196; each output interval 0.2 (< 2 dt)
+  // is shared by two steps of 0.1, the last 0.1 to t = 0.5 is one step: 5 steps.
+  CHECK(summary.steps == 5);
+  // Measured relative L2 error 1.62e-4 (2nd-order in h and dt); twice that catches a wrong
+  // initial pressure, decay rate or time bookkeeping, which give errors of O(1e-3) or more.
+  CHECK(e.velocity_l2 / e.exact_l2 < 3.2e-4);
+  CHECK(e.velocity_l2 > 0);
+  // Approximate projection (compact Poisson matrix, wide divergence stencil): the divergence
+  // left is O(h^2) (h^2 = 0.154), measured 9.5e-4.
+  CHECK(summary.max_divergence < 2e-3);
+  // Fields at t = 0, 0.2, 0.4 and the end, with the three fields.
+  REQUIRE(rec.writes.size() == 4);
+  CHECK(rec.writes[1].second == doctest::Approx(0.2).epsilon(1e-14));
+  CHECK(rec.writes[3].second == doctest::Approx(0.5).epsilon(1e-14));
+  CHECK(rec.names == std::vector<std::string>{"pressure", "velocity", "vorticity"});
+
+  // The same run on one rank (every rank runs it alone) agrees to 1e-10 of U0.
+  Setup serial(16, MPI_COMM_SELF);
+  flow::RunLoop alone(serial.mesh, serial.metrics, serial.local, options);
+  alone.run();
+  const auto n = static_cast<flow::GlobalIndex>(s.metrics.num_nodes());
+  const auto a = test::gather_by_dual_node(s.local, flatten(loop.state().velocity), 3, n);
+  const auto b = test::gather_by_dual_node(serial.local, flatten(alone.state().velocity), 3, n);
+  const double diff = test::max_abs_difference(a, b);
+  MESSAGE("np " << s.local.comm.size() << " vs serial: max |du| " << diff);
+  CHECK(diff < 1e-10);
+}
+
+TEST_CASE("vorticity of the Taylor-Green field is 2 U0/L sin x sin y to 2nd order") {
+  Setup s(32, MPI_COMM_WORLD);
+  auto options = tgv_options(0.0);
+  flow::RunLoop loop(s.mesh, s.metrics, s.local, options);
+  flow::TensorField grad;
+  flow::VectorField omega;
+  flow::gradient(s.local, loop.state().velocity, grad);
+  flow::vorticity(grad, omega);
+  double worst = 0;
+  for (int j = 0; j < s.local.num_owned; ++j) {
+    const auto& x = s.local.position[j];
+    const Eigen::Vector3d exact(0, 0, 2 * std::sin(x.x()) * std::sin(x.y()));
+    worst = std::max(worst, (omega[j] - exact).norm());
+  }
+  worst = s.local.comm.max(worst);
+  // Centred differences on uniform hexahedra differentiate sin exactly up to the factor
+  // sin(h)/h, so omega_z = 2 sin x sin y sin(h)/h; the largest error, at the node
+  // (pi/2, pi/2), is 2 (1 - sin(h)/h) = h^2/3 + O(h^4).
+  const double h = 2 * std::numbers::pi / 32;
+  MESSAGE("max vorticity error " << worst);
+  CHECK(worst == doctest::Approx(2 * (1 - std::sin(h) / h)).epsilon(1e-8));
+}
+
+TEST_CASE("a time step beyond the RK4 stability limit is refused, one below it runs") {
+  Setup s(16, MPI_COMM_WORLD);
+  auto options = tgv_options(1.0);
+  // Uniform hexahedra, h = 2 pi / 16: the viscous rate is 12 nu / h^2 at every node and the
+  // convective rate (1/2V) sum |u_jk . S_jk| peaks at the node (pi/2, 0), where u = (1, 0, 0),
+  // the x-neighbours have u = cos h and the y-neighbours v = 0: (1 + cos h) / (2 h).
+  const double h = 2 * std::numbers::pi / 16;
+  const double limit = 1 / ((1 + std::cos(h)) / (2 * h) / flow::rk4_imaginary_limit +
+                            12 * 0.01 / (h * h) / flow::rk4_real_limit);
+  options.time.dt = 1.02 * limit;
+  flow::RunLoop refused(s.mesh, s.metrics, s.local, options);
+  try {
+    refused.run();
+    FAIL("a time step above the limit ran");
+  } catch (const flow::RunError& e) {
+    const std::string what = e.what();
+    MESSAGE(what);
+    CHECK(what.find("time.dt") != std::string::npos);
+    CHECK(what.find("stability limit") != std::string::npos);
+    // The limit named in the message is the one computed here, to 4 digits.
+    const auto at = what.find("stability limit ") + 16;
+    CHECK(std::stod(what.substr(at)) == doctest::Approx(limit).epsilon(1e-5));
+  }
+  options.time.dt = 0.95 * limit;
+  options.time.end = 20 * options.time.dt;
+  flow::RunLoop runs(s.mesh, s.metrics, s.local, options);
+  const auto summary = runs.run();
+  CHECK(summary.steps == 20);
+  // Stable at CFL 2.1: no node's speed grows above the initial U0 = 1 (measured L2 error 10%,
+  // the time error of such a large step).
+  double fastest = 0;
+  for (int j = 0; j < s.local.num_owned; ++j) fastest = std::max(fastest, runs.state().velocity[j].norm());
+  CHECK(s.local.comm.max(fastest) < 1.0);
+  // An adaptive step from a CFL target beyond the limit is refused, naming time.cfl.
+  options.time.dt = 0;
+  options.time.cfl = 3.5;
+  flow::RunLoop adaptive(s.mesh, s.metrics, s.local, options);
+  CHECK_THROWS_WITH_AS(adaptive.run(), doctest::Contains("lower time.cfl"), flow::RunError);
+}
+
+TEST_CASE("a blow-up stops the run with a diagnosis after writing the last good state") {
+  Setup s(16, MPI_COMM_WORLD);
+  auto options = tgv_options(100.0);
+  options.time.dt = 2.0;  // 2.3 times the stability limit, let through by the test-only switch
+  options.enforce_stability_limit = false;
+  options.velocity_limit = 10;  // U0 = 1
+  Recorder rec;
+  flow::RunLoop loop(s.mesh, s.metrics, s.local, options, rec.sink());
+  try {
+    loop.run();
+    FAIL("an unstable run finished");
+  } catch (const flow::RunError& e) {
+    const std::string what = e.what();
+    MESSAGE(what);
+    CHECK(what.find("velocity") != std::string::npos);
+    CHECK(what.find("at node") != std::string::npos);
+    CHECK(what.find("(x, y, z)") != std::string::npos);
+    CHECK(what.find("last_good.xmf") != std::string::npos);
+  }
+  // No output interval: the only field write is the last good state, one step before the end.
+  REQUIRE(rec.writes.size() == 1);
+  CHECK(rec.writes[0].first == "last_good");
+  CHECK(rec.writes[0].second == doctest::Approx(loop.state().time - 2.0));
+}
+
+TEST_CASE("the state guard names the field and the position of a non-finite node") {
+  Setup s(8, MPI_COMM_WORLD);
+  flow::VectorField u(s.local.num_local(), Eigen::Vector3d(0.5, 0, 0));
+  flow::ScalarField p(s.local.num_local(), 0.0);
+  CHECK(flow::find_bad_state(s.local, u, p, 1.0).empty());
+  // Two bad nodes: the one with the lower dual-node number is reported on every rank.
+  const Eigen::Vector3d target = s.metrics.position[5], other = s.metrics.position[40];
+  for (int j = 0; j < s.local.num_owned; ++j) {
+    if (s.local.dual_node[j] == 5) p[j] = std::nan("");
+    if (s.local.dual_node[j] == 40) u[j].x() = INFINITY;
+  }
+  const auto what = flow::find_bad_state(s.local, u, p, 1.0);
+  MESSAGE(what);
+  CHECK(what.find("pressure is not finite") != std::string::npos);
+  CHECK(what.find("node 5 ") != std::string::npos);
+  CHECK(what.find(fmt::format("({:.6g}, {:.6g}, {:.6g})", target.x(), target.y(), target.z())) !=
+        std::string::npos);
+  (void)other;
+}
+
+TEST_CASE("a mesh with non-periodic patches is refused, naming them") {
+  Setup s(8, MPI_COMM_WORLD, /*periodic_z=*/false);
+  CHECK_THROWS_WITH_AS(flow::RunLoop(s.mesh, s.metrics, s.local, tgv_options(1.0)),
+                       doctest::Contains("'zmin', 'zmax' are not periodic"), flow::RunError);
+}
+
+TEST_CASE("scene keys become run options") {
+  const auto scene = io::parse_scene(R"(
+[mesh]
+source = "box"
+[flow]
+density = 1000.0
+viscosity = 1e-3
+[time]
+end = 2.0
+cfl = 0.4
+[initial]
+type = "taylor_green"
+[initial.taylor_green]
+velocity = 0.1
+length = 0.01
+[output]
+interval = 5
+interval_unit = "steps"
+fields = ["vorticity"]
+)",
+                                     "s.toml");
+  const auto o = io::flow_run_options(scene, "dir");
+  CHECK(o.projection.viscosity == doctest::Approx(1e-6));
+  CHECK(o.time.cfl == 0.4);
+  CHECK(o.initial.length == 0.01);
+  CHECK(o.output.interval_in_steps);
+  CHECK(o.output.vorticity);
+  CHECK_FALSE(o.output.velocity);
+  CHECK(o.output.log_every == 10);
+  const auto fractional = io::parse_scene(
+      "[mesh]\nsource = \"box\"\n[output]\ninterval = 2.5\ninterval_unit = \"steps\"\n", "f.toml");
+  CHECK_THROWS_WITH_AS(io::flow_run_options(fractional, "dir"),
+                       doctest::Contains("f.toml:4:1: key 'output.interval'"), io::SceneError);
+}
