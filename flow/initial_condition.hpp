@@ -7,7 +7,6 @@
 #pragma once
 
 #include <Eigen/Dense>
-
 #include <cmath>
 #include <string>
 
@@ -28,8 +27,8 @@ struct TaylorGreen {
   }
   double pressure(const Eigen::Vector3d& x, double t) const {
     const double f = decay(t);
-    return rho * u0 * u0 / 4 * (std::cos(2 * x.x() / length) + std::cos(2 * x.y() / length)) *
-           f * f;
+    return rho * u0 * u0 / 4 * (std::cos(2 * x.x() / length) + std::cos(2 * x.y() / length)) * f *
+           f;
   }
 };
 

@@ -9,8 +9,8 @@
 
 namespace valsalva::flow {
 
-StabilityRates stability_rates(const LocalMesh& mesh, const std::vector<double>& weights,
-                               double nu, const VectorField& u, std::vector<double>& scratch) {
+StabilityRates stability_rates(const LocalMesh& mesh, const std::vector<double>& weights, double nu,
+                               const VectorField& u, std::vector<double>& scratch) {
   const int n = mesh.num_local();
   // Per-node sums of |u_jk . S_jk| / 2 and a_jk over the edges (each edge feeds both ends).
   scratch.assign(2 * static_cast<std::size_t>(n), 0.0);
@@ -66,9 +66,12 @@ std::string find_bad_state(const LocalMesh& mesh, const VectorField& u, const Sc
   std::array<double, 5> info{};
   if (mine == first) {
     const int j = bad;
-    if (!u[j].allFinite()) info = {0, u[j].norm(), 0, 0, 0};
-    else if (!std::isfinite(p[j])) info = {1, p[j], 0, 0, 0};
-    else info = {2, u[j].norm(), 0, 0, 0};
+    if (!u[j].allFinite())
+      info = {0, u[j].norm(), 0, 0, 0};
+    else if (!std::isfinite(p[j]))
+      info = {1, p[j], 0, 0, 0};
+    else
+      info = {2, u[j].norm(), 0, 0, 0};
     for (int d = 0; d < 3; ++d) info[2 + d] = mesh.position[j][d];
   }
   for (auto& x : info) x = mesh.comm.sum(x);
@@ -76,9 +79,9 @@ std::string find_bad_state(const LocalMesh& mesh, const VectorField& u, const Sc
   const char* what = kind == 0   ? "velocity is not finite"
                      : kind == 1 ? "pressure is not finite"
                                  : "velocity magnitude exceeds flow.velocity_limit";
-  std::string value = kind == 2 ? fmt::format("|u| = {:.6g} m/s > {:.6g} m/s", info[1],
-                                              velocity_limit)
-                                : fmt::format("value {}", info[1]);
+  std::string value = kind == 2
+                          ? fmt::format("|u| = {:.6g} m/s > {:.6g} m/s", info[1], velocity_limit)
+                          : fmt::format("value {}", info[1]);
   return fmt::format("{} ({}) at node {} (x, y, z) = ({:.6g}, {:.6g}, {:.6g}) m", what, value,
                      first, info[2], info[3], info[4]);
 }

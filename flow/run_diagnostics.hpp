@@ -24,15 +24,15 @@ inline constexpr double rk4_imaginary_limit = 2.8284271247461903;  // 2 sqrt 2
 inline constexpr double rk4_real_limit = 2.7852935634052820;
 
 struct StabilityRates {
-  double stability = 0;  // max_j (rc_j / 2.83 + rv_j / 2.79), 1/s: sigma = dt * stability
-  double convective = 0; // max_j |u_j| / h_j, 1/s: CFL = dt * convective
-  double viscous = 0;    // max_j nu / h_j^2, 1/s: Fourier number = dt * viscous
+  double stability = 0;   // max_j (rc_j / 2.83 + rv_j / 2.79), 1/s: sigma = dt * stability
+  double convective = 0;  // max_j |u_j| / h_j, 1/s: CFL = dt * convective
+  double viscous = 0;     // max_j nu / h_j^2, 1/s: Fourier number = dt * viscous
 };
 
 // Collective. `weights` are flow::laplacian_weights(mesh), nu the kinematic viscosity;
 // `scratch` is resized to 2 num_local() and reused (no allocation inside the time loop).
-StabilityRates stability_rates(const LocalMesh& mesh, const std::vector<double>& weights,
-                               double nu, const VectorField& u, std::vector<double>& scratch);
+StabilityRates stability_rates(const LocalMesh& mesh, const std::vector<double>& weights, double nu,
+                               const VectorField& u, std::vector<double>& scratch);
 
 // Collective: 1/2 rho sum_j V_j |u_j|^2 over owned nodes, J.
 double kinetic_energy(const LocalMesh& mesh, double rho, const VectorField& u);

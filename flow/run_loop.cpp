@@ -28,7 +28,8 @@ void require_periodic(const LocalMesh& local) {
   for (const auto& f : local.boundary) ++faces[f.patch];
   std::string open;
   for (std::size_t p = 0; p < faces.size(); ++p)
-    if (local.comm.sum(faces[p]) > 0) open += (open.empty() ? "'" : ", '") + local.patch_names[p] + "'";
+    if (local.comm.sum(faces[p]) > 0)
+      open += (open.empty() ? "'" : ", '") + local.patch_names[p] + "'";
   if (!open.empty())
     throw RunError("flow run: boundary patches " + open +
                    " are not periodic; boundary conditions are not implemented yet, so a flow "
@@ -57,7 +58,8 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
       state_.pressure[j] = tg.pressure(local.position[j], 0.0);
     }
   } else if (ic.type != "rest") {
-    throw RunError("flow run: unknown initial.type '" + ic.type + "' (accepted: rest, taylor_green)");
+    throw RunError("flow run: unknown initial.type '" + ic.type +
+                   "' (accepted: rest, taylor_green)");
   }
   last_good_ = state_;
 }
@@ -70,28 +72,35 @@ double RunLoop::choose_dt(double remaining) {
   double dt = t.dt;
   if (dt > 0) {
     if (options_.enforce_stability_limit && dt > limit)
-      throw RunError(fmt::format(
-          "time.dt = {:.6g} s exceeds the stability limit {:.6g} s of the explicit RK4 terms at "
-          "step {} (CFL {:.3g}, Fourier number {:.3g}; convection and viscosity by Gershgorin "
-          "bounds, see flow/run_diagnostics.hpp): set time.dt <= {:.6g} or time.dt = 0 to derive "
-          "it from time.cfl",
-          dt, limit, step_, dt * rates_.convective, dt * rates_.viscous, limit),
+      throw RunError(
+          fmt::format(
+              "time.dt = {:.6g} s exceeds the stability limit {:.6g} s of the explicit RK4 terms "
+              "at "
+              "step {} (CFL {:.3g}, Fourier number {:.3g}; convection and viscosity by Gershgorin "
+              "bounds, see flow/run_diagnostics.hpp): set time.dt <= {:.6g} or time.dt = 0 to "
+              "derive "
+              "it from time.cfl",
+              dt, limit, step_, dt * rates_.convective, dt * rates_.viscous, limit),
           "time.dt");
   } else {
     dt = std::numeric_limits<double>::infinity();
     if (rates_.convective > 0) dt = t.cfl / rates_.convective;
     if (rates_.viscous > 0) dt = std::min(dt, t.fourier / rates_.viscous);
     if (!std::isfinite(dt))
-      throw RunError("time.dt = 0 asks for a time step from time.cfl and time.fourier, but the "
-                     "fluid is at rest and inviscid: set time.dt",
-                     "time.dt");
+      throw RunError(
+          "time.dt = 0 asks for a time step from time.cfl and time.fourier, but the "
+          "fluid is at rest and inviscid: set time.dt",
+          "time.dt");
     if (options_.enforce_stability_limit && dt > limit * (1 + 1e-12))
-      throw RunError(fmt::format(
-          "time.cfl = {:.4g} and time.fourier = {:.4g} give dt = {:.6g} s, beyond the stability "
-          "limit {:.6g} s of the explicit RK4 terms at step {} (the limit corresponds to CFL "
-          "{:.3g}, Fourier number {:.3g}; see flow/run_diagnostics.hpp): lower time.cfl or "
-          "time.fourier",
-          t.cfl, t.fourier, dt, limit, step_, limit * rates_.convective, limit * rates_.viscous),
+      throw RunError(
+          fmt::format(
+              "time.cfl = {:.4g} and time.fourier = {:.4g} give dt = {:.6g} s, beyond the "
+              "stability "
+              "limit {:.6g} s of the explicit RK4 terms at step {} (the limit corresponds to CFL "
+              "{:.3g}, Fourier number {:.3g}; see flow/run_diagnostics.hpp): lower time.cfl or "
+              "time.fourier",
+              t.cfl, t.fourier, dt, limit, step_, limit * rates_.convective,
+              limit * rates_.viscous),
           "time.cfl");
   }
   // Land on the next event (end, output time) without a sliver of a step: the last two steps
@@ -149,12 +158,12 @@ RunSummary RunLoop::run() {
   double dt = 0;
   const double energy0 = kinetic_energy(local_, rho, state_.velocity);  // collective
   if (root && out.print)
-    fmt::print("flow: t = 0 s, kinetic energy {:.6e} J, running to t = {:.6g} s\n", energy0,
-               t.end);
+    fmt::print("flow: t = 0 s, kinetic energy {:.6e} J, running to t = {:.6g} s\n", energy0, t.end);
 
   while (t.end - state_.time > eps && (t.max_steps == 0 || step_ < t.max_steps)) {
     double remaining = t.end - state_.time;
-    if (fields && !out.interval_in_steps) remaining = std::min(remaining, next_output - state_.time);
+    if (fields && !out.interval_in_steps)
+      remaining = std::min(remaining, next_output - state_.time);
     dt = choose_dt(remaining);
     last_good_.velocity = state_.velocity;  // sizes match: no allocation
     last_good_.pressure = state_.pressure;
@@ -163,13 +172,13 @@ RunSummary RunLoop::run() {
       report = solver_.step(state_, dt);
     } catch (const std::exception& e) {
       ++step_;
-      const auto bad = find_bad_state(local_, state_.velocity, state_.pressure,
-                                      options_.velocity_limit);
+      const auto bad =
+          find_bad_state(local_, state_.velocity, state_.pressure, options_.velocity_limit);
       fail(bad.empty() ? std::string(e.what()) : bad + " (" + e.what() + ")");
     }
     ++step_;
-    if (auto bad = find_bad_state(local_, state_.velocity, state_.pressure,
-                                  options_.velocity_limit);
+    if (auto bad =
+            find_bad_state(local_, state_.velocity, state_.pressure, options_.velocity_limit);
         !bad.empty())
       fail(bad);
     summary.max_divergence = std::max(summary.max_divergence, report.max_divergence);
@@ -179,23 +188,24 @@ RunSummary RunLoop::run() {
     const bool finished = t.end - state_.time <= eps || step_ == t.max_steps;
     if (step_ % out.log_every == 0 || finished) {
       const auto now = Clock::now();
-      const double per_step = local_.comm.max(seconds(last_log_time, now)) /
-                              static_cast<double>(step_ - last_logged);
+      const double per_step =
+          local_.comm.max(seconds(last_log_time, now)) / static_cast<double>(step_ - last_logged);
       last_log_time = now;
       last_logged = step_;
       const double eta = per_step * std::max(0.0, t.end - state_.time) / dt;
       const double energy = kinetic_energy(local_, rho, state_.velocity);
       const double cfl = dt * rates_.convective, fourier = dt * rates_.viscous;
       if (root && out.print)
-        fmt::print("step {:>7} t {:.6e} s dt {:.3e} s CFL {:.3f} Fo {:.3f} max|div| {:.2e} 1/s "
-                   "KE {:.6e} J Poisson {} it {:.1e} wall/step {:.3e} s ETA {:.1f} s\n",
-                   step_, state_.time, dt, cfl, fourier, report.max_divergence, energy,
-                   report.poisson.iterations, report.poisson.relative_residual, per_step, eta);
+        fmt::print(
+            "step {:>7} t {:.6e} s dt {:.3e} s CFL {:.3f} Fo {:.3f} max|div| {:.2e} 1/s "
+            "KE {:.6e} J Poisson {} it {:.1e} wall/step {:.3e} s ETA {:.1f} s\n",
+            step_, state_.time, dt, cfl, fourier, report.max_divergence, energy,
+            report.poisson.iterations, report.poisson.relative_residual, per_step, eta);
       if (csv.is_open())
-        csv << fmt::format("{},{:.17g},{:.17g},{:.9g},{:.9g},{:.9g},{:.17g},{},{:.6g},{:.6g},{:.6g}\n",
-                           step_, state_.time, dt, cfl, fourier, report.max_divergence, energy,
-                           report.poisson.iterations, report.poisson.relative_residual,
-                           per_step, eta)
+        csv << fmt::format(
+                   "{},{:.17g},{:.17g},{:.9g},{:.9g},{:.9g},{:.17g},{},{:.6g},{:.6g},{:.6g}\n",
+                   step_, state_.time, dt, cfl, fourier, report.max_divergence, energy,
+                   report.poisson.iterations, report.poisson.relative_residual, per_step, eta)
             << std::flush;
     }
     if (fields) {
@@ -225,9 +235,10 @@ RunSummary RunLoop::run() {
                        e.velocity_linf, e.exact_l2, e.velocity_l2 / e.exact_l2);
     }
     if (root && out.print)
-      fmt::print("Taylor-Green velocity error at t = {:.6g} s: L2 {:.6e} m/s ({:.4e} of the exact "
-                 "L2 norm), Linf {:.6e} m/s\n",
-                 state_.time, e.velocity_l2, e.velocity_l2 / e.exact_l2, e.velocity_linf);
+      fmt::print(
+          "Taylor-Green velocity error at t = {:.6g} s: L2 {:.6e} m/s ({:.4e} of the exact "
+          "L2 norm), Linf {:.6e} m/s\n",
+          state_.time, e.velocity_l2, e.velocity_l2 / e.exact_l2, e.velocity_linf);
   }
   return summary;
 }

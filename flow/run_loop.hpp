@@ -25,10 +25,10 @@
 namespace valsalva::flow {
 
 struct TimeOptions {
-  double end = 0;            // s
-  double dt = 0;             // s; 0 = from the cfl and fourier targets
-  double cfl = 0.5;          // target max |u| dt / h
-  double fourier = 0.2;      // target max nu dt / h^2
+  double end = 0;              // s
+  double dt = 0;               // s; 0 = from the cfl and fourier targets
+  double cfl = 0.5;            // target max |u| dt / h
+  double fourier = 0.2;        // target max nu dt / h^2
   std::int64_t max_steps = 0;  // 0 = no cap
 };
 
@@ -38,7 +38,7 @@ struct OutputOptions {
   bool interval_in_steps = false;
   bool velocity = true, pressure = true, vorticity = true;
   int log_every = 10;
-  bool print = true;          // progress lines on stdout (rank 0)
+  bool print = true;  // progress lines on stdout (rank 0)
 };
 
 struct RunOptions {
@@ -46,7 +46,7 @@ struct RunOptions {
   TimeOptions time;
   OutputOptions output;
   InitialCondition initial;
-  double velocity_limit = 50;    // m/s
+  double velocity_limit = 50;  // m/s
   // Tests only: let a time step beyond the stability limit through to exercise the guard.
   bool enforce_stability_limit = true;
 };

@@ -80,8 +80,8 @@ TEST_CASE("Taylor-Green run: exact-solution error, output times, rank independen
   REQUIRE(summary.taylor_green);
   const auto& e = *summary.taylor_green;
   MESSAGE("n 16: steps " << summary.steps << " L2 " << e.velocity_l2 << " rel "
-                         << e.velocity_l2 / e.exact_l2 << " Linf " << e.velocity_linf
-                         << " max div " << summary.max_divergence << " Poisson its "
+                         << e.velocity_l2 / e.exact_l2 << " Linf " << e.velocity_linf << " max div "
+                         << summary.max_divergence << " Poisson its "
                          << summary.max_poisson_iterations);
   CHECK(summary.time == doctest::Approx(0.5).epsilon(1e-14));
   // CFL 0.5 with max |u| = 1 and h = 2 pi / 16: dt = 0.196; each output interval 0.2 (< 2 dt)
@@ -166,7 +166,8 @@ TEST_CASE("a time step beyond the RK4 stability limit is refused, one below it r
   // Stable at CFL 2.1: no node's speed grows above the initial U0 = 1 (measured L2 error 10%,
   // the time error of such a large step).
   double fastest = 0;
-  for (int j = 0; j < s.local.num_owned; ++j) fastest = std::max(fastest, runs.state().velocity[j].norm());
+  for (int j = 0; j < s.local.num_owned; ++j)
+    fastest = std::max(fastest, runs.state().velocity[j].norm());
   CHECK(s.local.comm.max(fastest) < 1.0);
   // An adaptive step from a CFL target beyond the limit is refused, naming time.cfl.
   options.time.dt = 0;
