@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "flow/compensated_sum.hpp"
+#include "flow/mesh_check.hpp"
 #include "flow/periodic.hpp"
 
 namespace valsalva::flow {
@@ -231,19 +232,7 @@ void finish_derived_metrics(DualMetrics& m) {
 
 double mesh_volume(const Mesh& mesh) {
   CompensatedSum total;
-  std::vector<GlobalIndex> face_nodes;
-  for (GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
-    const auto cell = mesh.cell(c);
-    const Vec cc = centroid(mesh, cell);
-    for (const auto& f : cell_faces(mesh.cell_types[c])) {
-      face_nodes.clear();
-      for (int i : f) face_nodes.push_back(cell[i]);
-      const Vec cf = centroid(mesh, face_nodes);
-      for (std::size_t i = 0; i < f.size(); ++i)
-        total.add(tet_volume(mesh.nodes[face_nodes[i]],
-                             mesh.nodes[face_nodes[(i + 1) % f.size()]], cf, cc));
-    }
-  }
+  for (GlobalIndex c = 0; c < mesh.num_cells(); ++c) total.add(cell_volume(mesh, c));
   return total.value();
 }
 

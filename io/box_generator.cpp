@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <unordered_map>
+
+#include "flow/mesh_check.hpp"
 
 namespace valsalva::io {
 
@@ -39,25 +41,6 @@ double hashed_uniform(std::uint64_t seed, std::int64_t i, std::int64_t j, std::i
     h ^= h >> 33;
   }
   return static_cast<double>(h >> 11) * (2.0 / 9007199254740992.0) - 1.0;
-}
-
-double signed_volume(const flow::Mesh& mesh, CellType type, std::span<const GlobalIndex> nodes) {
-  // Sum of the face-fan tetrahedra about the node average: exact for planar faces.
-  Vec cc = Vec::Zero();
-  for (GlobalIndex n : nodes) cc += mesh.nodes[n];
-  cc /= static_cast<double>(nodes.size());
-  double v = 0;
-  for (const auto& f : flow::cell_faces(type)) {
-    Vec cf = Vec::Zero();
-    for (int i : f) cf += mesh.nodes[nodes[i]];
-    cf /= static_cast<double>(f.size());
-    for (std::size_t i = 0; i < f.size(); ++i) {
-      const Vec& a = mesh.nodes[nodes[f[i]]];
-      const Vec& b = mesh.nodes[nodes[f[(i + 1) % f.size()]]];
-      v += (b - a).cross(cf - a).dot(a - cc) / 6.0;
-    }
-  }
-  return v;
 }
 
 class BoxBuilder {
@@ -127,16 +110,17 @@ class BoxBuilder {
   }
 
   void add_oriented(CellType type, std::vector<GlobalIndex> nodes) {
-    if (signed_volume(mesh_, type, nodes) < 0) {
-      // Mirror the ordering: swap two base nodes (and their top partners for prisms).
-      if (type == CellType::tetra) std::swap(nodes[1], nodes[2]);
-      if (type == CellType::prism) {
-        std::swap(nodes[1], nodes[2]);
-        std::swap(nodes[4], nodes[5]);
-      }
-      if (type == CellType::pyramid) std::swap(nodes[1], nodes[3]);
-    }
     mesh_.add_cell(type, nodes, 0);
+    const GlobalIndex c = mesh_.num_cells() - 1;
+    if (flow::cell_volume(mesh_, c) >= 0) return;
+    // Mirror the ordering: swap two base nodes (and their top partners for prisms).
+    const auto first = mesh_.cell_nodes.begin() + mesh_.cell_offsets[c];
+    if (type == CellType::tetra) std::swap(first[1], first[2]);
+    if (type == CellType::prism) {
+      std::swap(first[1], first[2]);
+      std::swap(first[4], first[5]);
+    }
+    if (type == CellType::pyramid) std::swap(first[1], first[3]);
   }
 
   void add_hex_cell(int i, int j, int k) {
