@@ -54,8 +54,8 @@ int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std
   const int rank = world_rank();
   if (rank == 0) fmt::print("# resolved scene {}\n{}\n", scene_file.string(), scene.resolved());
   const auto dir = out.empty() ? io::default_run_path(scene) : std::filesystem::path(out);
-  const auto run_dir = io::RunDirectory::prepare(
-      dir, overwrite || scene.get<bool>("run.overwrite"), scene, MPI_COMM_WORLD);
+  const auto run_dir = io::RunDirectory::prepare(dir, overwrite || scene.get<bool>("run.overwrite"),
+                                                 scene, MPI_COMM_WORLD);
 
   const auto mesh = io::build_mesh(scene);
   const auto metrics = flow::compute_dual_metrics(mesh);
@@ -79,10 +79,11 @@ int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std
   };
   const auto run_options = io::flow_run_options(scene, run_dir.path());
   if (rank == 0) {
-    fmt::print("mesh: {} nodes ({} dual nodes), {} cells; partition: {} ranks, {} ghost layers, "
-               "method {}\n",
-               mesh.num_nodes(), metrics.num_nodes(), mesh.num_cells(), local.comm.size(),
-               options.ghost_layers, options.method);
+    fmt::print(
+        "mesh: {} nodes ({} dual nodes), {} cells; partition: {} ranks, {} ghost layers, "
+        "method {}\n",
+        mesh.num_nodes(), metrics.num_nodes(), mesh.num_cells(), local.comm.size(),
+        options.ghost_layers, options.method);
     fmt::print("flow: rho {:.6g} kg/m3, nu {:.6g} m2/s, scheme {}, initial state {}\n",
                run_options.projection.density, run_options.projection.viscosity,
                scene.get<std::string>("flow.scheme"), run_options.initial.type);
@@ -96,10 +97,10 @@ int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std
     throw std::runtime_error(scene.location(e.key()).str() + ": " + e.what());
   }
   if (rank == 0) {
-    fmt::print("finished: {} steps to t = {:.6g} s, max |div v| {:.3e} 1/s, max Poisson "
-               "iterations {}\n",
-               summary.steps, summary.time, summary.max_divergence,
-               summary.max_poisson_iterations);
+    fmt::print(
+        "finished: {} steps to t = {:.6g} s, max |div v| {:.3e} 1/s, max Poisson "
+        "iterations {}\n",
+        summary.steps, summary.time, summary.max_divergence, summary.max_poisson_iterations);
     if (outputs.count("fields"))
       fmt::print("results: {} (open {} in ParaView)\n", run_dir.path().string(),
                  outputs.at("fields")->xmf_file().string());
@@ -127,8 +128,9 @@ int validate(const std::string& case_name, bool list, bool quick, const std::str
     return list ? 0 : 2;
   }
   const auto* c = validation::find_case(case_name);
-  if (!c) throw std::runtime_error(fmt::format(
-      "validate: unknown case '{}' (valsalva validate --list shows the cases)", case_name));
+  if (!c)
+    throw std::runtime_error(fmt::format(
+        "validate: unknown case '{}' (valsalva validate --list shows the cases)", case_name));
   validation::Context ctx;
   ctx.quick = quick;
   ctx.out_dir = out.empty() ? std::filesystem::path("validation-results") / case_name

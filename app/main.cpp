@@ -1,8 +1,8 @@
 // valsalva command-line front end: parses arguments and hands over to the library.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <mpi.h>
 
+#include <CLI/CLI.hpp>
 #include <exception>
 
 #include "app/commands.hpp"
@@ -13,7 +13,8 @@ int main(int argc, char** argv) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &size);
 
-  CLI::App cli{"valsalva: blood flow through heart valves (incompressible LES + immersed leaflets)"};
+  CLI::App cli{
+      "valsalva: blood flow through heart valves (incompressible LES + immersed leaflets)"};
   cli.require_subcommand(1);
   std::string scene, mesh_file, case_name, out;
   bool overwrite = false, list = false, quick = false;

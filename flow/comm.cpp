@@ -26,11 +26,23 @@ T reduce(MPI_Comm comm, T x, MPI_Datatype type, MPI_Op op) {
 }
 }  // namespace
 
-double Comm::sum(double x) const { return reduce(comm_, x, MPI_DOUBLE, MPI_SUM); }
-double Comm::max(double x) const { return reduce(comm_, x, MPI_DOUBLE, MPI_MAX); }
-double Comm::min(double x) const { return reduce(comm_, x, MPI_DOUBLE, MPI_MIN); }
-std::int64_t Comm::sum(std::int64_t x) const { return reduce(comm_, x, MPI_INT64_T, MPI_SUM); }
-std::int64_t Comm::max(std::int64_t x) const { return reduce(comm_, x, MPI_INT64_T, MPI_MAX); }
-void Comm::barrier() const { VALSALVA_MPI(MPI_Barrier(comm_)); }
+double Comm::sum(double x) const {
+  return reduce(comm_, x, MPI_DOUBLE, MPI_SUM);
+}
+double Comm::max(double x) const {
+  return reduce(comm_, x, MPI_DOUBLE, MPI_MAX);
+}
+double Comm::min(double x) const {
+  return reduce(comm_, x, MPI_DOUBLE, MPI_MIN);
+}
+std::int64_t Comm::sum(std::int64_t x) const {
+  return reduce(comm_, x, MPI_INT64_T, MPI_SUM);
+}
+std::int64_t Comm::max(std::int64_t x) const {
+  return reduce(comm_, x, MPI_INT64_T, MPI_MAX);
+}
+void Comm::barrier() const {
+  VALSALVA_MPI(MPI_Barrier(comm_));
+}
 
 }  // namespace valsalva::flow

@@ -59,7 +59,8 @@ FaceKey face_key(const Range& nodes) {
   for (GlobalIndex v : nodes) k.n[i++] = v;
   // Insertion sort of at most 4 entries (std::sort trips GCC 12's -Warray-bounds here).
   for (std::size_t a = 1; a < 4; ++a)
-    for (std::size_t b = a; b > 0 && k.n[b] >= 0 && (k.n[b - 1] > k.n[b]); --b) std::swap(k.n[b - 1], k.n[b]);
+    for (std::size_t b = a; b > 0 && k.n[b] >= 0 && (k.n[b - 1] > k.n[b]); --b)
+      std::swap(k.n[b - 1], k.n[b]);
   return k;
 }
 
@@ -68,7 +69,6 @@ Vec centroid(const Mesh& mesh, std::span<const GlobalIndex> nodes) {
   for (GlobalIndex n : nodes) c += mesh.nodes[n];
   return c / static_cast<double>(nodes.size());
 }
-
 
 bool on_periodic_patch(const Mesh& mesh, int patch) {
   for (const auto& link : mesh.periodic)

@@ -39,8 +39,8 @@ void Halo::start(std::span<double> data, int components, HaloMode mode) {
 
 void Halo::finish() {
   if (!active_) throw std::logic_error("Halo::finish without start");
-  VALSALVA_MPI(MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(),
-                           MPI_STATUSES_IGNORE));
+  VALSALVA_MPI(
+      MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE));
   const int nc = components_;
   for (std::size_t i = 0; i < neighbours_.size(); ++i) {
     const auto& nb = neighbours_[i];

@@ -41,12 +41,12 @@ std::vector<int> metis_partition(const DualMetrics& m, int parts) {
   METIS_SetDefaultOptions(options);
   options[METIS_OPTION_SEED] = 1;  // reproducible partitions
   std::vector<idx_t> part(static_cast<std::size_t>(n), 0);
-  const int status = METIS_PartGraphKway(&n, &ncon, g.xadj.data(), g.adjncy.data(), nullptr,
-                                         nullptr, nullptr, &nparts, nullptr, nullptr, options,
-                                         &cut, part.data());
+  const int status =
+      METIS_PartGraphKway(&n, &ncon, g.xadj.data(), g.adjncy.data(), nullptr, nullptr, nullptr,
+                          &nparts, nullptr, nullptr, options, &cut, part.data());
   if (status != METIS_OK)
-    throw std::runtime_error(fmt::format("METIS_PartGraphKway failed with status {} for {} parts",
-                                         status, parts));
+    throw std::runtime_error(
+        fmt::format("METIS_PartGraphKway failed with status {} for {} parts", status, parts));
   return {part.begin(), part.end()};
 }
 
@@ -117,7 +117,8 @@ LocalMesh distribute(const Mesh& mesh, const DualMetrics& m, MPI_Comm mpi_comm,
           local_of[g.adjncy[a]] = -2;  // claimed in this layer
         }
     }
-    std::sort(found.begin(), found.end(), [&](GlobalIndex a, GlobalIndex b) { return new_id[a] < new_id[b]; });
+    std::sort(found.begin(), found.end(),
+              [&](GlobalIndex a, GlobalIndex b) { return new_id[a] < new_id[b]; });
     for (GlobalIndex d : found) add_local(d, layer);
     layer_begin = layer_end;
     layer_end = local.dual_node.size();
@@ -170,15 +171,16 @@ LocalMesh distribute(const Mesh& mesh, const DualMetrics& m, MPI_Comm mpi_comm,
   }
   std::vector<int> send_counts(size), recv_counts(size);
   for (int r = 0; r < size; ++r) send_counts[r] = static_cast<int>(wanted[r].size());
-  VALSALVA_MPI(MPI_Alltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT,
-                            comm.get()));
+  VALSALVA_MPI(
+      MPI_Alltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT, comm.get()));
   std::vector<int> sdispl(size + 1, 0), rdispl(size + 1, 0);
   for (int r = 0; r < size; ++r) {
     sdispl[r + 1] = sdispl[r] + send_counts[r];
     rdispl[r + 1] = rdispl[r] + recv_counts[r];
   }
   std::vector<GlobalIndex> sendbuf(sdispl[size]), recvbuf(rdispl[size]);
-  for (int r = 0; r < size; ++r) std::copy(wanted[r].begin(), wanted[r].end(), sendbuf.begin() + sdispl[r]);
+  for (int r = 0; r < size; ++r)
+    std::copy(wanted[r].begin(), wanted[r].end(), sendbuf.begin() + sdispl[r]);
   VALSALVA_MPI(MPI_Alltoallv(sendbuf.data(), send_counts.data(), sdispl.data(), MPI_INT64_T,
                              recvbuf.data(), recv_counts.data(), rdispl.data(), MPI_INT64_T,
                              comm.get()));

@@ -15,18 +15,18 @@
 namespace valsalva::flow {
 
 struct PartitionOptions {
-  int ghost_layers = 2;            // the 4th-order scheme and the IBM kernels need >= 2
-  std::string method = "metis";    // metis | block
+  int ghost_layers = 2;          // the 4th-order scheme and the IBM kernels need >= 2
+  std::string method = "metis";  // metis | block
 };
 
 struct LocalMesh {
   Comm comm;
-  int num_owned = 0;                     // local nodes [0, num_owned) are owned
-  std::vector<GlobalIndex> global_id;    // hypre numbering; owned ids are contiguous
-  GlobalIndex first_owned = 0;           // global id of local node 0
+  int num_owned = 0;                   // local nodes [0, num_owned) are owned
+  std::vector<GlobalIndex> global_id;  // hypre numbering; owned ids are contiguous
+  GlobalIndex first_owned = 0;         // global id of local node 0
   GlobalIndex global_nodes = 0;
-  std::vector<int> ghost_layer;          // 0 for owned nodes
-  std::vector<GlobalIndex> dual_node;    // index in the replicated DualMetrics
+  std::vector<int> ghost_layer;        // 0 for owned nodes
+  std::vector<GlobalIndex> dual_node;  // index in the replicated DualMetrics
 
   std::vector<Eigen::Vector3d> position;
   std::vector<double> volume;

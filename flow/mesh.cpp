@@ -8,20 +8,28 @@ namespace valsalva::flow {
 
 int node_count(CellType type) {
   switch (type) {
-    case CellType::tetra: return 4;
-    case CellType::pyramid: return 5;
-    case CellType::prism: return 6;
-    case CellType::hexa: return 8;
+    case CellType::tetra:
+      return 4;
+    case CellType::pyramid:
+      return 5;
+    case CellType::prism:
+      return 6;
+    case CellType::hexa:
+      return 8;
   }
   throw std::logic_error("unknown cell type");
 }
 
 const char* name(CellType type) {
   switch (type) {
-    case CellType::tetra: return "tetrahedron";
-    case CellType::pyramid: return "pyramid";
-    case CellType::prism: return "prism";
-    case CellType::hexa: return "hexahedron";
+    case CellType::tetra:
+      return "tetrahedron";
+    case CellType::pyramid:
+      return "pyramid";
+    case CellType::prism:
+      return "prism";
+    case CellType::hexa:
+      return "hexahedron";
   }
   return "?";
 }
@@ -32,17 +40,17 @@ std::span<const std::vector<int>> cell_faces(CellType type) {
       {{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}};
   static const std::array<std::vector<int>, 5> pri{
       {{0, 2, 1}, {3, 4, 5}, {0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}}};
-  static const std::array<std::vector<int>, 6> hex{{{0, 3, 2, 1},
-                                                    {4, 5, 6, 7},
-                                                    {0, 1, 5, 4},
-                                                    {1, 2, 6, 5},
-                                                    {2, 3, 7, 6},
-                                                    {3, 0, 4, 7}}};
+  static const std::array<std::vector<int>, 6> hex{
+      {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
   switch (type) {
-    case CellType::tetra: return tet;
-    case CellType::pyramid: return pyr;
-    case CellType::prism: return pri;
-    case CellType::hexa: return hex;
+    case CellType::tetra:
+      return tet;
+    case CellType::pyramid:
+      return pyr;
+    case CellType::prism:
+      return pri;
+    case CellType::hexa:
+      return hex;
   }
   throw std::logic_error("unknown cell type");
 }

@@ -63,7 +63,7 @@ struct Mesh {
 
   void add_cell(CellType type, std::span<const GlobalIndex> nodes_of_cell, int region = 0);
   void add_face(std::span<const GlobalIndex> nodes_of_face, int patch);
-  int add_patch(const std::string& name);    // returns existing index if present
+  int add_patch(const std::string& name);   // returns existing index if present
   int add_region(const std::string& name);  // returns existing index if present
 };
 

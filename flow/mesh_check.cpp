@@ -1,9 +1,9 @@
 #include "flow/mesh_check.hpp"
 
-#include <Eigen/Geometry>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -65,13 +65,15 @@ struct FaceKeyHash {
 
 struct CellFaceUse {
   int count = 0;
-  GlobalIndex cell = -1;   // first cell using the face
-  int local = -1;          // its local face number
-  GlobalIndex cell2 = -1;  // second cell
-  GlobalIndex tagged = -1; // boundary face covering it
+  GlobalIndex cell = -1;    // first cell using the face
+  int local = -1;           // its local face number
+  GlobalIndex cell2 = -1;   // second cell
+  GlobalIndex tagged = -1;  // boundary face covering it
 };
 
-std::string where(const Mesh& mesh) { return fmt::format("mesh '{}'", mesh.source); }
+std::string where(const Mesh& mesh) {
+  return fmt::format("mesh '{}'", mesh.source);
+}
 
 std::string point(const Eigen::Vector3d& x) {
   return fmt::format("({:.6g}, {:.6g}, {:.6g})", x.x(), x.y(), x.z());
@@ -149,9 +151,10 @@ void check_cell_shapes(const Mesh& mesh) {
       if (v < worst) worst = v, worst_face = lf, worst_node = a;
     });
     if (!(std::abs(volume) >= 1e-12 * h * h * h))
-      fail(mesh, fmt::format("degenerate {}: volume {:.3g} is below 1e-12 h^3 (h = longest "
-                             "edge = {:.3g}) near {}",
-                             describe_cell(mesh, c), volume, h, point(centroid(mesh, mesh.cell(c)))));
+      fail(mesh,
+           fmt::format("degenerate {}: volume {:.3g} is below 1e-12 h^3 (h = longest "
+                       "edge = {:.3g}) near {}",
+                       describe_cell(mesh, c), volume, h, point(centroid(mesh, mesh.cell(c)))));
     if (worst < 0.0)
       fail(mesh, fmt::format("inverted {}: the sub-tetrahedron at node {} of local face {} has "
                              "signed volume {:.3g} (cell volume {:.3g}) near {}",
@@ -166,8 +169,8 @@ void check_unused_nodes(const Mesh& mesh) {
   for (GlobalIndex n = 0; n < mesh.num_nodes(); ++n)
     if (!used[n]) {
       const auto unused = std::count(used.begin(), used.end(), 0);
-      fail(mesh, fmt::format("unused node {} at {} belongs to no cell ({} unused nodes in all)",
-                             n, point(mesh.nodes[n]), unused));
+      fail(mesh, fmt::format("unused node {} at {} belongs to no cell ({} unused nodes in all)", n,
+                             point(mesh.nodes[n]), unused));
     }
 }
 
@@ -245,12 +248,12 @@ void check_boundary_covered(const Mesh& mesh, const FaceMap& faces) {
   }
   if (missing == 0) return;
   face_nodes_of(*first);
-  fail(mesh, fmt::format("{} boundary faces belong to no boundary patch (missing physical "
-                         "group?); they lie in the box {} - {}; first: local face {} of {}, "
-                         "face nodes {} near {}",
-                         missing, point(lo), point(hi), first->local,
-                         describe_cell(mesh, first->cell), fmt::join(buffer, " "),
-                         point(centroid(mesh, buffer))));
+  fail(mesh,
+       fmt::format("{} boundary faces belong to no boundary patch (missing physical "
+                   "group?); they lie in the box {} - {}; first: local face {} of {}, "
+                   "face nodes {} near {}",
+                   missing, point(lo), point(hi), first->local, describe_cell(mesh, first->cell),
+                   fmt::join(buffer, " "), point(centroid(mesh, buffer))));
 }
 
 }  // namespace
@@ -281,8 +284,9 @@ double longest_edge(const Mesh& mesh, GlobalIndex c) {
   double longest = 0.0;
   for (const auto& face : cell_faces(mesh.cell_types[c]))
     for (std::size_t k = 0; k < face.size(); ++k)
-      longest = std::max(longest, (mesh.nodes[nodes[face[k]]] -
-                                   mesh.nodes[nodes[face[(k + 1) % face.size()]]]).norm());
+      longest = std::max(
+          longest,
+          (mesh.nodes[nodes[face[k]]] - mesh.nodes[nodes[face[(k + 1) % face.size()]]]).norm());
   return longest;
 }
 

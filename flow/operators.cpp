@@ -12,8 +12,8 @@ template <class T>
 void finish_field(const LocalMesh& mesh, std::vector<T>& out, int components) {
   // Ghost accumulations are partial; the owners' values replace them.
   const_cast<Halo&>(mesh.halo).exchange(
-      std::span<double>(reinterpret_cast<double*>(out.data()), components * out.size()),
-      components, HaloMode::insert);
+      std::span<double>(reinterpret_cast<double*>(out.data()), components * out.size()), components,
+      HaloMode::insert);
 }
 
 void finish_field(const LocalMesh& mesh, ScalarField& out) {

@@ -93,9 +93,9 @@ PeriodicMap match_periodic_nodes(const Mesh& mesh, double relative_tolerance) {
     const int master = mesh.patch_index(link.master);
     const int slave = mesh.patch_index(link.slave);
     if (master < 0 || slave < 0)
-      throw std::runtime_error(fmt::format(
-          "{}: periodic pair '{}' -> '{}': patch '{}' does not exist in the mesh", mesh.source,
-          link.master, link.slave, master < 0 ? link.master : link.slave));
+      throw std::runtime_error(
+          fmt::format("{}: periodic pair '{}' -> '{}': patch '{}' does not exist in the mesh",
+                      mesh.source, link.master, link.slave, master < 0 ? link.master : link.slave));
     const auto master_nodes = patch_nodes(mesh, master);
     const auto slave_nodes = patch_nodes(mesh, slave);
     // Bucket size: well above the tolerance, so a match is in the point's bucket or a neighbour.

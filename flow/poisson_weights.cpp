@@ -17,7 +17,8 @@ std::vector<double> poisson_weights(const Mesh& mesh, const DualMetrics& metrics
 
   const auto n = static_cast<std::uint64_t>(metrics.num_nodes());
   auto key = [n](GlobalIndex a, GlobalIndex b) {
-    return static_cast<std::uint64_t>(std::min(a, b)) * n + static_cast<std::uint64_t>(std::max(a, b));
+    return static_cast<std::uint64_t>(std::min(a, b)) * n +
+           static_cast<std::uint64_t>(std::max(a, b));
   };
   std::unordered_map<std::uint64_t, double> weight;
   weight.reserve(local.edges.size());
@@ -37,8 +38,8 @@ std::vector<double> poisson_weights(const Mesh& mesh, const DualMetrics& metrics
     g[0] = -(g[1] + g[2] + g[3]);
     for (int a = 0; a < 4; ++a)
       for (int b = a + 1; b < 4; ++b) {
-        const auto it = weight.find(key(metrics.dual_of_mesh_node[nodes[a]],
-                                        metrics.dual_of_mesh_node[nodes[b]]));
+        const auto it = weight.find(
+            key(metrics.dual_of_mesh_node[nodes[a]], metrics.dual_of_mesh_node[nodes[b]]));
         if (it != weight.end()) it->second -= volume * g[a].dot(g[b]);
       }
   }

@@ -5,7 +5,6 @@
 #include <HYPRE.h>
 #include <HYPRE_parcsr_ls.h>
 #include <_hypre_parcsr_mv.h>  // hypre_ParVectorAxpy (no public HYPRE_ form in 2.26)
-
 #include <fmt/format.h>
 
 #include <map>
@@ -92,10 +91,9 @@ PressurePoisson::PressurePoisson(const LocalMesh& mesh, const std::vector<double
                                 " Laplacian weights for " + std::to_string(mesh.edges.size()) +
                                 " edges");
   if (!(options.tolerance > 0) || options.max_iterations < 1)
-    throw std::invalid_argument("flow::PressurePoisson: tolerance must be > 0 (got " +
-                                std::to_string(options.tolerance) +
-                                ") and max_iterations >= 1 (got " +
-                                std::to_string(options.max_iterations) + ")");
+    throw std::invalid_argument(
+        "flow::PressurePoisson: tolerance must be > 0 (got " + std::to_string(options.tolerance) +
+        ") and max_iterations >= 1 (got " + std::to_string(options.max_iterations) + ")");
   init_hypre_once();
   auto& h = *hypre_;
   const MPI_Comm comm = mesh.comm.get();
@@ -142,8 +140,7 @@ PressurePoisson::PressurePoisson(const LocalMesh& mesh, const std::vector<double
     VALSALVA_HYPRE(HYPRE_IJVectorCreate(comm, lower, upper, v));
     VALSALVA_HYPRE(HYPRE_IJVectorSetObjectType(*v, HYPRE_PARCSR));
     VALSALVA_HYPRE(HYPRE_IJVectorInitialize(*v));
-    VALSALVA_HYPRE(
-        HYPRE_IJVectorSetValues(*v, mesh.num_owned, h.rows.data(), h.values.data()));
+    VALSALVA_HYPRE(HYPRE_IJVectorSetValues(*v, mesh.num_owned, h.rows.data(), h.values.data()));
     VALSALVA_HYPRE(HYPRE_IJVectorAssemble(*v));
   }
   VALSALVA_HYPRE(HYPRE_IJVectorGetObject(h.b, reinterpret_cast<void**>(&h.parb)));
@@ -185,7 +182,8 @@ PressurePoisson::~PressurePoisson() = default;
 
 PoissonResult PressurePoisson::solve(const std::vector<double>& f, std::vector<double>& x) {
   const int n = mesh_.num_owned;
-  if (f.size() < static_cast<std::size_t>(n) || x.size() != static_cast<std::size_t>(mesh_.num_local()))
+  if (f.size() < static_cast<std::size_t>(n) ||
+      x.size() != static_cast<std::size_t>(mesh_.num_local()))
     throw std::invalid_argument("flow::PressurePoisson::solve: right-hand side has " +
                                 std::to_string(f.size()) + " values and the solution " +
                                 std::to_string(x.size()) + ", expected " +

@@ -22,7 +22,7 @@
 namespace valsalva::flow {
 
 struct PoissonOptions {
-  double tolerance = 1e-8;    // relative residual ||b - A x||_2 / ||b||_2
+  double tolerance = 1e-8;  // relative residual ||b - A x||_2 / ||b||_2
   int max_iterations = 200;
   // BoomerAMG settings (hypre's numbering): HMIS coarsening, extended+i interpolation,
   // hybrid symmetric Gauss-Seidel smoothing; 0.5 is hypre's advice for 3D.

@@ -46,8 +46,8 @@ double hashed_uniform(std::uint64_t seed, std::int64_t i, std::int64_t j, std::i
 class BoxBuilder {
  public:
   explicit BoxBuilder(const BoxSpec& spec) : spec_(spec) {
-    mesh_.source = fmt::format("box {}x{}x{} {}", spec.cells[0], spec.cells[1], spec.cells[2],
-                               spec.cell_type);
+    mesh_.source =
+        fmt::format("box {}x{}x{} {}", spec.cells[0], spec.cells[1], spec.cells[2], spec.cell_type);
     mesh_.add_region("fluid");
     for (const char* p : {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"}) mesh_.add_patch(p);
     make_grid_nodes();
@@ -131,7 +131,8 @@ class BoxBuilder {
     if (type == "hexa") {
       mesh_.add_cell(CellType::hexa, c, 0);
     } else if (type == "tetra") {
-      for (const auto& t : kKuhnTets) add_oriented(CellType::tetra, {c[t[0]], c[t[1]], c[t[2]], c[t[3]]});
+      for (const auto& t : kKuhnTets)
+        add_oriented(CellType::tetra, {c[t[0]], c[t[1]], c[t[2]], c[t[3]]});
     } else if (type == "prism") {
       for (const auto& p : kPrisms)
         add_oriented(CellType::prism, {c[p[0]], c[p[1]], c[p[2]], c[p[3]], c[p[4]], c[p[5]]});
@@ -176,8 +177,9 @@ class BoxBuilder {
       std::array<GlobalIndex, 4> k{-1, -1, -1, -1};
       std::copy(nodes.begin(), nodes.end(), k.begin());
       // Insertion sort of at most 4 entries (std::sort trips GCC 12's -Warray-bounds here).
-  for (std::size_t a = 1; a < 4; ++a)
-    for (std::size_t b = a; b > 0 && k[b] >= 0 && (k[b - 1] > k[b]); --b) std::swap(k[b - 1], k[b]);
+      for (std::size_t a = 1; a < 4; ++a)
+        for (std::size_t b = a; b > 0 && k[b] >= 0 && (k[b - 1] > k[b]); --b)
+          std::swap(k[b - 1], k[b]);
       return k;
     };
     std::unordered_map<std::array<GlobalIndex, 4>, int, KeyHash> seen;
@@ -220,9 +222,11 @@ class BoxBuilder {
 flow::Mesh generate_box(const BoxSpec& spec) {
   for (int d = 0; d < 3; ++d) {
     if (spec.cells[d] < 1)
-      throw std::invalid_argument(fmt::format("box mesh: cells[{}] = {} must be >= 1", d, spec.cells[d]));
+      throw std::invalid_argument(
+          fmt::format("box mesh: cells[{}] = {} must be >= 1", d, spec.cells[d]));
     if (!(spec.length[d] > 0))
-      throw std::invalid_argument(fmt::format("box mesh: length[{}] = {} must be > 0", d, spec.length[d]));
+      throw std::invalid_argument(
+          fmt::format("box mesh: length[{}] = {} must be > 0", d, spec.length[d]));
     if (spec.periodic[d] && spec.cells[d] < 3)
       throw std::invalid_argument(fmt::format(
           "box mesh: periodic direction {} needs at least 3 cells, got {}", d, spec.cells[d]));

@@ -40,13 +40,15 @@ std::filesystem::path FieldOutput::write(double time, const std::vector<Scalar>&
   for (std::size_t f = 0; f < scalars.size(); ++f) {
     auto& buf = scalar_buffers_[f];
     buf.resize(local_of_output_node_.size());
-    for (std::size_t i = 0; i < buf.size(); ++i) buf[i] = (*scalars[f].values)[local_of_output_node_[i]];
+    for (std::size_t i = 0; i < buf.size(); ++i)
+      buf[i] = (*scalars[f].values)[local_of_output_node_[i]];
     s.push_back({scalars[f].name, buf});
   }
   for (std::size_t f = 0; f < vectors.size(); ++f) {
     auto& buf = vector_buffers_[f];
     buf.resize(local_of_output_node_.size());
-    for (std::size_t i = 0; i < buf.size(); ++i) buf[i] = (*vectors[f].values)[local_of_output_node_[i]];
+    for (std::size_t i = 0; i < buf.size(); ++i)
+      buf[i] = (*vectors[f].values)[local_of_output_node_[i]];
     v.push_back({vectors[f].name, buf});
   }
   return writer_->write_step(time, s, v);

@@ -21,19 +21,27 @@ std::atomic<bool> session_open{false};
 // Gmsh element type numbers (Gmsh reference manual, "MSH file format").
 std::optional<flow::CellType> cell_type_of(int gmsh_type) {
   switch (gmsh_type) {
-    case 4: return flow::CellType::tetra;
-    case 5: return flow::CellType::hexa;
-    case 6: return flow::CellType::prism;
-    case 7: return flow::CellType::pyramid;
-    default: return std::nullopt;
+    case 4:
+      return flow::CellType::tetra;
+    case 5:
+      return flow::CellType::hexa;
+    case 6:
+      return flow::CellType::prism;
+    case 7:
+      return flow::CellType::pyramid;
+    default:
+      return std::nullopt;
   }
 }
 
 int face_node_count(int gmsh_type) {
   switch (gmsh_type) {
-    case 2: return 3;  // 3-node triangle
-    case 3: return 4;  // 4-node quadrangle
-    default: return 0;
+    case 2:
+      return 3;  // 3-node triangle
+    case 3:
+      return 4;  // 4-node quadrangle
+    default:
+      return 0;
   }
 }
 
@@ -53,8 +61,10 @@ class NodeNumbering {
     dense_ = max_tag <= 4 * tags.size() + 1024;
     if (dense_) index_.assign(max_tag + 1, -1);
     for (std::size_t i = 0; i < tags.size(); ++i) {
-      if (dense_) index_[tags[i]] = static_cast<flow::GlobalIndex>(i);
-      else sparse_[tags[i]] = static_cast<flow::GlobalIndex>(i);
+      if (dense_)
+        index_[tags[i]] = static_cast<flow::GlobalIndex>(i);
+      else
+        sparse_[tags[i]] = static_cast<flow::GlobalIndex>(i);
     }
   }
   flow::GlobalIndex operator()(std::size_t tag) const {
@@ -174,9 +184,9 @@ void add_boundary_faces(flow::Mesh& mesh, const NodeNumbering& number, const std
 void check_complete(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
-    throw MeshFileError(fmt::format("{}: cannot open the mesh file ({})", path.string(),
-                                    std::filesystem::exists(path, ec) ? "not a regular file"
-                                                                      : "no such file"));
+    throw MeshFileError(
+        fmt::format("{}: cannot open the mesh file ({})", path.string(),
+                    std::filesystem::exists(path, ec) ? "not a regular file" : "no such file"));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw MeshFileError(fmt::format("{}: cannot open the mesh file", path.string()));
   in.seekg(0, std::ios::end);
@@ -234,8 +244,9 @@ flow::Mesh read_gmsh(const std::filesystem::path& path) {
   const std::string source = path.string();
   check_complete(path);
   GmshSession session;
-  gmsh_call(source + ": cannot read the file (a syntax error, a truncated section or an element "
-                     "type Gmsh does not know)",
+  gmsh_call(source +
+                ": cannot read the file (a syntax error, a truncated section or an element "
+                "type Gmsh does not know)",
             [&] { gmsh::open(source); });
   return mesh_from_gmsh_model(source);
 }

@@ -1,8 +1,8 @@
 #include "io/mesh_info.hpp"
 
-#include <Eigen/Geometry>
 #include <fmt/format.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -52,8 +52,10 @@ double tet_mean_ratio(const flow::Mesh& mesh, GlobalIndex c) {
 
 double cell_quality(const flow::Mesh& mesh, GlobalIndex c) {
   switch (mesh.cell_types[c]) {
-    case CellType::tetra: return tet_mean_ratio(mesh, c);
-    case CellType::hexa: return min_scaled_jacobian(mesh, c, hex_corners);
+    case CellType::tetra:
+      return tet_mean_ratio(mesh, c);
+    case CellType::hexa:
+      return min_scaled_jacobian(mesh, c, hex_corners);
     case CellType::prism:
       return std::min(1.0, min_scaled_jacobian(mesh, c, prism_corners) / (std::sqrt(3.0) / 2));
     case CellType::pyramid:
@@ -62,7 +64,8 @@ double cell_quality(const flow::Mesh& mesh, GlobalIndex c) {
   return 0;
 }
 
-MeshInfo summarize_mesh(const flow::Mesh& mesh, std::optional<std::span<const double>> dual_volumes) {
+MeshInfo summarize_mesh(const flow::Mesh& mesh,
+                        std::optional<std::span<const double>> dual_volumes) {
   MeshInfo info;
   info.source = mesh.source;
   info.nodes = mesh.num_nodes();
@@ -114,9 +117,10 @@ std::string format_mesh_info(const MeshInfo& info) {
   for (std::size_t t = 0; t < 4; ++t) {
     if (info.cells_of_type[t] == 0) continue;
     const auto& q = info.quality[t];
-    out += fmt::format("  {:<12} {:>10}   quality ({}): min {:.4f} (cell {}), mean {:.4f}, max {:.4f}\n",
-                       flow::name(static_cast<CellType>(t)), info.cells_of_type[t], measure[t],
-                       q.min, q.worst_cell, q.mean, q.max);
+    out += fmt::format(
+        "  {:<12} {:>10}   quality ({}): min {:.4f} (cell {}), mean {:.4f}, max {:.4f}\n",
+        flow::name(static_cast<CellType>(t)), info.cells_of_type[t], measure[t], q.min,
+        q.worst_cell, q.mean, q.max);
   }
   for (const auto& [name, cells] : info.regions)
     out += fmt::format("  region {:<16} {} cells\n", "'" + name + "'", cells);

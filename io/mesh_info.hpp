@@ -38,7 +38,7 @@ struct MeshInfo {
   };
   std::vector<Patch> patches;
   std::vector<std::pair<std::string, flow::GlobalIndex>> regions;  // name, cells
-  double volume = 0;            // sum of cell volumes (sub-tetrahedron decomposition)
+  double volume = 0;  // sum of cell volumes (sub-tetrahedron decomposition)
   double min_cell_volume = 0, max_cell_volume = 0;
   std::optional<double> min_dual_volume, max_dual_volume, dual_volume_sum;
   std::array<QualityStats, 4> quality{};  // indexed by flow::CellType

@@ -60,7 +60,8 @@ flow::Mesh build_mesh(const Scene& scene) {
     link.slave = scene.get<std::string>(prefix + ".slave");
     const auto t = scene.get<std::array<double, 3>>(prefix + ".translation");
     link.translation = Eigen::Vector3d(t[0], t[1], t[2]);
-    for (const auto& [key, patch] : {std::pair{".master", link.master}, std::pair{".slave", link.slave}})
+    for (const auto& [key, patch] :
+         {std::pair{".master", link.master}, std::pair{".slave", link.slave}})
       if (mesh.patch_index(patch) < 0)
         throw scene.error(prefix + key, fmt::format("patch '{}' is not in the mesh", patch),
                           fmt::format("{}", fmt::join(mesh.patch_names, ", ")));

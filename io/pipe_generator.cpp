@@ -16,8 +16,8 @@ flow::Mesh generate_pipe_mesh(double radius, double length, double target_size) 
     if (!(value > 0.0) || !std::isfinite(value))
       throw std::invalid_argument(
           fmt::format("generate_pipe_mesh: {} must be positive and finite, got {}", name, value));
-  const std::string source = fmt::format("pipe(radius={:g}, length={:g}, size={:g})", radius,
-                                         length, target_size);
+  const std::string source =
+      fmt::format("pipe(radius={:g}, length={:g}, size={:g})", radius, length, target_size);
   GmshSession session;
   gmsh_call(source, [&] {
     gmsh::model::add("pipe");
@@ -31,9 +31,12 @@ flow::Mesh generate_pipe_mesh(double radius, double length, double target_size) 
       double x = 0, y = 0, z = 0;
       gmsh::model::occ::getCenterOfMass(dim, tag, x, y, z);
       const double r = std::hypot(x, y);
-      if (r < 1e-9 * radius && std::abs(z) < 1e-9 * length) inlet.push_back(tag);
-      else if (r < 1e-9 * radius && std::abs(z - length) < 1e-9 * length) outlet.push_back(tag);
-      else wall.push_back(tag);
+      if (r < 1e-9 * radius && std::abs(z) < 1e-9 * length)
+        inlet.push_back(tag);
+      else if (r < 1e-9 * radius && std::abs(z - length) < 1e-9 * length)
+        outlet.push_back(tag);
+      else
+        wall.push_back(tag);
     }
     if (inlet.size() != 1 || outlet.size() != 1 || wall.empty())
       throw MeshFileError(source + ": unexpected cylinder surfaces from OpenCASCADE");

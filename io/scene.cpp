@@ -17,15 +17,24 @@ std::string join_lines(const std::vector<std::string>& lines) {
 
 template <class T>
 constexpr KeyType key_type_of() {
-  if constexpr (std::is_same_v<T, bool>) return KeyType::boolean;
-  else if constexpr (std::is_same_v<T, int> || std::is_same_v<T, std::int64_t>) return KeyType::integer;
-  else if constexpr (std::is_same_v<T, double>) return KeyType::real;
-  else if constexpr (std::is_same_v<T, std::string>) return KeyType::string;
-  else if constexpr (std::is_same_v<T, std::array<double, 3>>) return KeyType::real3;
-  else if constexpr (std::is_same_v<T, std::array<int, 3>>) return KeyType::int3;
-  else if constexpr (std::is_same_v<T, std::vector<std::string>>) return KeyType::string_list;
-  else if constexpr (std::is_same_v<T, std::vector<double>>) return KeyType::real_list;
-  else return KeyType::real_table;
+  if constexpr (std::is_same_v<T, bool>)
+    return KeyType::boolean;
+  else if constexpr (std::is_same_v<T, int> || std::is_same_v<T, std::int64_t>)
+    return KeyType::integer;
+  else if constexpr (std::is_same_v<T, double>)
+    return KeyType::real;
+  else if constexpr (std::is_same_v<T, std::string>)
+    return KeyType::string;
+  else if constexpr (std::is_same_v<T, std::array<double, 3>>)
+    return KeyType::real3;
+  else if constexpr (std::is_same_v<T, std::array<int, 3>>)
+    return KeyType::int3;
+  else if constexpr (std::is_same_v<T, std::vector<std::string>>)
+    return KeyType::string_list;
+  else if constexpr (std::is_same_v<T, std::vector<double>>)
+    return KeyType::real_list;
+  else
+    return KeyType::real_table;
 }
 
 }  // namespace
@@ -53,7 +62,9 @@ Location nearest_written(const std::map<std::string, Location>& where, std::stri
 SceneError::SceneError(std::vector<std::string> problems)
     : std::runtime_error(join_lines(problems)), problems_(std::move(problems)) {}
 
-std::string Location::str() const { return fmt::format("{}:{}:{}", file, line, column); }
+std::string Location::str() const {
+  return fmt::format("{}:{}:{}", file, line, column);
+}
 
 std::string format_problem(const Location& at, std::string_view key, std::string_view problem,
                            std::string_view accepted) {
@@ -63,20 +74,24 @@ std::string format_problem(const Location& at, std::string_view key, std::string
 
 Scene::Scene(std::filesystem::path file, toml::table resolved,
              std::map<std::string, Location> where, const Schema& schema)
-    : file_(std::move(file)), table_(std::move(resolved)), where_(std::move(where)), schema_(&schema) {}
+    : file_(std::move(file)),
+      table_(std::move(resolved)),
+      where_(std::move(where)),
+      schema_(&schema) {}
 
 const toml::node& Scene::node(std::string_view key, KeyType expected) const {
   const KeyDecl* decl = schema_->find(key);
   if (!decl) throw std::logic_error(fmt::format("scene key '{}' is not declared", key));
-  const bool same = decl->type == expected ||
-                    (expected == KeyType::string && decl->type == KeyType::choice);
+  const bool same =
+      decl->type == expected || (expected == KeyType::string && decl->type == KeyType::choice);
   if (!same)
     throw std::logic_error(fmt::format("scene key '{}' is declared as {}, read as {}", key,
                                        type_name(decl->type), type_name(expected)));
   const toml::node* n = find_node(table_, key);
   if (!n)
-    throw std::logic_error(fmt::format(
-        "scene key '{}' is not in the scene {} (switched off by a condition?)", key, file_.string()));
+    throw std::logic_error(
+        fmt::format("scene key '{}' is not in the scene {} (switched off by a condition?)", key,
+                    file_.string()));
   return *n;
 }
 
@@ -93,9 +108,11 @@ T Scene::get(std::string_view key) const {
     return {*a[0].value<double>(), *a[1].value<double>(), *a[2].value<double>()};
   } else if constexpr (std::is_same_v<T, std::array<int, 3>>) {
     const auto& a = *n.as_array();
-    return {static_cast<int>(*a[0].value<std::int64_t>()), static_cast<int>(*a[1].value<std::int64_t>()),
+    return {static_cast<int>(*a[0].value<std::int64_t>()),
+            static_cast<int>(*a[1].value<std::int64_t>()),
             static_cast<int>(*a[2].value<std::int64_t>())};
-  } else if constexpr (std::is_same_v<T, std::vector<std::string>> || std::is_same_v<T, std::vector<double>>) {
+  } else if constexpr (std::is_same_v<T, std::vector<std::string>> ||
+                       std::is_same_v<T, std::vector<double>>) {
     T out;
     for (const auto& e : *n.as_array()) out.push_back(*e.template value<typename T::value_type>());
     return out;
@@ -115,11 +132,16 @@ template std::array<double, 3> Scene::get<std::array<double, 3>>(std::string_vie
 template std::array<int, 3> Scene::get<std::array<int, 3>>(std::string_view) const;
 template std::vector<std::string> Scene::get<std::vector<std::string>>(std::string_view) const;
 template std::vector<double> Scene::get<std::vector<double>>(std::string_view) const;
-template std::map<std::string, double> Scene::get<std::map<std::string, double>>(std::string_view) const;
+template std::map<std::string, double> Scene::get<std::map<std::string, double>>(
+    std::string_view) const;
 
-bool Scene::has(std::string_view key) const { return find_node(table_, key) != nullptr; }
+bool Scene::has(std::string_view key) const {
+  return find_node(table_, key) != nullptr;
+}
 
-bool Scene::is_set(std::string_view key) const { return where_.count(std::string(key)) > 0; }
+bool Scene::is_set(std::string_view key) const {
+  return where_.count(std::string(key)) > 0;
+}
 
 std::vector<std::string> Scene::names(std::string_view table) const {
   const toml::node* n = find_node(table_, table);

@@ -3,6 +3,8 @@
 // point at FILE:LINE:COLUMN.
 #pragma once
 
+#include <toml++/toml.h>
+
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -12,8 +14,6 @@
 #include <string_view>
 #include <type_traits>
 #include <vector>
-
-#include <toml++/toml.h>
 
 #include "io/scene_schema.hpp"
 
@@ -45,12 +45,11 @@ std::string format_problem(const Location& at, std::string_view key, std::string
 
 // The C++ types a scene value can be read as, one per KeyType.
 template <class T>
-concept SceneValue =
-    std::is_same_v<T, bool> || std::is_same_v<T, int> || std::is_same_v<T, std::int64_t> ||
-    std::is_same_v<T, double> || std::is_same_v<T, std::string> ||
-    std::is_same_v<T, std::array<double, 3>> || std::is_same_v<T, std::array<int, 3>> ||
-    std::is_same_v<T, std::vector<std::string>> || std::is_same_v<T, std::vector<double>> ||
-    std::is_same_v<T, std::map<std::string, double>>;
+concept SceneValue = std::is_same_v<T, bool> || std::is_same_v<T, int> ||
+    std::is_same_v<T, std::int64_t> || std::is_same_v<T, double> ||
+    std::is_same_v<T, std::string> || std::is_same_v<T, std::array<double, 3>> ||
+    std::is_same_v<T, std::array<int, 3>> || std::is_same_v<T, std::vector<std::string>> ||
+    std::is_same_v<T, std::vector<double>> || std::is_same_v<T, std::map<std::string, double>>;
 
 class Scene {
  public:
@@ -66,8 +65,8 @@ class Scene {
   template <SceneValue T>
   T get(std::string_view key) const;
 
-  bool has(std::string_view key) const;         // present after defaults were filled
-  bool is_set(std::string_view key) const;      // written in the scene file itself
+  bool has(std::string_view key) const;     // present after defaults were filled
+  bool is_set(std::string_view key) const;  // written in the scene file itself
   // Names of the user-named tables below `table`, e.g. names("mesh.periodic") -> {"x", "y"},
   // in the order of the file.
   std::vector<std::string> names(std::string_view table) const;
@@ -78,7 +77,8 @@ class Scene {
   // else line 1 of the file.
   Location location(std::string_view key) const;
   // An error in the scene format for checks done by other modules, e.g.
-  //   throw scene.error("mesh.periodic.x.master", "patch 'left' is not in the mesh", "bottom, top");
+  //   throw scene.error("mesh.periodic.x.master", "patch 'left' is not in the mesh", "bottom,
+  //   top");
   SceneError error(std::string_view key, std::string_view problem,
                    std::string_view accepted = {}) const;
 

@@ -1,11 +1,12 @@
 // Scene keys of the flow solver (flow/projection_rk4, flow/pressure_poisson, flow/run_loop):
 // fluid properties, time stepping, the pressure Poisson solver, the initial state and the
 // field output; and their reader flow_run_options.
+#include "io/scene_keys_flow.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 #include "io/scene_keys.hpp"
-#include "io/scene_keys_flow.hpp"
 
 namespace valsalva::io {
 
@@ -15,7 +16,9 @@ void declare_flow_keys(Schema& s) {
       .def(1100.0)
       .above(0)
       .unit_of("kg/m3")
-      .doc("Fluid density; 1100 is the blood-analogue fluid of the reference pulse-duplicator experiment");
+      .doc(
+          "Fluid density; 1100 is the blood-analogue fluid of the reference pulse-duplicator "
+          "experiment");
   s.real("flow.viscosity")
       .def(3.6e-3)
       .at_least(0)
@@ -24,12 +27,16 @@ void declare_flow_keys(Schema& s) {
   s.choice("flow.scheme", {"central2"})
       .def("central2")
       .unit_of("-")
-      .doc("Convective scheme: 2nd-order centred, kinetic-energy conserving (the 4th-order scheme is not implemented yet)");
+      .doc(
+          "Convective scheme: 2nd-order centred, kinetic-energy conserving (the 4th-order scheme "
+          "is not implemented yet)");
   s.real("flow.velocity_limit")
       .def(50.0)
       .above(0)
       .unit_of("m/s")
-      .doc("A velocity magnitude above this stops the run with a diagnosis (blood flows stay below a few m/s)");
+      .doc(
+          "A velocity magnitude above this stops the run with a diagnosis (blood flows stay below "
+          "a few m/s)");
 
   s.section("time", "Time stepping of the projection + RK4 scheme.");
   s.real("time.end")
@@ -37,11 +44,9 @@ void declare_flow_keys(Schema& s) {
       .at_least(0)
       .unit_of("s")
       .doc("End time; 0 takes no time step (only the initial state is written)");
-  s.real("time.dt")
-      .def(0.0)
-      .at_least(0)
-      .unit_of("s")
-      .doc("Fixed time step, refused beyond the RK4 stability limit; 0 = from time.cfl and time.fourier at every step");
+  s.real("time.dt").def(0.0).at_least(0).unit_of("s").doc(
+      "Fixed time step, refused beyond the RK4 stability limit; 0 = from time.cfl and time.fourier "
+      "at every step");
   s.real("time.cfl")
       .def(0.5)
       .above(0)
@@ -51,7 +56,9 @@ void declare_flow_keys(Schema& s) {
       .def(0.2)
       .above(0)
       .unit_of("-")
-      .doc("Target viscous Fourier number max nu dt / h^2 when time.dt = 0 (nu = viscosity / density)");
+      .doc(
+          "Target viscous Fourier number max nu dt / h^2 when time.dt = 0 (nu = viscosity / "
+          "density)");
   s.integer("time.max_steps")
       .def(0)
       .at_least(0)
@@ -59,7 +66,11 @@ void declare_flow_keys(Schema& s) {
       .doc("Stop after this many steps even before time.end; 0 = no limit");
 
   s.section("poisson", "Pressure Poisson solver: hypre PCG preconditioned by BoomerAMG.");
-  s.real("poisson.tolerance").def(1e-8).above(0).unit_of("-").doc("Relative residual ||b - A x|| / ||b|| to reach");
+  s.real("poisson.tolerance")
+      .def(1e-8)
+      .above(0)
+      .unit_of("-")
+      .doc("Relative residual ||b - A x|| / ||b|| to reach");
   s.integer("poisson.max_iterations")
       .def(200)
       .at_least(1)
@@ -84,24 +95,38 @@ void declare_flow_keys(Schema& s) {
       .def(6)
       .in_range(0, 18)
       .unit_of("-")
-      .doc("BoomerAMG smoother, hypre numbering (6 hybrid symmetric Gauss-Seidel, 3 hybrid Gauss-Seidel)");
+      .doc(
+          "BoomerAMG smoother, hypre numbering (6 hybrid symmetric Gauss-Seidel, 3 hybrid "
+          "Gauss-Seidel)");
   s.integer("poisson.aggressive_levels")
       .def(0)
       .in_range(0, 10)
       .unit_of("-")
       .doc("Levels of aggressive coarsening (cheaper set-up, weaker AMG)");
-  s.integer("poisson.print_level").def(0).in_range(0, 3).unit_of("-").doc("hypre's own diagnostic output (0 = none)");
+  s.integer("poisson.print_level")
+      .def(0)
+      .in_range(0, 3)
+      .unit_of("-")
+      .doc("hypre's own diagnostic output (0 = none)");
 
   s.section("initial", "The state at t = 0.");
   s.choice("initial.type", {"rest", "taylor_green"})
       .def("rest")
       .unit_of("-")
-      .doc("Fluid at rest, or the 2D Taylor-Green vortex ([initial.taylor_green]), whose exact decay gives the run's error");
-  s.section("initial.taylor_green",
-            "u = U0 sin(x/L) cos(y/L) F, v = -U0 cos(x/L) sin(y/L) F, w = 0, p = rho U0^2/4 (cos 2x/L + cos 2y/L) F^2, "
-            "F = exp(-2 nu t / L^2), Re = U0 L / nu; exact on a periodic box of side 2 pi L in x and y.");
+      .doc(
+          "Fluid at rest, or the 2D Taylor-Green vortex ([initial.taylor_green]), whose exact "
+          "decay gives the run's error");
+  s.section(
+      "initial.taylor_green",
+      "u = U0 sin(x/L) cos(y/L) F, v = -U0 cos(x/L) sin(y/L) F, w = 0, p = rho U0^2/4 (cos 2x/L + "
+      "cos 2y/L) F^2, "
+      "F = exp(-2 nu t / L^2), Re = U0 L / nu; exact on a periodic box of side 2 pi L in x and y.");
   s.when("initial.taylor_green", "initial.type", {"taylor_green"});
-  s.real("initial.taylor_green.velocity").required().above(0).unit_of("m/s").doc("Velocity amplitude U0");
+  s.real("initial.taylor_green.velocity")
+      .required()
+      .above(0)
+      .unit_of("m/s")
+      .doc("Velocity amplitude U0");
   s.real("initial.taylor_green.length")
       .required()
       .above(0)
@@ -163,7 +188,9 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
     throw scene.error("output.interval", "a step interval must be a whole number of steps",
                       "0, 1, 2, ...");
   const auto fields = scene.get<std::vector<std::string>>("output.fields");
-  auto wants = [&](const char* f) { return std::find(fields.begin(), fields.end(), f) != fields.end(); };
+  auto wants = [&](const char* f) {
+    return std::find(fields.begin(), fields.end(), f) != fields.end();
+  };
   out.velocity = wants("velocity");
   out.pressure = wants("pressure");
   out.vorticity = wants("vorticity");

@@ -9,7 +9,9 @@ void declare_mesh_keys(Schema& s) {
   s.choice("mesh.source", {"box", "gmsh", "pipe"})
       .required()
       .unit_of("-")
-      .doc("Built-in box generator ([mesh.box]), a Gmsh .msh file (mesh.file), or a Gmsh-API pipe ([mesh.pipe])");
+      .doc(
+          "Built-in box generator ([mesh.box]), a Gmsh .msh file (mesh.file), or a Gmsh-API pipe "
+          "([mesh.pipe])");
   s.string("mesh.file")
       .required()
       .unit_of("-")
@@ -23,13 +25,26 @@ void declare_mesh_keys(Schema& s) {
 
   s.section("mesh.box", "Box generator: hexahedra, optionally split into other cell types.");
   s.when("mesh.box", "mesh.source", {"box"});
-  s.real3("mesh.box.origin").def(std::array{0.0, 0.0, 0.0}).unit_of("m").doc("Corner with the smallest coordinates");
-  s.real3("mesh.box.length").def(std::array{1.0, 1.0, 1.0}).above(0).unit_of("m").doc("Edge lengths along x, y, z");
-  s.int3("mesh.box.cells").def(std::array{8, 8, 8}).at_least(1).unit_of("-").doc("Number of hexahedral cells along x, y, z");
+  s.real3("mesh.box.origin")
+      .def(std::array{0.0, 0.0, 0.0})
+      .unit_of("m")
+      .doc("Corner with the smallest coordinates");
+  s.real3("mesh.box.length")
+      .def(std::array{1.0, 1.0, 1.0})
+      .above(0)
+      .unit_of("m")
+      .doc("Edge lengths along x, y, z");
+  s.int3("mesh.box.cells")
+      .def(std::array{8, 8, 8})
+      .at_least(1)
+      .unit_of("-")
+      .doc("Number of hexahedral cells along x, y, z");
   s.choice("mesh.box.cell_type", {"hexa", "tetra", "prism", "pyramid", "mixed"})
       .def("hexa")
       .unit_of("-")
-      .doc("Keep hexahedra or split them into tetrahedra, prisms or pyramids; mixed combines several types");
+      .doc(
+          "Keep hexahedra or split them into tetrahedra, prisms or pyramids; mixed combines "
+          "several types");
   s.real("mesh.box.perturbation")
       .def(0.0)
       .in_range(0, 0.4)
@@ -49,9 +64,16 @@ void declare_mesh_keys(Schema& s) {
   s.real("mesh.pipe.size").required().above(0).unit_of("m").doc("Target tetrahedron edge length");
 
   s.section("mesh.periodic.<pair>",
-            "Periodic patch pair (any table name): every node of `slave` sits at a node of `master` + translation.");
-  s.string("mesh.periodic.<pair>.master").required().unit_of("-").doc("Name of the master boundary patch");
-  s.string("mesh.periodic.<pair>.slave").required().unit_of("-").doc("Name of the slave boundary patch");
+            "Periodic patch pair (any table name): every node of `slave` sits at a node of "
+            "`master` + translation.");
+  s.string("mesh.periodic.<pair>.master")
+      .required()
+      .unit_of("-")
+      .doc("Name of the master boundary patch");
+  s.string("mesh.periodic.<pair>.slave")
+      .required()
+      .unit_of("-")
+      .doc("Name of the slave boundary patch");
   s.real3("mesh.periodic.<pair>.translation")
       .required()
       .unit_of("m")

@@ -9,7 +9,9 @@ void declare_partition_keys(Schema& s) {
       .def(2)
       .in_range(1, 4)
       .unit_of("-")
-      .doc("Depth of the ghost-node layers around each rank (the 4th-order scheme and IBM kernels need 2)");
+      .doc(
+          "Depth of the ghost-node layers around each rank (the 4th-order scheme and IBM kernels "
+          "need 2)");
   s.choice("partition.method", {"metis", "block"})
       .def("metis")
       .unit_of("-")

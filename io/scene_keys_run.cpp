@@ -9,11 +9,15 @@ void declare_run_keys(Schema& s) {
       .def("")
       .note("\"runs/<scene file stem>\"")
       .unit_of("-")
-      .doc("Run directory for all results; empty means runs/<scene file stem> (see io/run_directory.hpp)");
+      .doc(
+          "Run directory for all results; empty means runs/<scene file stem> (see "
+          "io/run_directory.hpp)");
   s.boolean("run.overwrite")
       .def(false)
       .unit_of("-")
-      .doc("Allow reusing a non-empty run directory (same as --overwrite); its old contents are deleted");
+      .doc(
+          "Allow reusing a non-empty run directory (same as --overwrite); its old contents are "
+          "deleted");
   s.integer("run.log_every")
       .def(10)
       .at_least(1)

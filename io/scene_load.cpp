@@ -20,28 +20,44 @@ std::string join(std::string_view a, std::string_view b) {
 
 std::string what_it_is(const toml::node& v) {
   switch (v.type()) {
-    case toml::node_type::string: return fmt::format("the string \"{}\"", *v.value<std::string>());
-    case toml::node_type::integer: return fmt::format("the integer {}", *v.value<std::int64_t>());
-    case toml::node_type::floating_point: return fmt::format("the float {}", *v.value<double>());
-    case toml::node_type::boolean: return *v.value<bool>() ? "true" : "false";
-    case toml::node_type::table: return "a table";
-    case toml::node_type::array: return fmt::format("an array of {}", v.as_array()->size());
-    default: return "a date/time";
+    case toml::node_type::string:
+      return fmt::format("the string \"{}\"", *v.value<std::string>());
+    case toml::node_type::integer:
+      return fmt::format("the integer {}", *v.value<std::int64_t>());
+    case toml::node_type::floating_point:
+      return fmt::format("the float {}", *v.value<double>());
+    case toml::node_type::boolean:
+      return *v.value<bool>() ? "true" : "false";
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::array:
+      return fmt::format("an array of {}", v.as_array()->size());
+    default:
+      return "a date/time";
   }
 }
 
 std::string expected_phrase(KeyType type) {
   switch (type) {
-    case KeyType::boolean: return "true or false";
-    case KeyType::integer: return "an integer";
-    case KeyType::real: return "a number";
+    case KeyType::boolean:
+      return "true or false";
+    case KeyType::integer:
+      return "an integer";
+    case KeyType::real:
+      return "a number";
     case KeyType::string:
-    case KeyType::choice: return "a string";
-    case KeyType::real3: return "an array of 3 numbers";
-    case KeyType::int3: return "an array of 3 integers";
-    case KeyType::string_list: return "an array of strings";
-    case KeyType::real_list: return "an array of numbers";
-    case KeyType::real_table: return "a table of numbers";
+    case KeyType::choice:
+      return "a string";
+    case KeyType::real3:
+      return "an array of 3 numbers";
+    case KeyType::int3:
+      return "an array of 3 integers";
+    case KeyType::string_list:
+      return "an array of strings";
+    case KeyType::real_list:
+      return "an array of numbers";
+    case KeyType::real_table:
+      return "a table of numbers";
   }
   return "?";
 }
@@ -151,8 +167,7 @@ void Loader::unknown(const toml::node& v, const std::string& pattern, const std:
   const std::string what = v.is_table() ? "unknown table" : "unknown key";
   problem(where.at(join(concrete, name)), join(concrete, name),
           hint.empty() ? what : fmt::format("{}; did you mean '{}'?", what, hint),
-          fmt::format("{}{}", concrete.empty() ? "sections " : "keys ",
-                      fmt::join(siblings, ", ")));
+          fmt::format("{}{}", concrete.empty() ? "sections " : "keys ", fmt::join(siblings, ", ")));
 }
 
 bool Loader::number(const KeyDecl& decl, const toml::node& v, const std::string& key, bool integer,
@@ -195,7 +210,8 @@ void Loader::leaf(const KeyDecl& decl, const toml::node& v, const std::string& k
       if (!v.is_boolean()) return wrong_type();
       return insert(key, toml::value<bool>(*v.value<bool>()));
     case KeyType::integer:
-      if (number(decl, v, key, true, "value", x)) insert(key, toml::value<std::int64_t>(std::int64_t(x)));
+      if (number(decl, v, key, true, "value", x))
+        insert(key, toml::value<std::int64_t>(std::int64_t(x)));
       return;
     case KeyType::real:
       if (number(decl, v, key, false, "value", x)) insert(key, toml::value<double>(x));
@@ -222,7 +238,8 @@ void Loader::leaf(const KeyDecl& decl, const toml::node& v, const std::string& k
       const auto& in = *v.as_array();
       const bool fixed = decl.type != KeyType::real_list;
       if (fixed ? in.size() != 3 : in.size() < decl.min_size) {
-        problem(loc, key, fmt::format("expected {}, got {} values", expected_phrase(decl.type), in.size()),
+        problem(loc, key,
+                fmt::format("expected {}, got {} values", expected_phrase(decl.type), in.size()),
                 accepted);
         return;
       }
@@ -246,7 +263,8 @@ void Loader::leaf(const KeyDecl& decl, const toml::node& v, const std::string& k
       if (!v.is_array()) return wrong_type();
       const auto& in = *v.as_array();
       if (in.size() < decl.min_size) {
-        problem(loc, key, fmt::format("expected at least {} strings, got {}", decl.min_size, in.size()),
+        problem(loc, key,
+                fmt::format("expected at least {} strings, got {}", decl.min_size, in.size()),
                 accepted);
         return;
       }
@@ -255,7 +273,8 @@ void Loader::leaf(const KeyDecl& decl, const toml::node& v, const std::string& k
       for (std::size_t i = 0; i < in.size(); ++i) {
         const Location eloc = at(in[i].source());
         if (!in[i].is_string()) {
-          problem(eloc, key, fmt::format("element {}: expected a string, got {}", i + 1, what_it_is(in[i])),
+          problem(eloc, key,
+                  fmt::format("element {}: expected a string, got {}", i + 1, what_it_is(in[i])),
                   accepted);
           return;
         }
@@ -293,14 +312,16 @@ void Loader::leaf(const KeyDecl& decl, const toml::node& v, const std::string& k
 
 toml::table& Loader::table_at(const std::vector<std::string>& segments, std::size_t count) {
   toml::table* t = &out;
-  for (std::size_t i = 0; i < count; ++i) t = t->emplace<toml::table>(segments[i]).first->second.as_table();
+  for (std::size_t i = 0; i < count; ++i)
+    t = t->emplace<toml::table>(segments[i]).first->second.as_table();
   return *t;
 }
 
 template <class Node>
 void Loader::insert(const std::string& concrete, Node&& node) {
   const auto segments = split_path(concrete);
-  table_at(segments, segments.size() - 1).insert_or_assign(segments.back(), std::forward<Node>(node));
+  table_at(segments, segments.size() - 1)
+      .insert_or_assign(segments.back(), std::forward<Node>(node));
 }
 
 const toml::node* Loader::lookup(const std::string& concrete) const {
@@ -311,7 +332,8 @@ const toml::node* Loader::lookup(const std::string& concrete) const {
 std::vector<std::string> Loader::expand(const std::string& pattern) const {
   const auto segments = split_path(pattern);
   std::vector<std::string> paths;
-  auto rec = [&](auto&& self, std::size_t i, const toml::table* t, const std::string& prefix) -> void {
+  auto rec = [&](auto&& self, std::size_t i, const toml::table* t,
+                 const std::string& prefix) -> void {
     if (i + 1 == segments.size()) {
       paths.push_back(join(prefix, segments[i]));
       return;

@@ -28,35 +28,75 @@ const Schema& scene_schema() {
 
 // ---- KeyDecl setters ---------------------------------------------------------------------------
 
-KeyDecl& KeyDecl::def(bool v) { return fallback = v, *this; }
-KeyDecl& KeyDecl::def(int v) { return fallback = std::int64_t{v}, *this; }
-KeyDecl& KeyDecl::def(std::int64_t v) { return fallback = v, *this; }
-KeyDecl& KeyDecl::def(double v) { return fallback = v, *this; }
-KeyDecl& KeyDecl::def(const char* v) { return fallback = std::string(v), *this; }
-KeyDecl& KeyDecl::def(std::string v) { return fallback = std::move(v), *this; }
-KeyDecl& KeyDecl::def(std::array<double, 3> v) { return fallback = v, *this; }
+KeyDecl& KeyDecl::def(bool v) {
+  return fallback = v, *this;
+}
+KeyDecl& KeyDecl::def(int v) {
+  return fallback = std::int64_t{v}, *this;
+}
+KeyDecl& KeyDecl::def(std::int64_t v) {
+  return fallback = v, *this;
+}
+KeyDecl& KeyDecl::def(double v) {
+  return fallback = v, *this;
+}
+KeyDecl& KeyDecl::def(const char* v) {
+  return fallback = std::string(v), *this;
+}
+KeyDecl& KeyDecl::def(std::string v) {
+  return fallback = std::move(v), *this;
+}
+KeyDecl& KeyDecl::def(std::array<double, 3> v) {
+  return fallback = v, *this;
+}
 KeyDecl& KeyDecl::def(std::array<int, 3> v) {
   fallback = std::array<std::int64_t, 3>{v[0], v[1], v[2]};
   return *this;
 }
-KeyDecl& KeyDecl::def(std::vector<std::string> v) { return fallback = std::move(v), *this; }
-KeyDecl& KeyDecl::def(std::vector<double> v) { return fallback = std::move(v), *this; }
-KeyDecl& KeyDecl::def(std::map<std::string, double> v) { return fallback = std::move(v), *this; }
-KeyDecl& KeyDecl::required() { return is_required = true, *this; }
-KeyDecl& KeyDecl::note(std::string v) { return default_note = std::move(v), *this; }
-KeyDecl& KeyDecl::unit_of(std::string v) { return unit = std::move(v), *this; }
-KeyDecl& KeyDecl::doc(std::string v) { return text = std::move(v), *this; }
-KeyDecl& KeyDecl::values(std::vector<std::string> v) { return choices = std::move(v), *this; }
-KeyDecl& KeyDecl::at_least(double v) { return lower = Bound{v, true}, *this; }
-KeyDecl& KeyDecl::above(double v) { return lower = Bound{v, false}, *this; }
-KeyDecl& KeyDecl::at_most(double v) { return upper = Bound{v, true}, *this; }
-KeyDecl& KeyDecl::below(double v) { return upper = Bound{v, false}, *this; }
+KeyDecl& KeyDecl::def(std::vector<std::string> v) {
+  return fallback = std::move(v), *this;
+}
+KeyDecl& KeyDecl::def(std::vector<double> v) {
+  return fallback = std::move(v), *this;
+}
+KeyDecl& KeyDecl::def(std::map<std::string, double> v) {
+  return fallback = std::move(v), *this;
+}
+KeyDecl& KeyDecl::required() {
+  return is_required = true, *this;
+}
+KeyDecl& KeyDecl::note(std::string v) {
+  return default_note = std::move(v), *this;
+}
+KeyDecl& KeyDecl::unit_of(std::string v) {
+  return unit = std::move(v), *this;
+}
+KeyDecl& KeyDecl::doc(std::string v) {
+  return text = std::move(v), *this;
+}
+KeyDecl& KeyDecl::values(std::vector<std::string> v) {
+  return choices = std::move(v), *this;
+}
+KeyDecl& KeyDecl::at_least(double v) {
+  return lower = Bound{v, true}, *this;
+}
+KeyDecl& KeyDecl::above(double v) {
+  return lower = Bound{v, false}, *this;
+}
+KeyDecl& KeyDecl::at_most(double v) {
+  return upper = Bound{v, true}, *this;
+}
+KeyDecl& KeyDecl::below(double v) {
+  return upper = Bound{v, false}, *this;
+}
 KeyDecl& KeyDecl::in_range(double lo, double hi) {
   lower = Bound{lo, true};
   upper = Bound{hi, true};
   return *this;
 }
-KeyDecl& KeyDecl::at_least_size(std::size_t n) { return min_size = n, *this; }
+KeyDecl& KeyDecl::at_least_size(std::size_t n) {
+  return min_size = n, *this;
+}
 
 // ---- paths --------------------------------------------------------------------------------------
 
@@ -121,19 +161,33 @@ KeyDecl& Schema::add(std::string path, KeyType type) {
   return keys_.back();
 }
 
-KeyDecl& Schema::boolean(std::string path) { return add(std::move(path), KeyType::boolean); }
-KeyDecl& Schema::integer(std::string path) { return add(std::move(path), KeyType::integer); }
-KeyDecl& Schema::real(std::string path) { return add(std::move(path), KeyType::real); }
-KeyDecl& Schema::string(std::string path) { return add(std::move(path), KeyType::string); }
+KeyDecl& Schema::boolean(std::string path) {
+  return add(std::move(path), KeyType::boolean);
+}
+KeyDecl& Schema::integer(std::string path) {
+  return add(std::move(path), KeyType::integer);
+}
+KeyDecl& Schema::real(std::string path) {
+  return add(std::move(path), KeyType::real);
+}
+KeyDecl& Schema::string(std::string path) {
+  return add(std::move(path), KeyType::string);
+}
 KeyDecl& Schema::choice(std::string path, std::vector<std::string> values) {
   return add(std::move(path), KeyType::choice).values(std::move(values));
 }
-KeyDecl& Schema::real3(std::string path) { return add(std::move(path), KeyType::real3); }
-KeyDecl& Schema::int3(std::string path) { return add(std::move(path), KeyType::int3); }
+KeyDecl& Schema::real3(std::string path) {
+  return add(std::move(path), KeyType::real3);
+}
+KeyDecl& Schema::int3(std::string path) {
+  return add(std::move(path), KeyType::int3);
+}
 KeyDecl& Schema::string_list(std::string path) {
   return add(std::move(path), KeyType::string_list);
 }
-KeyDecl& Schema::real_list(std::string path) { return add(std::move(path), KeyType::real_list); }
+KeyDecl& Schema::real_list(std::string path) {
+  return add(std::move(path), KeyType::real_list);
+}
 KeyDecl& Schema::real_table(std::string path) {
   return add(std::move(path), KeyType::real_table);
 }
@@ -163,7 +217,8 @@ const SectionDecl* Schema::find_section(std::string_view concrete) const {
 }
 
 bool Schema::is_key(std::string_view pattern) const {
-  return std::any_of(keys_.begin(), keys_.end(), [&](const KeyDecl& k) { return k.pattern == pattern; });
+  return std::any_of(keys_.begin(), keys_.end(),
+                     [&](const KeyDecl& k) { return k.pattern == pattern; });
 }
 
 bool Schema::is_table(std::string_view pattern) const {
@@ -195,16 +250,25 @@ std::vector<const Condition*> Schema::conditions_for(std::string_view pattern) c
 
 static bool value_has_type(const KeyValue& v, KeyType type) {
   switch (type) {
-    case KeyType::boolean: return std::holds_alternative<bool>(v);
-    case KeyType::integer: return std::holds_alternative<std::int64_t>(v);
-    case KeyType::real: return std::holds_alternative<double>(v);
+    case KeyType::boolean:
+      return std::holds_alternative<bool>(v);
+    case KeyType::integer:
+      return std::holds_alternative<std::int64_t>(v);
+    case KeyType::real:
+      return std::holds_alternative<double>(v);
     case KeyType::string:
-    case KeyType::choice: return std::holds_alternative<std::string>(v);
-    case KeyType::real3: return std::holds_alternative<std::array<double, 3>>(v);
-    case KeyType::int3: return std::holds_alternative<std::array<std::int64_t, 3>>(v);
-    case KeyType::string_list: return std::holds_alternative<std::vector<std::string>>(v);
-    case KeyType::real_list: return std::holds_alternative<std::vector<double>>(v);
-    case KeyType::real_table: return std::holds_alternative<std::map<std::string, double>>(v);
+    case KeyType::choice:
+      return std::holds_alternative<std::string>(v);
+    case KeyType::real3:
+      return std::holds_alternative<std::array<double, 3>>(v);
+    case KeyType::int3:
+      return std::holds_alternative<std::array<std::int64_t, 3>>(v);
+    case KeyType::string_list:
+      return std::holds_alternative<std::vector<std::string>>(v);
+    case KeyType::real_list:
+      return std::holds_alternative<std::vector<double>>(v);
+    case KeyType::real_table:
+      return std::holds_alternative<std::map<std::string, double>>(v);
   }
   return false;
 }
@@ -220,17 +284,22 @@ bool within_bounds(const KeyDecl& key, double x) {
 static bool default_is_accepted(const KeyDecl& key) {
   const KeyValue& v = *key.fallback;
   auto ok_all = [&](const auto& range) {
-    return std::all_of(range.begin(), range.end(), [&](auto x) { return within_bounds(key, double(x)); });
+    return std::all_of(range.begin(), range.end(),
+                       [&](auto x) { return within_bounds(key, double(x)); });
   };
   auto chosen = [&](const std::string& s) {
     return key.choices.empty() ||
            std::find(key.choices.begin(), key.choices.end(), s) != key.choices.end();
   };
   switch (key.type) {
-    case KeyType::integer: return within_bounds(key, double(std::get<std::int64_t>(v)));
-    case KeyType::real: return within_bounds(key, std::get<double>(v));
-    case KeyType::real3: return ok_all(std::get<std::array<double, 3>>(v));
-    case KeyType::int3: return ok_all(std::get<std::array<std::int64_t, 3>>(v));
+    case KeyType::integer:
+      return within_bounds(key, double(std::get<std::int64_t>(v)));
+    case KeyType::real:
+      return within_bounds(key, std::get<double>(v));
+    case KeyType::real3:
+      return ok_all(std::get<std::array<double, 3>>(v));
+    case KeyType::int3:
+      return ok_all(std::get<std::array<std::int64_t, 3>>(v));
     case KeyType::real_list: {
       const auto& list = std::get<std::vector<double>>(v);
       return list.size() >= key.min_size && ok_all(list);
@@ -239,12 +308,14 @@ static bool default_is_accepted(const KeyDecl& key) {
       return std::all_of(std::get<std::map<std::string, double>>(v).begin(),
                          std::get<std::map<std::string, double>>(v).end(),
                          [&](const auto& kv) { return within_bounds(key, kv.second); });
-    case KeyType::choice: return chosen(std::get<std::string>(v));
+    case KeyType::choice:
+      return chosen(std::get<std::string>(v));
     case KeyType::string_list: {
       const auto& list = std::get<std::vector<std::string>>(v);
       return list.size() >= key.min_size && std::all_of(list.begin(), list.end(), chosen);
     }
-    default: return true;
+    default:
+      return true;
   }
 }
 
@@ -288,16 +359,26 @@ void Schema::check() const {
 
 std::string type_name(KeyType type) {
   switch (type) {
-    case KeyType::boolean: return "bool";
-    case KeyType::integer: return "int";
-    case KeyType::real: return "float";
-    case KeyType::string: return "string";
-    case KeyType::choice: return "enum";
-    case KeyType::real3: return "float[3]";
-    case KeyType::int3: return "int[3]";
-    case KeyType::string_list: return "string[]";
-    case KeyType::real_list: return "float[]";
-    case KeyType::real_table: return "table of floats";
+    case KeyType::boolean:
+      return "bool";
+    case KeyType::integer:
+      return "int";
+    case KeyType::real:
+      return "float";
+    case KeyType::string:
+      return "string";
+    case KeyType::choice:
+      return "enum";
+    case KeyType::real3:
+      return "float[3]";
+    case KeyType::int3:
+      return "int[3]";
+    case KeyType::string_list:
+      return "string[]";
+    case KeyType::real_list:
+      return "float[]";
+    case KeyType::real_table:
+      return "table of floats";
   }
   return "?";
 }
@@ -343,18 +424,26 @@ std::string accepted_values(const KeyDecl& key) {
     return a.empty() ? b : b.empty() ? a : a + ", " + b;
   };
   switch (key.type) {
-    case KeyType::boolean: return "true, false";
-    case KeyType::string: return "any string";
-    case KeyType::choice: return quoted_list(key.choices);
+    case KeyType::boolean:
+      return "true, false";
+    case KeyType::string:
+      return "any string";
+    case KeyType::choice:
+      return quoted_list(key.choices);
     case KeyType::string_list:
-      return join(size, key.choices.empty() ? "any strings"
-                                            : "each of " + quoted_list(key.choices) + ", no repeats");
+      return join(size, key.choices.empty()
+                            ? "any strings"
+                            : "each of " + quoted_list(key.choices) + ", no repeats");
     case KeyType::integer:
-    case KeyType::real: return range.empty() ? "any" : range;
+    case KeyType::real:
+      return range.empty() ? "any" : range;
     case KeyType::real3:
-    case KeyType::int3: return range.empty() ? "3 values" : "3 values, each " + range;
-    case KeyType::real_table: return range.empty() ? "any" : "each " + range;
-    case KeyType::real_list: return join(size, range.empty() ? "any" : "each " + range);
+    case KeyType::int3:
+      return range.empty() ? "3 values" : "3 values, each " + range;
+    case KeyType::real_table:
+      return range.empty() ? "any" : "each " + range;
+    case KeyType::real_list:
+      return join(size, range.empty() ? "any" : "each " + range);
   }
   return "";
 }

@@ -51,7 +51,7 @@ struct KeyDecl {
   std::string default_note;  // replaces the literal default in docs, e.g. "runs/<scene stem>"
   std::string unit;          // SI unit or "-"
   std::string text;          // one-line doc
-  std::vector<std::string> choices;  // choice: accepted values; string_list: accepted elements
+  std::vector<std::string> choices;   // choice: accepted values; string_list: accepted elements
   std::optional<Bound> lower, upper;  // numbers, element-wise for arrays and tables
   std::size_t min_size = 0;           // real_list / string_list
 
@@ -147,9 +147,9 @@ std::vector<std::string> split_path(std::string_view path);
 bool is_wildcard(std::string_view segment);
 bool pattern_matches(std::string_view pattern, std::string_view concrete);
 bool within_bounds(const KeyDecl& key, double x);  // lower/upper bounds of the key
-std::string type_name(KeyType type);                   // "float", "int[3]", ...
-std::string accepted_values(const KeyDecl& key);        // "> 0", "\"box\", \"gmsh\"", "any"
-std::string format_value(const KeyValue& value);        // TOML literal: 1.0, "hexa", [1, 2, 3]
+std::string type_name(KeyType type);               // "float", "int[3]", ...
+std::string accepted_values(const KeyDecl& key);   // "> 0", "\"box\", \"gmsh\"", "any"
+std::string format_value(const KeyValue& value);   // TOML literal: 1.0, "hexa", [1, 2, 3]
 std::size_t edit_distance(std::string_view a, std::string_view b);
 
 }  // namespace valsalva::io

@@ -1,13 +1,12 @@
 #include "io/solid_gmsh_reader.hpp"
 
+#include <fmt/format.h>
 #include <gmsh.h>
 
 #include <algorithm>
 #include <array>
 #include <map>
 #include <unordered_map>
-
-#include <fmt/format.h>
 
 #include "io/gmsh_reader.hpp"
 
@@ -46,20 +45,26 @@ structure::SolidMesh solid_mesh_from_gmsh_model(const std::string& source) {
         int dim = 0, order = 0, nn = 0, np = 0;
         std::vector<double> local;
         gmsh::model::mesh::getElementProperties(types[t], name, dim, order, nn, local, np);
-        throw MeshFileError(fmt::format("{}: element {} is a {} (Gmsh type {}); solid meshes take only 8-node or "
-                                        "27-node hexahedra", source, tags[t].front(), name, types[t]));
+        throw MeshFileError(
+            fmt::format("{}: element {} is a {} (Gmsh type {}); solid meshes take only 8-node or "
+                        "27-node hexahedra",
+                        source, tags[t].front(), name, types[t]));
       }
       if (hex_type && hex_type != types[t])
-        throw MeshFileError(fmt::format("{}: mixes 8-node and 27-node hexahedra (element {})", source, tags[t].front()));
+        throw MeshFileError(fmt::format("{}: mixes 8-node and 27-node hexahedra (element {})",
+                                        source, tags[t].front()));
       hex_type = types[t];
     }
-    if (!hex_type) throw MeshFileError(fmt::format("{}: no hexahedra (no 3D mesh, or it is not recombined)", source));
+    if (!hex_type)
+      throw MeshFileError(
+          fmt::format("{}: no hexahedra (no 3D mesh, or it is not recombined)", source));
     mesh.order = hex_type == 5 ? HexOrder::q1 : HexOrder::q2;
     const int nen = mesh.nodes_per_element();
 
     // Nodes used by hexahedra, renumbered in tag order.
     std::vector<std::size_t> used;
-    for (std::size_t t = 0; t < types.size(); ++t) used.insert(used.end(), nodes[t].begin(), nodes[t].end());
+    for (std::size_t t = 0; t < types.size(); ++t)
+      used.insert(used.end(), nodes[t].begin(), nodes[t].end());
     std::sort(used.begin(), used.end());
     used.erase(std::unique(used.begin(), used.end()), used.end());
     std::unordered_map<std::size_t, int> index;
@@ -70,7 +75,8 @@ structure::SolidMesh solid_mesh_from_gmsh_model(const std::string& source) {
     gmsh::model::mesh::getNodes(ntags, coords, param);
     for (std::size_t i = 0; i < ntags.size(); ++i)
       if (auto it = index.find(ntags[i]); it != index.end())
-        mesh.X.col(it->second) = structure::Vec3(coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]);
+        mesh.X.col(it->second) =
+            structure::Vec3(coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]);
 
     std::map<Key, structure::FaceRef> face_of;
     for (std::size_t t = 0; t < types.size(); ++t)
@@ -110,8 +116,10 @@ structure::SolidMesh solid_mesh_from_gmsh_model(const std::string& source) {
             const std::size_t* qn = snodes[t].data() + q * stride;
             auto it = face_of.find(sorted({qn[0], qn[1], qn[2], qn[3]}));
             if (it == face_of.end())
-              throw MeshFileError(fmt::format("{}: quadrangle {} of physical surface '{}' is not a face of any "
-                                              "hexahedron", source, stags[t][q], name));
+              throw MeshFileError(
+                  fmt::format("{}: quadrangle {} of physical surface '{}' is not a face of any "
+                              "hexahedron",
+                              source, stags[t][q], name));
             mesh.surface_sets[name].push_back(it->second);
           }
         }
@@ -126,7 +134,8 @@ structure::SolidMesh read_solid_gmsh(const std::filesystem::path& path) {
   const std::string source = path.string();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
-    throw MeshFileError(fmt::format("{}: not a readable mesh file (missing, a directory or a special file)", source));
+    throw MeshFileError(fmt::format(
+        "{}: not a readable mesh file (missing, a directory or a special file)", source));
   GmshSession session;
   gmsh_call(source + ": cannot read the file", [&] { gmsh::open(source); });
   return solid_mesh_from_gmsh_model(source);

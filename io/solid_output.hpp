@@ -13,11 +13,10 @@
 // <dir>/<basename>.xmf: one uniform grid with those attributes, geometry = current positions.
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <filesystem>
 #include <string>
-
-#include <Eigen/Core>
 
 #include "structure/solid_mesh.hpp"
 #include "structure/stress_recovery.hpp"
@@ -29,8 +28,10 @@ const std::array<int, 27>& hex27_vtk_to_gmsh();
 
 // Writes both files; returns the path of the .xmf. `stress` may be null (geometry and
 // displacement only). Throws with the file name on any I/O failure.
-std::filesystem::path write_solid_results(const std::filesystem::path& dir, const std::string& basename,
-                                          const structure::SolidMesh& mesh, const Eigen::Matrix3Xd& x,
+std::filesystem::path write_solid_results(const std::filesystem::path& dir,
+                                          const std::string& basename,
+                                          const structure::SolidMesh& mesh,
+                                          const Eigen::Matrix3Xd& x,
                                           const structure::NodalStress* stress);
 
 }  // namespace valsalva::io

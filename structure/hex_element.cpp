@@ -1,9 +1,9 @@
 #include "structure/hex_element.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace valsalva::structure {
 
@@ -12,13 +12,13 @@ namespace {
 // Gmsh reference coordinates of the 27-node hexahedron (vertices 0..7 are the Q1 element,
 // edges 8..19, faces 20..25, centre 26).
 constexpr int kNodes[27][3] = {
-    {-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},  // vertices, bottom
-    {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1},   // vertices, top
-    {0, -1, -1},  {-1, 0, -1}, {-1, -1, 0}, {1, 0, -1},  // edges 0-1, 0-3, 0-4, 1-2
-    {1, -1, 0},   {0, 1, -1},  {1, 1, 0},   {-1, 1, 0},  // edges 1-5, 2-3, 2-6, 3-7
-    {0, -1, 1},   {-1, 0, 1},  {1, 0, 1},   {0, 1, 1},   // edges 4-5, 4-7, 5-6, 6-7
-    {0, 0, -1},   {0, -1, 0},  {-1, 0, 0},  {1, 0, 0},   // faces z-, y-, x-, x+
-    {0, 1, 0},    {0, 0, 1},   {0, 0, 0}};               // faces y+, z+, centre
+    {-1, -1, -1}, {1, -1, -1}, {1, 1, -1},  {-1, 1, -1},  // vertices, bottom
+    {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},   {-1, 1, 1},   // vertices, top
+    {0, -1, -1},  {-1, 0, -1}, {-1, -1, 0}, {1, 0, -1},   // edges 0-1, 0-3, 0-4, 1-2
+    {1, -1, 0},   {0, 1, -1},  {1, 1, 0},   {-1, 1, 0},   // edges 1-5, 2-3, 2-6, 3-7
+    {0, -1, 1},   {-1, 0, 1},  {1, 0, 1},   {0, 1, 1},    // edges 4-5, 4-7, 5-6, 6-7
+    {0, 0, -1},   {0, -1, 0},  {-1, 0, 0},  {1, 0, 0},    // faces z-, y-, x-, x+
+    {0, 1, 0},    {0, 0, 1},   {0, 0, 0}};                // faces y+, z+, centre
 
 // 1D Lagrange basis on {-1,1} (q1) or {-1,0,1} (q2), node value v in {-1,0,1}.
 inline void lagrange1d(HexOrder order, int v, double x, double& L, double& dL) {
@@ -28,15 +28,26 @@ inline void lagrange1d(HexOrder order, int v, double x, double& L, double& dL) {
     return;
   }
   switch (v) {
-    case -1: L = 0.5 * x * (x - 1.0); dL = x - 0.5; break;
-    case 0: L = 1.0 - x * x; dL = -2.0 * x; break;
-    default: L = 0.5 * x * (x + 1.0); dL = x + 0.5; break;
+    case -1:
+      L = 0.5 * x * (x - 1.0);
+      dL = x - 0.5;
+      break;
+    case 0:
+      L = 1.0 - x * x;
+      dL = -2.0 * x;
+      break;
+    default:
+      L = 0.5 * x * (x + 1.0);
+      dL = x + 0.5;
+      break;
   }
 }
 
 }  // namespace
 
-int hex_node_count(HexOrder order) { return order == HexOrder::q1 ? 8 : 27; }
+int hex_node_count(HexOrder order) {
+  return order == HexOrder::q1 ? 8 : 27;
+}
 
 Vec3 hex_reference_node(HexOrder order, int a) {
   if (a < 0 || a >= hex_node_count(order))
@@ -58,7 +69,8 @@ void hex_shape(HexOrder order, const Vec3& xi, std::span<double> N, std::span<do
 
 HexFace hex_face(int face) {
   static constexpr HexFace faces[6] = {{2, -1}, {1, -1}, {0, -1}, {0, 1}, {1, 1}, {2, 1}};
-  if (face < 0 || face > 5) throw std::out_of_range(fmt::format("hex_face: face {} not in 0..5", face));
+  if (face < 0 || face > 5)
+    throw std::out_of_range(fmt::format("hex_face: face {} not in 0..5", face));
   return faces[face];
 }
 
@@ -73,9 +85,18 @@ std::vector<int> hex_face_nodes(HexOrder order, int face) {
 namespace {
 void gauss1d(int n, std::vector<double>& x, std::vector<double>& w) {
   switch (n) {
-    case 1: x = {0.0}; w = {2.0}; return;
-    case 2: x = {-1 / std::sqrt(3.0), 1 / std::sqrt(3.0)}; w = {1.0, 1.0}; return;
-    case 3: x = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)}; w = {5.0 / 9, 8.0 / 9, 5.0 / 9}; return;
+    case 1:
+      x = {0.0};
+      w = {2.0};
+      return;
+    case 2:
+      x = {-1 / std::sqrt(3.0), 1 / std::sqrt(3.0)};
+      w = {1.0, 1.0};
+      return;
+    case 3:
+      x = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)};
+      w = {5.0 / 9, 8.0 / 9, 5.0 / 9};
+      return;
     case 4: {
       const double a = std::sqrt(3.0 / 7 - 2.0 / 7 * std::sqrt(1.2));
       const double b = std::sqrt(3.0 / 7 + 2.0 / 7 * std::sqrt(1.2));
@@ -84,7 +105,9 @@ void gauss1d(int n, std::vector<double>& x, std::vector<double>& w) {
       w = {wb, wa, wa, wb};
       return;
     }
-    default: throw std::invalid_argument(fmt::format("Gauss rule with {} points per direction: only 1..4 are available", n));
+    default:
+      throw std::invalid_argument(
+          fmt::format("Gauss rule with {} points per direction: only 1..4 are available", n));
   }
 }
 }  // namespace

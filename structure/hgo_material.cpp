@@ -64,6 +64,8 @@ class Hgo final : public Hyperelastic {
 
 }  // namespace
 
-std::unique_ptr<Material> make_hgo(const HgoParameters& p) { return std::make_unique<Hgo>(p); }
+std::unique_ptr<Material> make_hgo(const HgoParameters& p) {
+  return std::make_unique<Hgo>(p);
+}
 
 }  // namespace valsalva::structure

@@ -11,8 +11,8 @@ namespace valsalva::structure {
 
 struct Invariant {
   double value = 0;
-  Mat3 d = Mat3::Zero();  // dI/dC
-  Mat9 dd = Mat9::Zero(); // d2I/dC2
+  Mat3 d = Mat3::Zero();   // dI/dC
+  Mat9 dd = Mat9::Zero();  // d2I/dC2
 };
 
 struct IsochoricInvariants {

@@ -22,7 +22,8 @@ class NeoHookean final : public Hyperelastic {
   Mat3 pk2(const Mat3& C) const override {
     const Mat3 Ci = C.inverse();
     const double lnJ = 0.5 * std::log(C.determinant());
-    return G_ * std::exp(-2.0 / 3.0 * lnJ) * (Mat3::Identity() - C.trace() / 3 * Ci) + K_ * lnJ * Ci;
+    return G_ * std::exp(-2.0 / 3.0 * lnJ) * (Mat3::Identity() - C.trace() / 3 * Ci) +
+           K_ * lnJ * Ci;
   }
   // Fast path for the explicit force loop: P = G J^-2/3 (F - I1/3 F^-T) + K ln J F^-T.
   Mat3 pk1(const Mat3& F) const override {
@@ -48,7 +49,8 @@ class NeoHookean final : public Hyperelastic {
 
 class MooneyRivlin final : public Hyperelastic {
  public:
-  MooneyRivlin(double C10, double C01, double C11, double K) : c10_(C10), c01_(C01), c11_(C11), K_(K) {}
+  MooneyRivlin(double C10, double C01, double C11, double K)
+      : c10_(C10), c01_(C01), c11_(C11), K_(K) {}
   std::string name() const override { return "mooney_rivlin"; }
 
   double energy_C(const Mat3& C) const override {

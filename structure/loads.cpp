@@ -61,52 +61,62 @@ void add_body_force(const SolidMesh& mesh, const Vec3& b0, Eigen::Matrix3Xd& f) 
 void add_dead_traction(const SolidMesh& mesh, const std::vector<FaceRef>& faces, const Vec3& t0,
                        Eigen::Matrix3Xd& f) {
   for (const FaceRef& fr : faces)
-    for_face_points(mesh, fr, [&](const int* en, const std::vector<double>& N, const std::vector<double>& dN, double w) {
-      Vec3 xs, xt;
-      const double dA = area_vector(mesh, fr, mesh.X, en, dN, xs, xt).norm() * w;
-      for (int a = 0; a < mesh.nodes_per_element(); ++a) f.col(en[a]) += N[a] * dA * t0;
-    });
+    for_face_points(
+        mesh, fr,
+        [&](const int* en, const std::vector<double>& N, const std::vector<double>& dN, double w) {
+          Vec3 xs, xt;
+          const double dA = area_vector(mesh, fr, mesh.X, en, dN, xs, xt).norm() * w;
+          for (int a = 0; a < mesh.nodes_per_element(); ++a) f.col(en[a]) += N[a] * dA * t0;
+        });
 }
 
 void add_follower_pressure(const SolidMesh& mesh, const std::vector<FaceRef>& faces, double p,
-                           const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& f, Eigen::SparseMatrix<double>* K) {
+                           const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& f,
+                           Eigen::SparseMatrix<double>* K) {
   const int nen = mesh.nodes_per_element();
   for (const FaceRef& fr : faces) {
     const HexFace hf = hex_face(fr.face);
     const int s = (hf.axis + 1) % 3, t = (hf.axis + 2) % 3;
-    for_face_points(mesh, fr, [&](const int* en, const std::vector<double>& N, const std::vector<double>& dN, double w) {
-      Vec3 xs, xt;
-      const Vec3 n = area_vector(mesh, fr, x, en, dN, xs, xt);
-      for (int a = 0; a < nen; ++a) f.col(en[a]) -= p * w * N[a] * n;
-      if (!K) return;
-      // d(n)/dx_b = side (-dN_b/ds [x_t]x + dN_b/dt [x_s]x); K_ab = -df_a/dx_b = p w N_a dn/dx_b.
-      const Mat3 St = skew(xt), Ss = skew(xs);
-      for (int b = 0; b < nen; ++b) {
-        if (dN[3 * b + s] == 0 && dN[3 * b + t] == 0) continue;
-        const Mat3 dn = hf.side * (-dN[3 * b + s] * St + dN[3 * b + t] * Ss);
-        for (int a = 0; a < nen; ++a) {
-          if (N[a] == 0) continue;
-          const Mat3 blk = p * w * N[a] * dn;
-          for (int k = 0; k < 3; ++k) {
-            const int col = 3 * en[b] + k;
-            const int* rb = K->innerIndexPtr() + K->outerIndexPtr()[col];
-            const int* re = K->innerIndexPtr() + K->outerIndexPtr()[col + 1];
-            const int pos = static_cast<int>(std::lower_bound(rb, re, 3 * en[a]) - K->innerIndexPtr());
-            for (int i = 0; i < 3; ++i) K->valuePtr()[pos + i] += blk(i, k);
+    for_face_points(
+        mesh, fr,
+        [&](const int* en, const std::vector<double>& N, const std::vector<double>& dN, double w) {
+          Vec3 xs, xt;
+          const Vec3 n = area_vector(mesh, fr, x, en, dN, xs, xt);
+          for (int a = 0; a < nen; ++a) f.col(en[a]) -= p * w * N[a] * n;
+          if (!K) return;
+          // d(n)/dx_b = side (-dN_b/ds [x_t]x + dN_b/dt [x_s]x); K_ab = -df_a/dx_b = p w N_a
+          // dn/dx_b.
+          const Mat3 St = skew(xt), Ss = skew(xs);
+          for (int b = 0; b < nen; ++b) {
+            if (dN[3 * b + s] == 0 && dN[3 * b + t] == 0) continue;
+            const Mat3 dn = hf.side * (-dN[3 * b + s] * St + dN[3 * b + t] * Ss);
+            for (int a = 0; a < nen; ++a) {
+              if (N[a] == 0) continue;
+              const Mat3 blk = p * w * N[a] * dn;
+              for (int k = 0; k < 3; ++k) {
+                const int col = 3 * en[b] + k;
+                const int* rb = K->innerIndexPtr() + K->outerIndexPtr()[col];
+                const int* re = K->innerIndexPtr() + K->outerIndexPtr()[col + 1];
+                const int pos =
+                    static_cast<int>(std::lower_bound(rb, re, 3 * en[a]) - K->innerIndexPtr());
+                for (int i = 0; i < 3; ++i) K->valuePtr()[pos + i] += blk(i, k);
+              }
+            }
           }
-        }
-      }
-    });
+        });
   }
 }
 
-double surface_area(const SolidMesh& mesh, const std::vector<FaceRef>& faces, const Eigen::Matrix3Xd& x) {
+double surface_area(const SolidMesh& mesh, const std::vector<FaceRef>& faces,
+                    const Eigen::Matrix3Xd& x) {
   double A = 0;
   for (const FaceRef& fr : faces)
-    for_face_points(mesh, fr, [&](const int* en, const std::vector<double>&, const std::vector<double>& dN, double w) {
-      Vec3 xs, xt;
-      A += area_vector(mesh, fr, x, en, dN, xs, xt).norm() * w;
-    });
+    for_face_points(
+        mesh, fr,
+        [&](const int* en, const std::vector<double>&, const std::vector<double>& dN, double w) {
+          Vec3 xs, xt;
+          A += area_vector(mesh, fr, x, en, dN, xs, xt).norm() * w;
+        });
   return A;
 }
 

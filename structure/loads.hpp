@@ -23,6 +23,7 @@ void add_follower_pressure(const SolidMesh& mesh, const std::vector<FaceRef>& fa
                            const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& f,
                            Eigen::SparseMatrix<double>* K);
 // Current area of a surface set (for tests and diagnostics).
-double surface_area(const SolidMesh& mesh, const std::vector<FaceRef>& faces, const Eigen::Matrix3Xd& x);
+double surface_area(const SolidMesh& mesh, const std::vector<FaceRef>& faces,
+                    const Eigen::Matrix3Xd& x);
 
 }  // namespace valsalva::structure

@@ -1,8 +1,8 @@
+#include <fmt/format.h>
+
 #include <cmath>
 #include <set>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 #include "structure/material.hpp"
 
@@ -13,26 +13,29 @@ namespace {
 // Reads the parameters of one law, rejecting unknown and missing keys and non-positive moduli.
 class ParamReader {
  public:
-  ParamReader(const std::string& type, const std::map<std::string, double>& p, const std::string& where,
-              std::set<std::string> allowed)
+  ParamReader(const std::string& type, const std::map<std::string, double>& p,
+              const std::string& where, std::set<std::string> allowed)
       : type_(type), p_(p), where_(where) {
     for (const auto& [k, v] : p)
       if (!allowed.count(k)) {
         std::string list;
         for (const auto& a : allowed) list += " " + a;
-        throw std::invalid_argument(fmt::format("{}: unknown parameter '{}' = {} for material '{}' (expected:{})",
-                                                where, k, v, type, list));
+        throw std::invalid_argument(
+            fmt::format("{}: unknown parameter '{}' = {} for material '{}' (expected:{})", where, k,
+                        v, type, list));
       }
   }
   double get(const std::string& key, double lo, bool lo_open, double hi = INFINITY) const {
     auto it = p_.find(key);
     if (it == p_.end())
-      throw std::invalid_argument(fmt::format("{}: material '{}' needs parameter '{}'", where_, type_, key));
+      throw std::invalid_argument(
+          fmt::format("{}: material '{}' needs parameter '{}'", where_, type_, key));
     const double v = it->second;
     const bool ok = std::isfinite(v) && (lo_open ? v > lo : v >= lo) && v < hi;
     if (!ok)
-      throw std::invalid_argument(fmt::format("{}: material '{}' parameter '{}' = {} is out of range ({}{}, {})",
-                                              where_, type_, key, v, lo_open ? "(" : "[", lo, hi));
+      throw std::invalid_argument(
+          fmt::format("{}: material '{}' parameter '{}' = {} is out of range ({}{}, {})", where_,
+                      type_, key, v, lo_open ? "(" : "[", lo, hi));
     return v;
   }
 
@@ -44,7 +47,8 @@ class ParamReader {
 
 }  // namespace
 
-std::unique_ptr<Material> make_material(const std::string& type, const std::map<std::string, double>& p,
+std::unique_ptr<Material> make_material(const std::string& type,
+                                        const std::map<std::string, double>& p,
                                         const std::string& where) {
   if (type == "neo_hookean") {
     ParamReader r(type, p, where, {"G", "K"});
@@ -52,8 +56,8 @@ std::unique_ptr<Material> make_material(const std::string& type, const std::map<
   }
   if (type == "mooney_rivlin") {
     ParamReader r(type, p, where, {"C10", "C01", "C11", "K"});
-    return make_mooney_rivlin(r.get("C10", 0, false), r.get("C01", 0, false), r.get("C11", -INFINITY, false),
-                              r.get("K", 0, true));
+    return make_mooney_rivlin(r.get("C10", 0, false), r.get("C01", 0, false),
+                              r.get("C11", -INFINITY, false), r.get("K", 0, true));
   }
   if (type == "hgo") {
     ParamReader r(type, p, where, {"mu", "K", "k1", "k2", "kappa", "gamma"});
@@ -71,9 +75,11 @@ std::unique_ptr<Material> make_material(const std::string& type, const std::map<
     const double E = r.get("E", 0, true), nu = r.get("nu", -1, true, 0.5);
     return type == "linear_elastic" ? make_linear_elastic(E, nu) : make_st_venant_kirchhoff(E, nu);
   }
-  throw std::invalid_argument(fmt::format(
-      "{}: unknown material type '{}' (expected neo_hookean, mooney_rivlin, hgo, st_venant_kirchhoff, "
-      "linear_elastic)", where, type));
+  throw std::invalid_argument(
+      fmt::format("{}: unknown material type '{}' (expected neo_hookean, mooney_rivlin, hgo, "
+                  "st_venant_kirchhoff, "
+                  "linear_elastic)",
+                  where, type));
 }
 
 }  // namespace valsalva::structure

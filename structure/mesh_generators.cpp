@@ -1,9 +1,9 @@
 #include "structure/mesh_generators.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace valsalva::structure {
 
@@ -18,7 +18,8 @@ SolidMesh structured_block(HexOrder order, std::array<int, 3> n,
                            const std::function<Vec3(const Vec3&)>& map) {
   for (int k = 0; k < 3; ++k)
     if (n[k] < 1)
-      throw std::invalid_argument(fmt::format("structured_block: {} elements along direction {}", n[k], k));
+      throw std::invalid_argument(
+          fmt::format("structured_block: {} elements along direction {}", n[k], k));
   const int p = static_cast<int>(order);
   const std::array<int, 3> m = {p * n[0] + 1, p * n[1] + 1, p * n[2] + 1};
   auto gid = [&](int i, int j, int k) { return i + m[0] * (j + m[1] * k); };
@@ -40,14 +41,16 @@ SolidMesh structured_block(HexOrder order, std::array<int, 3> n,
         const int e = mesh.num_elements();
         for (int a = 0; a < nen; ++a) {
           const Vec3 r = hex_reference_node(order, a);
-          const int di = static_cast<int>((r[0] + 1) * p / 2), dj = static_cast<int>((r[1] + 1) * p / 2),
+          const int di = static_cast<int>((r[0] + 1) * p / 2),
+                    dj = static_cast<int>((r[1] + 1) * p / 2),
                     dk = static_cast<int>((r[2] + 1) * p / 2);
           mesh.connectivity.push_back(gid(p * ei + di, p * ej + dj, p * ek + dk));
         }
         const int idx[3] = {ei, ej, ek};
         for (int axis = 0; axis < 3; ++axis) {
           if (idx[axis] == 0) mesh.surface_sets[names[axis][0]].push_back({e, face_id(axis, -1)});
-          if (idx[axis] == n[axis] - 1) mesh.surface_sets[names[axis][1]].push_back({e, face_id(axis, 1)});
+          if (idx[axis] == n[axis] - 1)
+            mesh.surface_sets[names[axis][1]].push_back({e, face_id(axis, 1)});
         }
       }
   for (int k = 0; k < m[2]; ++k)
@@ -70,15 +73,18 @@ void alias_sets(SolidMesh& mesh, const std::string& name, const std::string& ali
 }
 
 SolidMesh cylindrical_shell_patch(HexOrder order, const ShellPatch& p) {
-  if (!(p.radius > 0 && p.thickness > 0 && p.height > 0 && p.angle > 0 && p.thickness < 2 * p.radius))
+  if (!(p.radius > 0 && p.thickness > 0 && p.height > 0 && p.angle > 0 &&
+        p.thickness < 2 * p.radius))
     throw std::invalid_argument(fmt::format(
         "cylindrical_shell_patch: need radius > 0, 0 < thickness < 2 radius, height > 0, angle > 0 "
-        "(got radius {}, thickness {}, height {}, angle {})", p.radius, p.thickness, p.height, p.angle));
-  SolidMesh mesh = structured_block(order, {p.n_angle, p.n_height, p.n_thickness}, [&](const Vec3& s) {
-    const double th = (s[0] - 0.5) * p.angle;
-    const double r = p.radius + (s[2] - 0.5) * p.thickness;
-    return Vec3(r * std::cos(th), r * std::sin(th), s[1] * p.height);
-  });
+        "(got radius {}, thickness {}, height {}, angle {})",
+        p.radius, p.thickness, p.height, p.angle));
+  SolidMesh mesh =
+      structured_block(order, {p.n_angle, p.n_height, p.n_thickness}, [&](const Vec3& s) {
+        const double th = (s[0] - 0.5) * p.angle;
+        const double r = p.radius + (s[2] - 0.5) * p.thickness;
+        return Vec3(r * std::cos(th), r * std::sin(th), s[1] * p.height);
+      });
   mesh.source = fmt::format("<cylindrical shell patch R={} angle={} H={} t={}>", p.radius, p.angle,
                             p.height, p.thickness);
   alias_sets(mesh, "u0", "side0");
@@ -92,10 +98,11 @@ SolidMesh cylindrical_shell_patch(HexOrder order, const ShellPatch& p) {
 
 SolidMesh straight_bar(HexOrder order, const Bar& b) {
   if (!(b.length > 0 && b.height > 0 && b.depth > 0))
-    throw std::invalid_argument(fmt::format("straight_bar: sizes must be positive (got {} x {} x {})",
-                                            b.length, b.height, b.depth));
+    throw std::invalid_argument(fmt::format(
+        "straight_bar: sizes must be positive (got {} x {} x {})", b.length, b.height, b.depth));
   SolidMesh mesh = structured_block(order, {b.n_length, b.n_height, b.n_depth}, [&](const Vec3& s) {
-    return Vec3(b.origin[0] + s[0] * b.length, b.origin[1] + s[1] * b.height, b.origin[2] + s[2] * b.depth);
+    return Vec3(b.origin[0] + s[0] * b.length, b.origin[1] + s[1] * b.height,
+                b.origin[2] + s[2] * b.depth);
   });
   mesh.source = fmt::format("<bar {} x {} x {}>", b.length, b.height, b.depth);
   alias_sets(mesh, "u0", "clamped");

@@ -18,10 +18,10 @@ SolidMesh structured_block(HexOrder order, std::array<int, 3> n,
                            const std::function<Vec3(const Vec3&)>& map);
 
 struct ShellPatch {
-  double radius = 12.5e-3;     // mid-surface radius [m]
-  double angle = 2.0943951024; // angular span [rad], centred on the +x axis
-  double height = 10e-3;       // extent along the cylinder axis z [m]
-  double thickness = 0.15e-3;  // [m]
+  double radius = 12.5e-3;      // mid-surface radius [m]
+  double angle = 2.0943951024;  // angular span [rad], centred on the +x axis
+  double height = 10e-3;        // extent along the cylinder axis z [m]
+  double thickness = 0.15e-3;   // [m]
   int n_angle = 16, n_height = 8, n_thickness = 1;
 };
 // Cylinder axis z; u -> angle, v -> height, w -> radius. Aliases: node/surface sets "side0",

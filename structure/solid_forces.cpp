@@ -1,9 +1,9 @@
 #include "structure/solid_forces.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace valsalva::structure {
 
@@ -30,11 +30,14 @@ SolidForces::SolidForces(const SolidMesh& mesh, const Material& material, std::a
         for (int k = 0; k < 3; ++k) J.col(k) += mesh.X.col(en[a]) * dNxi_[(g * 3 + k) * nen_ + a];
       const double det = J.determinant();
       if (!(det > 0))
-        throw std::runtime_error(fmt::format("solid mesh {}: element {} has reference Jacobian {:.3e} at "
-                                             "Gauss point {}", mesh.source, e, det, g));
+        throw std::runtime_error(
+            fmt::format("solid mesh {}: element {} has reference Jacobian {:.3e} at "
+                        "Gauss point {}",
+                        mesh.source, e, det, g));
       const Mat3 Ji = J.inverse();
       for (int k = 0; k < 3; ++k)
-        for (int j = 0; j < 3; ++j) jinv_[(static_cast<std::size_t>(e) * ngp_ + g) * 9 + 3 * k + j] = Ji(k, j);
+        for (int j = 0; j < 3; ++j)
+          jinv_[(static_cast<std::size_t>(e) * ngp_ + g) * 9 + 3 * k + j] = Ji(k, j);
       wdetj_[static_cast<std::size_t>(e) * ngp_ + g] = q.weights[g] * det;
     }
   }
@@ -43,10 +46,12 @@ SolidForces::SolidForces(const SolidMesh& mesh, const Material& material, std::a
 }
 
 namespace {
-void check_sizes(const SolidMesh& mesh, const Eigen::Ref<const Eigen::Matrix3Xd>& x, Eigen::Ref<Eigen::Matrix3Xd> f) {
+void check_sizes(const SolidMesh& mesh, const Eigen::Ref<const Eigen::Matrix3Xd>& x,
+                 Eigen::Ref<Eigen::Matrix3Xd> f) {
   if (x.cols() != mesh.num_nodes() || f.cols() != mesh.num_nodes())
-    throw std::invalid_argument(fmt::format("internal_forces: {} positions and {} force columns for a mesh of {} nodes",
-                                            x.cols(), f.cols(), mesh.num_nodes()));
+    throw std::invalid_argument(
+        fmt::format("internal_forces: {} positions and {} force columns for a mesh of {} nodes",
+                    x.cols(), f.cols(), mesh.num_nodes()));
   f.setZero();
 }
 }  // namespace
@@ -164,7 +169,7 @@ double SolidForces::assemble(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& f,
   std::fill(K.valuePtr(), K.valuePtr() + K.nonZeros(), 0.0);
   f.setZero(3, n);
   double min_det = 1e300;
-  std::vector<double> gN(nen_ * 3);             // grad_X N_a
+  std::vector<double> gN(nen_ * 3);                            // grad_X N_a
   std::vector<double> T(static_cast<std::size_t>(nen_) * 27);  // T_a(i,k,L) = sum_J gN_aJ A_iJkL
   std::vector<double> Kloc(static_cast<std::size_t>(nen_) * nen_ * 9);
   Mat3 P;
@@ -206,7 +211,8 @@ double SolidForces::assemble(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& f,
           const double* ta = &T[a * 27];
           for (int i = 0; i < 3; ++i)
             for (int k = 0; k < 3; ++k)
-              kb[3 * i + k] += ta[i * 9 + 3 * k] * gb[0] + ta[i * 9 + 3 * k + 1] * gb[1] + ta[i * 9 + 3 * k + 2] * gb[2];
+              kb[3 * i + k] += ta[i * 9 + 3 * k] * gb[0] + ta[i * 9 + 3 * k + 1] * gb[1] +
+                               ta[i * 9 + 3 * k + 2] * gb[2];
         }
     }
     // Scatter: in column 3*nb+k the rows 3*na .. 3*na+2 are consecutive in the CSC pattern.

@@ -11,12 +11,11 @@
 // gradients and the force accumulation are sum-factorised (solid_forces_sumfact.cpp).
 #pragma once
 
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <array>
 #include <memory>
 #include <vector>
-
-#include <Eigen/Core>
-#include <Eigen/SparseCore>
 
 #include "structure/material.hpp"
 #include "structure/solid_mesh.hpp"
@@ -47,7 +46,8 @@ class SolidForces {
 
   // Forces and stiffness K = -df/dx in dof numbering 3*node + component. The sparsity pattern
   // is built on the first call and reused; K keeps it.
-  double assemble(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& f, Eigen::SparseMatrix<double>& K) const;
+  double assemble(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& f,
+                  Eigen::SparseMatrix<double>& K) const;
 
   // Deformation gradient at reference point xi of element e (for stress output and tests).
   Mat3 deformation_gradient(const Eigen::Matrix3Xd& x, int e, const Vec3& xi) const;

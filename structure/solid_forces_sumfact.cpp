@@ -11,13 +11,15 @@
 namespace valsalva::structure {
 
 struct SolidForces::SumFact {
-  int perm[27];      // lexicographic node i + 3 j + 9 k -> Gmsh local node
+  int perm[27];       // lexicographic node i + 3 j + 9 k -> Gmsh local node
   double B[3][3][3];  // [direction][gauss point][node]: 1D Lagrange value
   double D[3][3][3];  // derivative
 };
 
 void SolidForces::setup_sumfact(const QuadratureRule& q, std::array<int, 3> gauss) {
-  if (mesh_.order != HexOrder::q2 || gauss[0] != 3 || gauss[1] != 3 || (gauss[2] != 3 && gauss[2] != 2)) return;
+  if (mesh_.order != HexOrder::q2 || gauss[0] != 3 || gauss[1] != 3 ||
+      (gauss[2] != 3 && gauss[2] != 2))
+    return;
   auto s = std::make_shared<SumFact>();
   for (int a = 0; a < 27; ++a) {
     const Vec3 r = hex_reference_node(HexOrder::q2, a);
@@ -45,8 +47,10 @@ inline void gradient(const SF& S, const double* u, double* gx, double* gy, doubl
   double A0[9][NX], A1[9][NX];
   for (int kj = 0; kj < 9; ++kj)
     for (int p = 0; p < NX; ++p) {
-      A0[kj][p] = S.B[0][p][0] * u[3 * kj] + S.B[0][p][1] * u[3 * kj + 1] + S.B[0][p][2] * u[3 * kj + 2];
-      A1[kj][p] = S.D[0][p][0] * u[3 * kj] + S.D[0][p][1] * u[3 * kj + 1] + S.D[0][p][2] * u[3 * kj + 2];
+      A0[kj][p] =
+          S.B[0][p][0] * u[3 * kj] + S.B[0][p][1] * u[3 * kj + 1] + S.B[0][p][2] * u[3 * kj + 2];
+      A1[kj][p] =
+          S.D[0][p][0] * u[3 * kj] + S.D[0][p][1] * u[3 * kj + 1] + S.D[0][p][2] * u[3 * kj + 2];
     }
   double T1[3][NY][NX], T2[3][NY][NX], T3[3][NY][NX];
   for (int k = 0; k < 3; ++k)
@@ -72,7 +76,8 @@ inline void gradient(const SF& S, const double* u, double* gx, double* gy, doubl
 
 // Transpose of gradient(): fe[k][j][i] += sum_g (hx dN/dxi + hy dN/deta + hz dN/dzeta).
 template <int NX, int NY, int NZ, class SF>
-inline void gradient_transpose(const SF& S, const double* hx, const double* hy, const double* hz, double* fe) {
+inline void gradient_transpose(const SF& S, const double* hx, const double* hy, const double* hz,
+                               double* fe) {
   double T1[3][NY][NX], T2[3][NY][NX], T3[3][NY][NX];
   for (int k = 0; k < 3; ++k)
     for (int q = 0; q < NY; ++q)

@@ -1,9 +1,9 @@
 #include "structure/solid_mesh.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace valsalva::structure {
 
@@ -41,12 +41,14 @@ std::vector<int> SolidMesh::surface_nodes(const std::string& name) const {
 void SolidMesh::validate() const {
   const int nen = nodes_per_element();
   if (connectivity.size() % nen != 0)
-    throw std::runtime_error(fmt::format("solid mesh {}: connectivity size {} is not a multiple of {}",
-                                         source, connectivity.size(), nen));
+    throw std::runtime_error(
+        fmt::format("solid mesh {}: connectivity size {} is not a multiple of {}", source,
+                    connectivity.size(), nen));
   for (std::size_t i = 0; i < connectivity.size(); ++i)
     if (connectivity[i] < 0 || connectivity[i] >= num_nodes())
-      throw std::runtime_error(fmt::format("solid mesh {}: element {} refers to node {} (mesh has {})",
-                                           source, i / nen, connectivity[i], num_nodes()));
+      throw std::runtime_error(
+          fmt::format("solid mesh {}: element {} refers to node {} (mesh has {})", source, i / nen,
+                      connectivity[i], num_nodes()));
   const QuadratureRule q = gauss_hex(default_gauss(order));
   std::vector<double> N(nen), dN(3 * nen);
   for (int e = 0; e < num_elements(); ++e) {
@@ -59,19 +61,21 @@ void SolidMesh::validate() const {
       if (!(J.determinant() > 0))
         throw std::runtime_error(fmt::format(
             "solid mesh {}: element {} has Jacobian determinant {:.3e} at Gauss point {} "
-            "(inverted element or wrong node order)", source, e, J.determinant(), g));
+            "(inverted element or wrong node order)",
+            source, e, J.determinant(), g));
     }
   }
   for (const auto& [name, faces] : surface_sets)
     for (const FaceRef& f : faces)
       if (f.element < 0 || f.element >= num_elements() || f.face < 0 || f.face > 5)
-        throw std::runtime_error(fmt::format("solid mesh {}: surface set '{}' has face ({}, {}) out of range",
-                                             source, name, f.element, f.face));
+        throw std::runtime_error(
+            fmt::format("solid mesh {}: surface set '{}' has face ({}, {}) out of range", source,
+                        name, f.element, f.face));
   for (const auto& [name, nodes] : node_sets)
     for (int n : nodes)
       if (n < 0 || n >= num_nodes())
-        throw std::runtime_error(fmt::format("solid mesh {}: node set '{}' has node {} out of range",
-                                             source, name, n));
+        throw std::runtime_error(
+            fmt::format("solid mesh {}: node set '{}' has node {} out of range", source, name, n));
 }
 
 }  // namespace valsalva::structure

@@ -3,11 +3,10 @@
 // pressure and traction loads). Node coordinates are one contiguous 3 x n array.
 #pragma once
 
+#include <Eigen/Core>
 #include <map>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "structure/hex_element.hpp"
 
@@ -20,17 +19,15 @@ struct FaceRef {
 
 struct SolidMesh {
   HexOrder order = HexOrder::q2;
-  Eigen::Matrix3Xd X;               // reference node coordinates, one column per node
-  std::vector<int> connectivity;    // nodes_per_element() entries per element
+  Eigen::Matrix3Xd X;             // reference node coordinates, one column per node
+  std::vector<int> connectivity;  // nodes_per_element() entries per element
   std::map<std::string, std::vector<int>> node_sets;
   std::map<std::string, std::vector<FaceRef>> surface_sets;
   std::string source = "<generated>";
 
   int nodes_per_element() const { return hex_node_count(order); }
   int num_nodes() const { return static_cast<int>(X.cols()); }
-  int num_elements() const {
-    return static_cast<int>(connectivity.size()) / nodes_per_element();
-  }
+  int num_elements() const { return static_cast<int>(connectivity.size()) / nodes_per_element(); }
   const int* element_nodes(int e) const { return connectivity.data() + e * nodes_per_element(); }
 
   const std::vector<int>& node_set(const std::string& name) const;

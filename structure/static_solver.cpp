@@ -1,12 +1,12 @@
 #include "structure/static_solver.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <stdexcept>
+#include <fmt/format.h>
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
-#include <fmt/format.h>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
 
 namespace valsalva::structure {
 
@@ -116,7 +116,8 @@ class Newton {
       // Predictor: extrapolate the free dofs from the last increment, set the supports.
       if (dl_prev > 0) xt += (target - lambda) / dl_prev * (x - x_prev);
       for (int i = 0; i < 3 * mesh_.num_nodes(); ++i)
-        if (fixed_[i]) xt(i % 3, i / 3) = mesh_.X(i % 3, i / 3) + target * prescribed_(i % 3, i / 3);
+        if (fixed_[i])
+          xt(i % 3, i / 3) = mesh_.X(i % 3, i / 3) + target * prescribed_(i % 3, i / 3);
       std::string why;
       x0_ = x;
       const bool ok = increment(xt, target, solver, K, res, why);
@@ -128,13 +129,16 @@ class Newton {
         ++res.steps;
         cuts = 0;
         dl = std::min(1.0 / std::max(1, o_.load_steps), 2 * dl);
-        if (o_.verbose) fmt::print("  load factor {:.4f} converged ({} steps)\n", lambda, res.steps);
+        if (o_.verbose)
+          fmt::print("  load factor {:.4f} converged ({} steps)\n", lambda, res.steps);
         continue;
       }
       if (++cuts > o_.max_cuts) {
         res.diagnosis = fmt::format(
-            "Newton solver did not converge: stuck at load factor {:.6g} after {} successive cuts of the "
-            "increment (last tried {:.3g}); {}", lambda, o_.max_cuts, dl, why);
+            "Newton solver did not converge: stuck at load factor {:.6g} after {} successive cuts "
+            "of the "
+            "increment (last tried {:.3g}); {}",
+            lambda, o_.max_cuts, dl, why);
         break;
       }
       ++res.cuts;
@@ -151,7 +155,8 @@ class Newton {
 
  private:
   // Damped relaxation at full load until the undamped residual converges.
-  bool relax(Eigen::Matrix3Xd& x, LinearSolver& solver, Eigen::SparseMatrix<double>& K, NewtonResult& res) {
+  bool relax(Eigen::Matrix3Xd& x, LinearSolver& solver, Eigen::SparseMatrix<double>& K,
+             NewtonResult& res) {
     const double d_start = d_;
     for (int k = 0; k < o_.max_relaxation_steps; ++k) {
       Vec r;
@@ -160,7 +165,8 @@ class Newton {
       d_ = 0;
       const double rel = residual(x, 1.0, nullptr, r, minJ);
       d_ = d;
-      if (o_.verbose) fmt::print("  relaxation {}: damping {:.3e}, undamped residual {:.3e}\n", k, d_, rel);
+      if (o_.verbose)
+        fmt::print("  relaxation {}: damping {:.3e}, undamped residual {:.3e}\n", k, d_, rel);
       if (rel <= o_.rtol || d_ < 1e-12 * d_start) {
         res.last_residuals.push_back(rel);
         if (rel <= 1e3 * o_.rtol) return true;
@@ -176,13 +182,14 @@ class Newton {
         ++res.cuts;
       }
     }
-    res.diagnosis = fmt::format("Newton solver: damped relaxation at full load did not converge in {} steps",
-                                o_.max_relaxation_steps);
+    res.diagnosis =
+        fmt::format("Newton solver: damped relaxation at full load did not converge in {} steps",
+                    o_.max_relaxation_steps);
     return false;
   }
 
-  bool increment(Eigen::Matrix3Xd& x, double lambda, LinearSolver& solver, Eigen::SparseMatrix<double>& K,
-                 NewtonResult& res, std::string& why) {
+  bool increment(Eigen::Matrix3Xd& x, double lambda, LinearSolver& solver,
+                 Eigen::SparseMatrix<double>& K, NewtonResult& res, std::string& why) {
     Vec r, r_trial;
     double minJ = 0;
     res.last_residuals.clear();
@@ -203,8 +210,10 @@ class Newton {
       ++res.iterations;
       constrain(K);
       if (!solver.factor(K)) {
-        why = fmt::format("singular tangent at iteration {} (supports do not remove the rigid-body motion, "
-                          "or the structure lost stability)", it);
+        why = fmt::format(
+            "singular tangent at iteration {} (supports do not remove the rigid-body motion, "
+            "or the structure lost stability)",
+            it);
         return false;
       }
       Vec du = solver.solve(r);
@@ -212,11 +221,11 @@ class Newton {
       // bending stiffness ~ (L/t)^2), and the refined step lowers the residual floor.
       du += solver.solve(r - K * du);
       const Eigen::Map<const Eigen::Matrix3Xd> dU(du.data(), 3, mesh_.num_nodes());
-      // Line search on the energy-like product s(alpha) = du . r(x + alpha du) (Crisfield, Non-linear
-      // FEA of Solids and Structures, vol. 1, sec. 9.3), used as a safeguard: the Newton step is
-      // kept unless it inverts an element (halve) or overshoots badly, |s(1)| > 4 |s(0)| (secant
-      // step). Tighter criteria, or backtracking on |r|, slowed thin-strip solves down: their
-      // residual norm jumps through membrane forces while Newton is on its way.
+      // Line search on the energy-like product s(alpha) = du . r(x + alpha du) (Crisfield,
+      // Non-linear FEA of Solids and Structures, vol. 1, sec. 9.3), used as a safeguard: the Newton
+      // step is kept unless it inverts an element (halve) or overshoots badly, |s(1)| > 4 |s(0)|
+      // (secant step). Tighter criteria, or backtracking on |r|, slowed thin-strip solves down:
+      // their residual norm jumps through membrane forces while Newton is on its way.
       const double s0 = du.dot(r);
       double alpha = 1;
       Eigen::Matrix3Xd xt;
@@ -239,18 +248,21 @@ class Newton {
       x = xt;
       rel = residual(x, lambda, &K, r, minJ);
       if (o_.verbose)
-        fmt::print("    iteration {}: step {:.3e} (alpha {:.3g}, |u| {:.3e}), relative residual {:.3e}\n", it, step,
-                   alpha, umax, rel);
+        fmt::print(
+            "    iteration {}: step {:.3e} (alpha {:.3g}, |u| {:.3e}), relative residual {:.3e}\n",
+            it, step, alpha, umax, rel);
       if (step <= 1e-10 * umax && minJ > 0 && rel < 1e-4) {
         res.last_residuals.push_back(rel);
         return true;
       }
     }
     const auto& h = res.last_residuals;
-    why = fmt::format("{} iterations without reaching {:.1e} (relative residual {:.3e} -> {:.3e}{})",
-                      o_.max_iterations, o_.rtol, h.front(), h.back(),
-                      h.size() > 3 && h.back() > 0.1 * h[h.size() - 3] ? ", stagnating: load too large for the "
-                                                                          "increment or a limit point" : "");
+    why = fmt::format(
+        "{} iterations without reaching {:.1e} (relative residual {:.3e} -> {:.3e}{})",
+        o_.max_iterations, o_.rtol, h.front(), h.back(),
+        h.size() > 3 && h.back() > 0.1 * h[h.size() - 3] ? ", stagnating: load too large for the "
+                                                           "increment or a limit point"
+                                                         : "");
     return false;
   }
 

@@ -42,8 +42,8 @@ struct StaticProblem {
 struct NewtonOptions {
   int load_steps = 10;
   int max_iterations = 30;
-  double rtol = 1e-9;     // residual / max(|lambda f_ext|, |reactions|)
-  int max_cuts = 8;       // successive halvings of a failing increment
+  double rtol = 1e-9;  // residual / max(|lambda f_ext|, |reactions|)
+  int max_cuts = 8;    // successive halvings of a failing increment
   bool line_search = true;
   // Pseudo-transient continuation (Kelley & Keyes, SIAM J. Numer. Anal. 35:508, 1998): each
   // increment solves f(x) - d (x - x_start) = 0 with d = damping * mean diag(K), which carries the
@@ -57,12 +57,12 @@ struct NewtonOptions {
 
 struct NewtonResult {
   bool converged = false;
-  Eigen::Matrix3Xd x;       // final positions (last converged state if not converged)
-  double load_factor = 0;   // reached
+  Eigen::Matrix3Xd x;      // final positions (last converged state if not converged)
+  double load_factor = 0;  // reached
   int steps = 0, iterations = 0, cuts = 0;
   std::vector<double> last_residuals;  // relative residuals of the last increment
-  std::string diagnosis;    // why it failed, empty on success
-  std::string solver;       // linear solver used
+  std::string diagnosis;               // why it failed, empty on success
+  std::string solver;                  // linear solver used
 };
 
 NewtonResult solve_static(const StaticProblem& problem, const NewtonOptions& options,

@@ -12,7 +12,8 @@ double von_mises(const Mat3& s) {
 NodalStress nodal_stress(const SolidForces& forces, const Eigen::Matrix3Xd& x) {
   const SolidMesh& m = forces.mesh();
   const int n = m.num_nodes(), nen = m.nodes_per_element();
-  Eigen::Matrix<double, 6, Eigen::Dynamic> sig = Eigen::Matrix<double, 6, Eigen::Dynamic>::Zero(6, n);
+  Eigen::Matrix<double, 6, Eigen::Dynamic> sig =
+      Eigen::Matrix<double, 6, Eigen::Dynamic>::Zero(6, n);
   Eigen::Matrix<double, 6, Eigen::Dynamic> strain = sig;
   Eigen::VectorXd count = Eigen::VectorXd::Zero(n);
   for (int e = 0; e < m.num_elements(); ++e)
@@ -21,8 +22,10 @@ NodalStress nodal_stress(const SolidForces& forces, const Eigen::Matrix3Xd& x) {
       const Mat3 s = forces.material().pk1(F) * F.transpose() / F.determinant();
       const Mat3 E = 0.5 * (F.transpose() * F - Mat3::Identity());
       const int node = m.element_nodes(e)[a];
-      sig.col(node) += Eigen::Matrix<double, 6, 1>(s(0, 0), s(1, 1), s(2, 2), s(0, 1), s(1, 2), s(0, 2));
-      strain.col(node) += Eigen::Matrix<double, 6, 1>(E(0, 0), E(1, 1), E(2, 2), E(0, 1), E(1, 2), E(0, 2));
+      sig.col(node) +=
+          Eigen::Matrix<double, 6, 1>(s(0, 0), s(1, 1), s(2, 2), s(0, 1), s(1, 2), s(0, 2));
+      strain.col(node) +=
+          Eigen::Matrix<double, 6, 1>(E(0, 0), E(1, 1), E(2, 2), E(0, 1), E(1, 2), E(0, 2));
       count[node] += 1;
     }
   NodalStress out;
@@ -41,8 +44,10 @@ NodalStress nodal_stress(const SolidForces& forces, const Eigen::Matrix3Xd& x) {
     }
     const Mat3 s = unpack(sig.col(i)), E = unpack(strain.col(i));
     out.von_mises[i] = von_mises(s);
-    out.principal_stress.col(i) = Eigen::SelfAdjointEigenSolver<Mat3>(s, Eigen::EigenvaluesOnly).eigenvalues().reverse();
-    out.principal_strain.col(i) = Eigen::SelfAdjointEigenSolver<Mat3>(E, Eigen::EigenvaluesOnly).eigenvalues().reverse();
+    out.principal_stress.col(i) =
+        Eigen::SelfAdjointEigenSolver<Mat3>(s, Eigen::EigenvaluesOnly).eigenvalues().reverse();
+    out.principal_strain.col(i) =
+        Eigen::SelfAdjointEigenSolver<Mat3>(E, Eigen::EigenvaluesOnly).eigenvalues().reverse();
   }
   out.cauchy = std::move(sig);
   return out;

@@ -11,7 +11,9 @@ using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 using Mat9 = Eigen::Matrix<double, 9, 9>;
 
-inline int vidx(int i, int j) { return 3 * i + j; }
+inline int vidx(int i, int j) {
+  return 3 * i + j;
+}
 
 // (A ⊗ B)_IJKL = A_IJ B_KL
 inline Mat9 outer(const Mat3& A, const Mat3& B) {

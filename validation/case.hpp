@@ -30,8 +30,9 @@ struct Metric {
 struct Context {
   MPI_Comm comm = MPI_COMM_WORLD;
   bool quick = false;
-  std::filesystem::path out_dir;   // created before the case runs
-  std::filesystem::path case_dir;  // validation/<case>/ in the source tree (reference data, plot.py)
+  std::filesystem::path out_dir;  // created before the case runs
+  std::filesystem::path
+      case_dir;  // validation/<case>/ in the source tree (reference data, plot.py)
   std::filesystem::path refdata_dir;  // validation/refdata (copies of ../shared/refdata)
 };
 
@@ -61,8 +62,8 @@ struct Case {
 const std::vector<Case>& all_cases();
 const Case* find_case(const std::string& name);
 
-// Runs Debian's `/usr/bin/python3 <case_dir>/plot.py <out_dir>` on rank 0 when the case ships a plot script;
-// returns false (with a message on stderr) when the plot could not be made.
+// Runs Debian's `/usr/bin/python3 <case_dir>/plot.py <out_dir>` on rank 0 when the case ships a
+// plot script; returns false (with a message on stderr) when the plot could not be made.
 bool run_plot_script(const Context& ctx);
 
 }  // namespace valsalva::validation

@@ -13,11 +13,8 @@ Case leaflet_closure_case();
 
 const std::vector<Case>& all_cases() {
   static const std::vector<Case> cases = {
-      mesh_metrics_case(),
-      taylor_green_case(),
-      turek_hron_csm_case(),
-      strip_bending_case(),
-      leaflet_closure_case(),
+      mesh_metrics_case(),  taylor_green_case(),    turek_hron_csm_case(),
+      strip_bending_case(), leaflet_closure_case(),
   };
   return cases;
 }

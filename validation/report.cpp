@@ -11,9 +11,12 @@ namespace valsalva::validation {
 bool Metric::pass() const {
   if (!std::isfinite(value)) return false;
   switch (check) {
-    case Check::within: return std::abs(value - reference) <= tolerance;
-    case Check::at_most: return value <= reference + tolerance;
-    case Check::at_least: return value >= reference - tolerance;
+    case Check::within:
+      return std::abs(value - reference) <= tolerance;
+    case Check::at_most:
+      return value <= reference + tolerance;
+    case Check::at_least:
+      return value >= reference - tolerance;
   }
   return false;
 }
@@ -39,19 +42,23 @@ std::string json_string(const std::string& s) {
 }
 const char* check_name(Check c) {
   switch (c) {
-    case Check::within: return "within";
-    case Check::at_most: return "at_most";
-    case Check::at_least: return "at_least";
+    case Check::within:
+      return "within";
+    case Check::at_most:
+      return "at_most";
+    case Check::at_least:
+      return "at_least";
   }
   return "?";
 }
 }  // namespace
 
-void Report::write_json(const std::filesystem::path& file, const std::string& case_name,
-                        int ranks, double wall_seconds) const {
+void Report::write_json(const std::filesystem::path& file, const std::string& case_name, int ranks,
+                        double wall_seconds) const {
   auto out = fmt::output_file(file.string());
   out.print("{{\n  \"case\": {},\n  \"ranks\": {},\n  \"wall_seconds\": {},\n  \"pass\": {},\n",
-            json_string(case_name), ranks, json_number(wall_seconds), all_pass() ? "true" : "false");
+            json_string(case_name), ranks, json_number(wall_seconds),
+            all_pass() ? "true" : "false");
   out.print("  \"metrics\": [\n");
   for (std::size_t i = 0; i < metrics_.size(); ++i) {
     const auto& m = metrics_[i];
@@ -71,7 +78,8 @@ bool run_plot_script(const Context& ctx) {
   int ok = 1;
   const auto script = ctx.case_dir / "plot.py";
   if (rank == 0 && std::filesystem::exists(script)) {
-    const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}'", script.string(), ctx.out_dir.string());
+    const std::string cmd =
+        fmt::format("/usr/bin/python3 '{}' '{}'", script.string(), ctx.out_dir.string());
     ok = std::system(cmd.c_str()) == 0 ? 1 : 0;
     if (!ok) fmt::print(stderr, "validate: plot script failed: {}\n", cmd);
   }

@@ -48,7 +48,8 @@ TEST_CASE("distributed dual metrics and halo") {
       // Halo insert: ghosts receive their owner's value (a function of the global id).
       std::vector<Eigen::Vector3d> field(local.num_local(), Eigen::Vector3d::Constant(-1.0));
       for (int i = 0; i < local.num_owned; ++i)
-        field[i] = Eigen::Vector3d(local.global_id[i], 2.0 * local.global_id[i], local.position[i].x());
+        field[i] =
+            Eigen::Vector3d(local.global_id[i], 2.0 * local.global_id[i], local.position[i].x());
       local.halo.exchange(field, flow::HaloMode::insert);
       int wrong = 0;
       for (int i = local.num_owned; i < local.num_local(); ++i)

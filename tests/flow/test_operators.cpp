@@ -127,7 +127,8 @@ TEST_CASE("operators are exact for linear fields") {
       e_visc = std::max(e_visc, visc[i].norm() * hi / A.norm());
       // Divergence and convection carry no correction matrix: exact where M_j = I (interior
       // nodes of simplicial meshes; perturbed hexahedra have M_j != I).
-      if (!on_boundary[i] && (mesh.gradient_correction[i] - Eigen::Matrix3d::Identity()).norm() < 1e-12) {
+      if (!on_boundary[i] &&
+          (mesh.gradient_correction[i] - Eigen::Matrix3d::Identity()).norm() < 1e-12) {
         ++exact_nodes;
         e_div = std::max(e_div, std::abs(div[i] - A.trace()) / A.norm());
         e_conv = std::max(e_conv, (conv[i] - A * u0).norm() / (A.norm() * u0.norm()));

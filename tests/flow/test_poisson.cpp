@@ -1,7 +1,7 @@
 // Pressure Poisson through hypre PCG + BoomerAMG on periodic (singular) boxes: a manufactured
 // solution converges at second order on hexahedra and split tetrahedra (observed order >= 1.9,
-// perturbed tetrahedra reported), a warm start from the solution needs no iteration, the iteration cap
-// is reported as an error, and np = N agrees with one rank to the solver tolerance.
+// perturbed tetrahedra reported), a warm start from the solution needs no iteration, the iteration
+// cap is reported as an error, and np = N agrees with one rank to the solver tolerance.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -85,8 +85,8 @@ TEST_CASE("Poisson manufactured solution converges at second order") {
       const auto box =
           local_box(test::periodic_box(kind.type, n, kind.perturbation), MPI_COMM_WORLD);
       const auto s = solve_manufactured(*box, 1e-10);
-      MESSAGE(kind.type << " " << kind.perturbation << " n " << n << ": L2 error "
-                        << s.l2_error << ", " << s.result.iterations << " PCG iterations, residual "
+      MESSAGE(kind.type << " " << kind.perturbation << " n " << n << ": L2 error " << s.l2_error
+                        << ", " << s.result.iterations << " PCG iterations, residual "
                         << s.result.relative_residual);
       CHECK(s.result.converged);
       CHECK(s.result.iterations < 40);

@@ -2,6 +2,7 @@
 // ASCII and read back; counts, patch names, volumes and areas are checked against the model.
 #include <doctest/doctest.h>
 #include <gmsh.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -10,7 +11,6 @@
 #include <map>
 #include <numeric>
 #include <string>
-#include <unistd.h>
 
 #include "flow/mesh_check.hpp"
 #include "io/gmsh_reader.hpp"
@@ -28,7 +28,8 @@ struct Format {
 constexpr Format formats[] = {{"v41_ascii", 4.1, 0}, {"v41_binary", 4.1, 1}, {"v22_ascii", 2.2, 0}};
 
 fs::path scratch_dir(const std::string& name) {
-  fs::path dir = fs::temp_directory_path() / ("valsalva_test_gmsh_" + std::to_string(getpid())) / name;
+  fs::path dir =
+      fs::temp_directory_path() / ("valsalva_test_gmsh_" + std::to_string(getpid())) / name;
   fs::create_directories(dir);
   return dir;
 }
@@ -140,15 +141,16 @@ TEST_CASE("hybrid pyramid/hexahedron/prism mesh keeps Gmsh node order in all thr
     gmsh::model::mesh::addNodes(3, 1, node_tags, xyz);
     // Cube [0,1]^3 faces, each listed counter-clockwise seen from outside.
     const std::vector<std::array<std::size_t, 4>> cube_faces = {
-        {tag(0, 0, 0), tag(0, 1, 0), tag(1, 1, 0), tag(1, 0, 0)},  // z = 0
-        {tag(0, 0, 1), tag(1, 0, 1), tag(1, 1, 1), tag(0, 1, 1)},  // z = 1
-        {tag(0, 0, 0), tag(1, 0, 0), tag(1, 0, 1), tag(0, 0, 1)},  // y = 0
-        {tag(0, 1, 0), tag(0, 1, 1), tag(1, 1, 1), tag(1, 1, 0)},  // y = 1
-        {tag(0, 0, 0), tag(0, 0, 1), tag(0, 1, 1), tag(0, 1, 0)},  // x = 0
+        {tag(0, 0, 0), tag(0, 1, 0), tag(1, 1, 0), tag(1, 0, 0)},   // z = 0
+        {tag(0, 0, 1), tag(1, 0, 1), tag(1, 1, 1), tag(0, 1, 1)},   // z = 1
+        {tag(0, 0, 0), tag(1, 0, 0), tag(1, 0, 1), tag(0, 0, 1)},   // y = 0
+        {tag(0, 1, 0), tag(0, 1, 1), tag(1, 1, 1), tag(1, 1, 0)},   // y = 1
+        {tag(0, 0, 0), tag(0, 0, 1), tag(0, 1, 1), tag(0, 1, 0)},   // x = 0
         {tag(1, 0, 0), tag(1, 1, 0), tag(1, 1, 1), tag(1, 0, 1)}};  // x = 1
     // Pyramid base 0-1-2-3 is counter-clockwise seen from the apex: reverse the outward face.
     std::vector<std::size_t> pyramids;
-    for (const auto& q : cube_faces) pyramids.insert(pyramids.end(), {q[3], q[2], q[1], q[0], centre});
+    for (const auto& q : cube_faces)
+      pyramids.insert(pyramids.end(), {q[3], q[2], q[1], q[0], centre});
     const std::vector<std::size_t> hexa = {tag(1, 0, 0), tag(2, 0, 0), tag(2, 1, 0), tag(1, 1, 0),
                                            tag(1, 0, 1), tag(2, 0, 1), tag(2, 1, 1), tag(1, 1, 1)};
     // Prisms: triangles in the xz-plane at y = 0 extruded to y = 1; the bottom triangle is
@@ -168,7 +170,8 @@ TEST_CASE("hybrid pyramid/hexahedron/prism mesh keeps Gmsh node order in all thr
     // Boundary: x = 0 as "inlet" (one quad), everything else as "wall".
     std::vector<std::size_t> wall_quads, wall_tris;
     for (std::size_t f = 0; f < cube_faces.size(); ++f)
-      if (f != 4 && f != 5) wall_quads.insert(wall_quads.end(), cube_faces[f].begin(), cube_faces[f].end());
+      if (f != 4 && f != 5)
+        wall_quads.insert(wall_quads.end(), cube_faces[f].begin(), cube_faces[f].end());
     auto quad = [&](std::array<std::array<int, 3>, 4> q) {
       for (auto [i, j, k] : q) wall_quads.push_back(tag(i, j, k));
     };
@@ -185,8 +188,8 @@ TEST_CASE("hybrid pyramid/hexahedron/prism mesh keeps Gmsh node order in all thr
         for (auto [i, k] : t) wall_tris.push_back(tag(i, y, k));
     gmsh::model::mesh::addElementsByType(1, 3, {}, wall_quads);
     gmsh::model::mesh::addElementsByType(1, 2, {}, wall_tris);
-    gmsh::model::mesh::addElementsByType(
-        2, 3, {}, {tag(0, 0, 0), tag(0, 0, 1), tag(0, 1, 1), tag(0, 1, 0)});
+    gmsh::model::mesh::addElementsByType(2, 3, {},
+                                         {tag(0, 0, 0), tag(0, 0, 1), tag(0, 1, 1), tag(0, 1, 0)});
     gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {1}), "wall");
     gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {2}), "inlet");
     gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {1}), "solid");
@@ -208,9 +211,9 @@ TEST_CASE("hybrid pyramid/hexahedron/prism mesh keeps Gmsh node order in all thr
     CHECK_NOTHROW(flow::check_mesh(mesh));
     for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c)
       CHECK(flow::cell_volume(mesh, c) ==
-            doctest::Approx(mesh.cell_types[c] == flow::CellType::pyramid  ? 1.0 / 6
+            doctest::Approx(mesh.cell_types[c] == flow::CellType::pyramid ? 1.0 / 6
                             : mesh.cell_types[c] == flow::CellType::prism ? 0.5
-                                                                           : 1.0)
+                                                                          : 1.0)
                 .epsilon(1e-14));
     CHECK(total_volume(mesh) == doctest::Approx(3.0).epsilon(1e-14));
     auto area = patch_areas(mesh);

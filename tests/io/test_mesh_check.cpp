@@ -18,15 +18,23 @@ namespace {
 flow::Mesh single_cell(CellType type, const Eigen::Matrix3d& A) {
   flow::Mesh mesh;
   mesh.source = std::string("single ") + flow::name(type);
-  const std::vector<Eigen::Vector3d> corners = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                                                {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1},
-                                                {0.5, 0.5, 1}};
+  const std::vector<Eigen::Vector3d> corners = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0},
+                                                {0, 1, 0}, {0, 0, 1}, {1, 0, 1},
+                                                {1, 1, 1}, {0, 1, 1}, {0.5, 0.5, 1}};
   std::vector<GlobalIndex> nodes;
   switch (type) {
-    case CellType::tetra: nodes = {0, 1, 3, 4}; break;
-    case CellType::pyramid: nodes = {0, 1, 2, 3, 8}; break;
-    case CellType::prism: nodes = {0, 1, 3, 4, 5, 7}; break;
-    case CellType::hexa: nodes = {0, 1, 2, 3, 4, 5, 6, 7}; break;
+    case CellType::tetra:
+      nodes = {0, 1, 3, 4};
+      break;
+    case CellType::pyramid:
+      nodes = {0, 1, 2, 3, 8};
+      break;
+    case CellType::prism:
+      nodes = {0, 1, 3, 4, 5, 7};
+      break;
+    case CellType::hexa:
+      nodes = {0, 1, 2, 3, 4, 5, 6, 7};
+      break;
   }
   for (GlobalIndex n : nodes) mesh.nodes.push_back(A * corners[n] + Eigen::Vector3d(1, -2, 3));
   std::vector<GlobalIndex> local(nodes.size());
@@ -46,9 +54,10 @@ TEST_CASE("cell volumes are exact for affine images of the reference cells") {
   Eigen::Matrix3d A;
   A << 2, 0.3, -0.2, 0.1, 1.5, 0.4, -0.3, 0.2, 2.0;
   const double det = A.determinant();
-  const std::pair<CellType, double> cells[] = {
-      {CellType::tetra, 1.0 / 6}, {CellType::pyramid, 1.0 / 3}, {CellType::prism, 0.5},
-      {CellType::hexa, 1.0}};
+  const std::pair<CellType, double> cells[] = {{CellType::tetra, 1.0 / 6},
+                                               {CellType::pyramid, 1.0 / 3},
+                                               {CellType::prism, 0.5},
+                                               {CellType::hexa, 1.0}};
   for (auto [type, reference] : cells) {
     CAPTURE(flow::name(type));
     const flow::Mesh mesh = single_cell(type, A);
@@ -75,12 +84,14 @@ TEST_CASE("check_mesh names the problem on hand-made bad meshes") {
   mesh.cell_nodes[5] = 12;
   std::string m = message(mesh);
   CHECK(m.find("single hexahedron") != std::string::npos);
-  CHECK(m.find("cell 0 (hexahedron) refers to node index 12 out of range [0, 8)") != std::string::npos);
+  CHECK(m.find("cell 0 (hexahedron) refers to node index 12 out of range [0, 8)") !=
+        std::string::npos);
 
   mesh = single_cell(CellType::prism, Eigen::Matrix3d::Identity());
   mesh.face_nodes[2] = -1;
   m = message(mesh);
-  CHECK(m.find("boundary face 0 (patch 'wall') refers to node index -1 out of range") != std::string::npos);
+  CHECK(m.find("boundary face 0 (patch 'wall') refers to node index -1 out of range") !=
+        std::string::npos);
 
   mesh = single_cell(CellType::tetra, Eigen::Matrix3d::Identity());
   mesh.nodes[3].z() = -1;  // apex through the base: inverted

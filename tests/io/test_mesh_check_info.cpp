@@ -29,8 +29,9 @@ flow::Mesh one_cell(CellType type, std::vector<Eigen::Vector3d> nodes) {
 
 TEST_CASE("quality measures are 1 for the ideal shapes and follow the closed forms") {
   const double s3 = std::sqrt(3.0), h = 1 / std::sqrt(2.0);
-  auto regular_tet = one_cell(CellType::tetra, {{0, 0, 0}, {1, 0, 0}, {0.5, s3 / 2, 0},
-                                                {0.5, s3 / 6, std::sqrt(2.0 / 3.0)}});
+  auto regular_tet =
+      one_cell(CellType::tetra,
+               {{0, 0, 0}, {1, 0, 0}, {0.5, s3 / 2, 0}, {0.5, s3 / 6, std::sqrt(2.0 / 3.0)}});
   CHECK(io::cell_quality(regular_tet, 0) == doctest::Approx(1.0).epsilon(1e-14));
   std::swap(regular_tet.cell_nodes[1], regular_tet.cell_nodes[2]);  // inverted: negative
   CHECK(io::cell_quality(regular_tet, 0) == doctest::Approx(-1.0).epsilon(1e-14));
@@ -41,8 +42,9 @@ TEST_CASE("quality measures are 1 for the ideal shapes and follow the closed for
   for (auto& x : hex) x.x() += shear * x.z();  // every corner: det 1, one edge sqrt(1 + s^2)
   CHECK(io::cell_quality(one_cell(CellType::hexa, hex), 0) ==
         doctest::Approx(1 / std::sqrt(1 + shear * shear)).epsilon(1e-14));
-  const auto prism = one_cell(CellType::prism, {{0, 0, 0}, {1, 0, 0}, {0.5, s3 / 2, 0},
-                                                {0, 0, 2}, {1, 0, 2}, {0.5, s3 / 2, 2}});
+  const auto prism =
+      one_cell(CellType::prism,
+               {{0, 0, 0}, {1, 0, 0}, {0.5, s3 / 2, 0}, {0, 0, 2}, {1, 0, 2}, {0.5, s3 / 2, 2}});
   CHECK(io::cell_quality(prism, 0) == doctest::Approx(1.0).epsilon(1e-14));
   const auto pyramid =
       one_cell(CellType::pyramid, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, h}});

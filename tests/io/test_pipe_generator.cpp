@@ -44,8 +44,9 @@ TEST_CASE("pipe mesh: patches on the right surfaces, valid tetrahedra, inscribed
   // The inlet is a plane triangulation of the regular polygon inscribed in the circle.
   const double n_rim = static_cast<double>(rim.size());
   REQUIRE(n_rim >= 2 * std::numbers::pi * r / h);
-  CHECK(area[inlet] == doctest::Approx(0.5 * n_rim * r * r * std::sin(2 * std::numbers::pi / n_rim))
-                           .epsilon(1e-12));
+  CHECK(
+      area[inlet] ==
+      doctest::Approx(0.5 * n_rim * r * r * std::sin(2 * std::numbers::pi / n_rim)).epsilon(1e-12));
   CHECK(area[outlet] == doctest::Approx(area[inlet]).epsilon(1e-12));
   // Wall and volume: the triangulated surface lies inside the cylinder; the relative deficit is
   // that of an inscribed polygon, 1 - sin(t)/t ~ t^2/6 with chord angle t = 2 pi / n_rim, and the

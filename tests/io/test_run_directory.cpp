@@ -22,7 +22,8 @@ fs::path scratch() {
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   long pid = rank == 0 ? static_cast<long>(getpid()) : 0;
   MPI_Bcast(&pid, 1, MPI_LONG, 0, MPI_COMM_WORLD);
-  return fs::temp_directory_path() / ("valsalva_run_dir_test_" + std::to_string(pid) + "_np" + std::to_string(size));
+  return fs::temp_directory_path() /
+         ("valsalva_run_dir_test_" + std::to_string(pid) + "_np" + std::to_string(size));
 }
 
 std::string read(const fs::path& p) {
@@ -32,7 +33,9 @@ std::string read(const fs::path& p) {
   return s.str();
 }
 
-void barrier() { MPI_Barrier(MPI_COMM_WORLD); }
+void barrier() {
+  MPI_Barrier(MPI_COMM_WORLD);
+}
 
 }  // namespace
 
@@ -95,7 +98,7 @@ TEST_CASE("prepare creates the directory, writes the resolved scene, and guards 
 TEST_CASE("the default run path is runs/<scene file stem>") {
   const Scene unnamed = parse_scene("[mesh]\nsource = \"box\"\n", "scenes/cavity.toml");
   CHECK(default_run_path(unnamed) == fs::path("runs/cavity"));
-  const Scene named =
-      parse_scene("[run]\noutput_dir = \"out/a\"\n[mesh]\nsource = \"box\"\n", "scenes/cavity.toml");
+  const Scene named = parse_scene("[run]\noutput_dir = \"out/a\"\n[mesh]\nsource = \"box\"\n",
+                                  "scenes/cavity.toml");
   CHECK(default_run_path(named) == fs::path("out/a"));
 }

@@ -130,11 +130,23 @@ TEST_CASE("schema machinery: wildcards, conditions, float lists and tables") {
       .required()
       .unit_of("-")
       .doc("Kind of condition");
-  schema.real3("boundary.<patch>.velocity").def(std::array{0.0, 0.0, 0.0}).unit_of("m/s").doc("Inlet velocity");
+  schema.real3("boundary.<patch>.velocity")
+      .def(std::array{0.0, 0.0, 0.0})
+      .unit_of("m/s")
+      .doc("Inlet velocity");
   schema.when("boundary.<patch>.velocity", "boundary.<patch>.type", {"velocity_inlet"});
   schema.section("waveform", "Flow-rate waveform.");
-  schema.real_list("waveform.times").required().at_least(0).at_least_size(2).unit_of("s").doc("Sample times");
-  schema.real_table("waveform.gains").def(std::map<std::string, double>{{"a", 1.0}}).above(0).unit_of("-").doc("Gains");
+  schema.real_list("waveform.times")
+      .required()
+      .at_least(0)
+      .at_least_size(2)
+      .unit_of("s")
+      .doc("Sample times");
+  schema.real_table("waveform.gains")
+      .def(std::map<std::string, double>{{"a", 1.0}})
+      .above(0)
+      .unit_of("-")
+      .doc("Gains");
   schema.check();
 
   const Scene s = parse_scene(R"(
@@ -186,8 +198,8 @@ TEST_CASE("numbers that do not fit, non-finite floats and repeated directions ar
   CHECK(error_of("[mesh]\nsource = \"box\"\n[mesh.box]\nperiodic = [\"y\", \"y\"]\n") ==
         "t.toml:4:18: key 'mesh.box.periodic': element 2: \"y\" is repeated "
         "(accepted: each of \"x\", \"y\", \"z\", no repeats)");
-  CHECK(error_of("[mesh]\nsource = \"box\"\nsource = \"pipe\"\n").rfind(
-            "t.toml:3:10: TOML syntax error: ", 0) == 0);  // a key written twice
+  CHECK(error_of("[mesh]\nsource = \"box\"\nsource = \"pipe\"\n")
+            .rfind("t.toml:3:10: TOML syntax error: ", 0) == 0);  // a key written twice
   CHECK(format_value(KeyValue{std::map<std::string, double>{{"a b", 1.0}, {"c", 2.5}}}) ==
         "{ \"a b\" = 1.0, c = 2.5 }");
 }

@@ -89,10 +89,15 @@ TEST_CASE("all problems of a scene are reported at once, in file order") {
   } catch (const SceneError& e) {
     const std::string f = file.string();
     REQUIRE(e.problems().size() == 3);
-    CHECK(e.problems()[0] == f + ":6:13: key 'mesh.box.cells': element 2 is 0, out of range (accepted: 3 values, each >= 1)");
-    CHECK(e.problems()[1] == f + ":7:8: key 'mesh.box.seed': value -1 is out of range (accepted: >= 0)");
-    CHECK(e.problems()[2] == f + ":10:1: key 'run.log_evry': unknown key; did you mean 'run.log_every'? (accepted: keys output_dir, overwrite, log_every)");
-    CHECK(std::string(e.what()) == e.problems()[0] + "\n" + e.problems()[1] + "\n" + e.problems()[2]);
+    CHECK(e.problems()[0] == f + ":6:13: key 'mesh.box.cells': element 2 is 0, out of range "
+                                 "(accepted: 3 values, each >= 1)");
+    CHECK(e.problems()[1] ==
+          f + ":7:8: key 'mesh.box.seed': value -1 is out of range (accepted: >= 0)");
+    CHECK(e.problems()[2] ==
+          f + ":10:1: key 'run.log_evry': unknown key; did you mean 'run.log_every'? (accepted: "
+              "keys output_dir, overwrite, log_every)");
+    CHECK(std::string(e.what()) ==
+          e.problems()[0] + "\n" + e.problems()[1] + "\n" + e.problems()[2]);
   }
 }
 

@@ -23,9 +23,10 @@ TEST_CASE("docs/scenes.md matches the scene-key declarations byte for byte") {
     // Leave the fresh version next to the test so it can be copied without the app.
     const fs::path fresh = fs::current_path() / "scenes.md.generated";
     std::ofstream(fresh, std::ios::binary) << generated.str();
-    FAIL_CHECK(committed.string() << " is out of date with io/scene_keys_*.cpp; regenerate it with\n"
-                                  << "  build/bin/valsalva docs-scenes > docs/scenes.md\n"
-                                  << "or copy " << fresh.string());
+    FAIL_CHECK(
+        committed.string() << " is out of date with io/scene_keys_*.cpp; regenerate it with\n"
+                           << "  build/bin/valsalva docs-scenes > docs/scenes.md\n"
+                           << "or copy " << fresh.string());
   }
   // Every declared key is documented.
   for (const auto& key : scene_schema().keys()) {

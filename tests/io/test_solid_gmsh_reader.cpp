@@ -4,12 +4,11 @@
 // physical-surface area from the box, and a homogeneous stretch gives zero internal force at
 // every node not on the boundary (patch test), which checks the node order of every element.
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 #include <gmsh.h>
 
 #include <cmath>
 #include <filesystem>
-
-#include <fmt/format.h>
 
 #include "io/gmsh_reader.hpp"
 #include "io/solid_gmsh_reader.hpp"
@@ -30,8 +29,10 @@ fs::path make_box(int order, bool tets = false) {
   const fs::path file = dir / fmt::format("box_o{}{}.msh", order, tets ? "_tet" : "");
   io::GmshSession session;
   namespace g = gmsh::model::geo;
-  const int p1 = g::addPoint(0, 0, 0), p2 = g::addPoint(a, 0, 0), p3 = g::addPoint(a, b, 0), p4 = g::addPoint(0, b, 0);
-  const int l1 = g::addLine(p1, p2), l2 = g::addLine(p2, p3), l3 = g::addLine(p3, p4), l4 = g::addLine(p4, p1);
+  const int p1 = g::addPoint(0, 0, 0), p2 = g::addPoint(a, 0, 0), p3 = g::addPoint(a, b, 0),
+            p4 = g::addPoint(0, b, 0);
+  const int l1 = g::addLine(p1, p2), l2 = g::addLine(p2, p3), l3 = g::addLine(p3, p4),
+            l4 = g::addLine(p4, p1);
   const int s = g::addPlaneSurface({g::addCurveLoop({l1, l2, l3, l4})});
   g::mesh::setTransfiniteCurve(l1, nx + 1);
   g::mesh::setTransfiniteCurve(l3, nx + 1);
@@ -82,9 +83,11 @@ TEST_CASE("solid Gmsh import: hex8 and hex27 boxes") {
     CHECK(volume(m) == doctest::Approx(a * b * c).epsilon(1e-12));
     REQUIRE(m.surface_sets.count("bottom"));
     CHECK(m.surface_set("bottom").size() == nx * ny);
-    CHECK(structure::surface_area(m, m.surface_set("bottom"), m.X) == doctest::Approx(a * b).epsilon(1e-12));
+    CHECK(structure::surface_area(m, m.surface_set("bottom"), m.X) ==
+          doctest::Approx(a * b).epsilon(1e-12));
     CHECK(m.surface_set("physical2_2").size() == nx * ny);  // unnamed top surface
-    for (const auto& fr : m.surface_set("physical2_2")) CHECK(structure::hex_face(fr.face).axis == 2);
+    for (const auto& fr : m.surface_set("physical2_2"))
+      CHECK(structure::hex_face(fr.face).axis == 2);
     CHECK(m.node_set("bottom").size() == std::size_t((order * nx + 1) * (order * ny + 1)));
     for (int n : m.node_set("bottom")) CHECK(std::abs(m.X(2, n)) < 1e-15);
     CHECK(m.node_set("edge_x0").size() == std::size_t(order * ny + 1));
@@ -101,8 +104,8 @@ TEST_CASE("solid Gmsh import: hex8 and hex27 boxes") {
     int interior = 0;
     for (int n = 0; n < m.num_nodes(); ++n) {
       const auto X = m.X.col(n);
-      const bool inside = X[0] > 1e-9 && X[0] < a - 1e-9 && X[1] > 1e-9 && X[1] < b - 1e-9 && X[2] > 1e-9 &&
-                          X[2] < c - 1e-9;
+      const bool inside = X[0] > 1e-9 && X[0] < a - 1e-9 && X[1] > 1e-9 && X[1] < b - 1e-9 &&
+                          X[2] > 1e-9 && X[2] < c - 1e-9;
       if (!inside) continue;
       ++interior;
       CHECK(f.col(n).norm() < 1e-10 * scale);
@@ -112,7 +115,8 @@ TEST_CASE("solid Gmsh import: hex8 and hex27 boxes") {
 }
 
 TEST_CASE("solid Gmsh import: bad input is named") {
-  CHECK_THROWS_WITH_AS(io::read_solid_gmsh("test_output/no_such_file.msh"), doctest::Contains("no_such_file.msh"),
+  CHECK_THROWS_WITH_AS(io::read_solid_gmsh("test_output/no_such_file.msh"),
+                       doctest::Contains("no_such_file.msh"), io::MeshFileError);
+  CHECK_THROWS_WITH_AS(io::read_solid_gmsh(make_box(1, true)), doctest::Contains("Tetrahedron"),
                        io::MeshFileError);
-  CHECK_THROWS_WITH_AS(io::read_solid_gmsh(make_box(1, true)), doctest::Contains("Tetrahedron"), io::MeshFileError);
 }

@@ -4,12 +4,11 @@
 // (4,5) (5,6) (6,7) (7,4) (0,4) (1,5) (2,6) (3,7), its face nodes 20..25 the centres of the
 // faces -x, +x, -y, +y, -z, +z, node 26 the centroid (vtkTriQuadraticHexahedron documentation).
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-
-#include <fmt/format.h>
 
 #include "io/hdf5_file.hpp"
 #include "io/solid_output.hpp"
@@ -28,7 +27,8 @@ TEST_CASE("solid results: datasets read back, Hexahedron_27 in VTK order") {
   const structure::SolidMesh mesh = structure::straight_bar(structure::HexOrder::q2, b);
   structure::Mat3 F;
   F << 1.1, 0.2, 0.05, -0.1, 0.95, 0.1, 0.03, 0.07, 1.02;
-  const Eigen::Matrix3Xd x = F * mesh.X + Eigen::Vector3d(1e-3, 0, 2e-3).replicate(1, mesh.num_nodes());
+  const Eigen::Matrix3Xd x =
+      F * mesh.X + Eigen::Vector3d(1e-3, 0, 2e-3).replicate(1, mesh.num_nodes());
   const auto mat = structure::make_neo_hookean(2.4e6, 1.6e6);
   const structure::SolidForces forces(mesh, *mat);
   const structure::NodalStress s = structure::nodal_stress(forces, x);
@@ -61,7 +61,8 @@ TEST_CASE("solid results: datasets read back, Hexahedron_27 in VTK order") {
   auto P = [&](long e, int i) { return Eigen::Vector3d(x.col(topo[27 * e + i])); };
   static constexpr int edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
                                        {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
-  static constexpr int faces[6][4] = {{0, 3, 7, 4}, {1, 2, 6, 5}, {0, 1, 5, 4}, {3, 2, 6, 7}, {0, 1, 2, 3}, {4, 5, 6, 7}};
+  static constexpr int faces[6][4] = {{0, 3, 7, 4}, {1, 2, 6, 5}, {0, 1, 5, 4},
+                                      {3, 2, 6, 7}, {0, 1, 2, 3}, {4, 5, 6, 7}};
   const double tol = 1e-12 * 2e-3;
   for (long e = 0; e < ne; ++e) {
     // Corners in VTK order: a positively oriented hexahedron, 0-1 along reference x, 0-3 along y.
@@ -79,8 +80,10 @@ TEST_CASE("solid results: datasets read back, Hexahedron_27 in VTK order") {
   }
   std::stringstream text;
   text << std::ifstream(xmf).rdbuf();
-  CHECK(text.str().find("TopologyType=\"Hexahedron_27\" NumberOfElements=\"6\"") != std::string::npos);
-  for (const char* name : {"displacement", "von_mises", "principal_stress", "principal_strain", "cauchy"})
+  CHECK(text.str().find("TopologyType=\"Hexahedron_27\" NumberOfElements=\"6\"") !=
+        std::string::npos);
+  for (const char* name :
+       {"displacement", "von_mises", "principal_stress", "principal_strain", "cauchy"})
     CHECK(text.str().find(fmt::format("bar.h5:/{}<", name)) != std::string::npos);
 }
 

@@ -32,7 +32,8 @@ inline std::vector<ZooEntry> material_zoo() {
                      const double J = l.prod(), I1 = l.squaredNorm(), f = std::pow(J, -2.0 / 3);
                      Vec3 r;
                      for (int i = 0; i < 3; ++i)
-                       r[i] = 0.5 * G * (2 * f * l[i] - 2.0 / 3 * f * I1 / l[i]) + K * std::log(J) / l[i];
+                       r[i] = 0.5 * G * (2 * f * l[i] - 2.0 / 3 * f * I1 / l[i]) +
+                              K * std::log(J) / l[i];
                      return r;
                    },
                    [=](double g) { return G * g; }});
@@ -43,12 +44,14 @@ inline std::vector<ZooEntry> material_zoo() {
                    [=](const Vec3& l) {
                      const double J = l.prod(), f = std::pow(J, -2.0 / 3), f2 = f * f;
                      const Vec3 s = l.cwiseAbs2();
-                     const double I1b = f * s.sum(), I2b = f2 * (s[0] * s[1] + s[1] * s[2] + s[0] * s[2]);
+                     const double I1b = f * s.sum(),
+                                  I2b = f2 * (s[0] * s[1] + s[1] * s[2] + s[0] * s[2]);
                      Vec3 r;
                      for (int i = 0; i < 3; ++i) {
                        const double dI1 = 2 * f * l[i] - 2.0 / 3 * I1b / l[i];
                        const double dI2 = 2 * f2 * l[i] * (s.sum() - s[i]) - 4.0 / 3 * I2b / l[i];
-                       r[i] = (c10 + c11 * (I2b - 3)) * dI1 + (c01 + c11 * (I1b - 3)) * dI2 + K * std::log(J) / l[i];
+                       r[i] = (c10 + c11 * (I2b - 3)) * dI1 + (c01 + c11 * (I1b - 3)) * dI2 +
+                              K * std::log(J) / l[i];
                      }
                      return r;
                    },
@@ -56,12 +59,18 @@ inline std::vector<ZooEntry> material_zoo() {
   }
   {  // HGO, aortic media values of Gasser et al. 2006 (k2 dimensionless)
     HgoParameters p;
-    p.mu = 7.64e3 * 2; p.K = 1e6; p.k1 = 996.6e3; p.k2 = 524.6e-3; p.kappa = 0.226; p.gamma = 49.98 * M_PI / 180;
+    p.mu = 7.64e3 * 2;
+    p.K = 1e6;
+    p.k1 = 996.6e3;
+    p.k2 = 524.6e-3;
+    p.kappa = 0.226;
+    p.gamma = 49.98 * M_PI / 180;
     zoo.push_back({"hgo", make_hgo(p), p.mu,
                    [=](const Vec3& l) {
                      const double J = l.prod(), f = std::pow(J, -2.0 / 3);
                      const double c = std::cos(p.gamma), s = std::sin(p.gamma);
-                     const double I1b = f * l.squaredNorm(), I4b = f * (c * c * l[0] * l[0] + s * s * l[1] * l[1]);
+                     const double I1b = f * l.squaredNorm(),
+                                  I4b = f * (c * c * l[0] * l[0] + s * s * l[1] * l[1]);
                      const double E = p.kappa * I1b + (1 - 3 * p.kappa) * I4b - 1;
                      Vec3 r;
                      for (int i = 0; i < 3; ++i) {
@@ -70,7 +79,8 @@ inline std::vector<ZooEntry> material_zoo() {
                        const double dI4 = 2 * f * w4 * l[i] - 2.0 / 3 * I4b / l[i];
                        r[i] = 0.5 * p.mu * dI1 + p.K * std::log(J) / l[i];
                        if (I4b > 1)  // both families have the same I4 under diagonal F
-                         r[i] += 2 * p.k1 * E * std::exp(p.k2 * E * E) * (p.kappa * dI1 + (1 - 3 * p.kappa) * dI4);
+                         r[i] += 2 * p.k1 * E * std::exp(p.k2 * E * E) *
+                                 (p.kappa * dI1 + (1 - 3 * p.kappa) * dI4);
                      }
                      return r;
                    },
@@ -81,14 +91,17 @@ inline std::vector<ZooEntry> material_zoo() {
                        const double I4 = 1 + sf * g * std::sin(2 * p.gamma) + g * g * s * s;
                        if (I4 <= 1) continue;
                        const double E = p.kappa * g * g + (1 - 3 * p.kappa) * (I4 - 1);
-                       const double dE = 2 * p.kappa * g + (1 - 3 * p.kappa) * (sf * std::sin(2 * p.gamma) + 2 * g * s * s);
+                       const double dE =
+                           2 * p.kappa * g +
+                           (1 - 3 * p.kappa) * (sf * std::sin(2 * p.gamma) + 2 * g * s * s);
                        r += p.k1 * E * std::exp(p.k2 * E * E) * dE;
                      }
                      return r;
                    }});
   }
   {  // St Venant–Kirchhoff, Turek–Hron CSM2
-    const double E = 5.6e6, nu = 0.4, lam = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+    const double E = 5.6e6, nu = 0.4, lam = E * nu / ((1 + nu) * (1 - 2 * nu)),
+                 mu = E / (2 * (1 + nu));
     zoo.push_back({"st_venant_kirchhoff", make_st_venant_kirchhoff(E, nu), mu,
                    [=](const Vec3& l) {
                      const Vec3 Ed = 0.5 * (l.cwiseAbs2() - Vec3::Ones());
@@ -99,7 +112,8 @@ inline std::vector<ZooEntry> material_zoo() {
                    [=](double g) { return lam * g * g * g / 2 + mu * (g + g * g * g); }});
   }
   {  // linear elastic
-    const double E = 1e6, nu = 0.3, lam = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+    const double E = 1e6, nu = 0.3, lam = E * nu / ((1 + nu) * (1 - 2 * nu)),
+                 mu = E / (2 * (1 + nu));
     zoo.push_back({"linear_elastic", make_linear_elastic(E, nu), mu,
                    [=](const Vec3& l) {
                      const Vec3 e = l - Vec3::Ones();

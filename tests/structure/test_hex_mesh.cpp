@@ -44,7 +44,8 @@ TEST_CASE("shape functions: Kronecker delta, partition of unity, derivatives") {
       hex_shape(order, p, Np, tmp);
       hex_shape(order, m, Nm, tmp);
       // Central difference of a polynomial of degree <= 2 per direction is exact up to round-off.
-      for (int a = 0; a < nen; ++a) CHECK(std::abs((Np[a] - Nm[a]) / (2 * h) - dN[3 * a + k]) < 1e-9);
+      for (int a = 0; a < nen; ++a)
+        CHECK(std::abs((Np[a] - Nm[a]) / (2 * h) - dN[3 * a + k]) < 1e-9);
     }
   }
 }
@@ -54,7 +55,8 @@ TEST_CASE("Gauss rules integrate polynomials exactly") {
   const QuadratureRule q = gauss_hex({3, 2, 4});
   double s = 0;
   for (int g = 0; g < q.size(); ++g)
-    s += q.weights[g] * std::pow(q.points[g][0], 4) * std::pow(q.points[g][1], 2) * std::pow(q.points[g][2], 6);
+    s += q.weights[g] * std::pow(q.points[g][0], 4) * std::pow(q.points[g][1], 2) *
+         std::pow(q.points[g][2], 6);
   CHECK(s == doctest::Approx(2.0 / 5 * 2.0 / 3 * 2.0 / 7).epsilon(1e-14));
   CHECK_THROWS_WITH_AS(gauss_hex({5, 1, 1}), doctest::Contains("only 1..4"), std::invalid_argument);
 }
@@ -82,8 +84,9 @@ TEST_CASE("cylindrical shell patch: volume, sets, convergence of the Q2 geometry
   p.n_angle = 8;
   p.n_height = 4;
   p.n_thickness = 2;
-  const double exact = 0.5 * p.angle * p.height *
-                       (std::pow(p.radius + p.thickness / 2, 2) - std::pow(p.radius - p.thickness / 2, 2));
+  const double exact =
+      0.5 * p.angle * p.height *
+      (std::pow(p.radius + p.thickness / 2, 2) - std::pow(p.radius - p.thickness / 2, 2));
   // Chord error of the 15-degree Q2 arc segments ~ (dtheta)^4: relative 1e-5 bound.
   const SolidMesh q2 = cylindrical_shell_patch(HexOrder::q2, p);
   CHECK(std::abs(mesh_volume(q2) / exact - 1) < 1e-5);
@@ -97,7 +100,8 @@ TEST_CASE("cylindrical shell patch: volume, sets, convergence of the Q2 geometry
   CHECK(q2.surface_set("outer").size() == 32);
   for (int n : q2.surface_nodes("outer"))
     CHECK(std::hypot(q2.X(0, n), q2.X(1, n)) == doctest::Approx(p.radius + p.thickness / 2));
-  CHECK_THROWS_WITH_AS(q2.node_set("nope"), doctest::Contains("no node set 'nope'"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(q2.node_set("nope"), doctest::Contains("no node set 'nope'"),
+                       std::invalid_argument);
 }
 
 TEST_CASE("straight bar and validation of inverted elements") {

@@ -2,9 +2,8 @@
 // stress against the derivative of the energy, objectivity and the stress-free reference state.
 #include <doctest/doctest.h>
 
-#include <random>
-
 #include <Eigen/Geometry>
+#include <random>
 
 #include "material_zoo.hpp"
 
@@ -124,6 +123,6 @@ TEST_CASE("material factory rejects bad input with the key and value") {
                        doctest::Contains("'G' = -1"), std::invalid_argument);
   CHECK_THROWS_WITH_AS(make_material("st_venant_kirchhoff", {{"E", 1e6}}, where),
                        doctest::Contains("needs parameter 'nu'"), std::invalid_argument);
-  CHECK_THROWS_WITH_AS(make_material("rubber", {}, where), doctest::Contains("unknown material type 'rubber'"),
-                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_material("rubber", {}, where),
+                       doctest::Contains("unknown material type 'rubber'"), std::invalid_argument);
 }

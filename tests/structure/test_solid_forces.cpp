@@ -3,12 +3,11 @@
 // allocation-free explicit mode, and nodal stress recovery.
 #include <doctest/doctest.h>
 
+#include <Eigen/Geometry>
 #include <atomic>
 #include <cstdlib>
 #include <new>
 #include <random>
-
-#include <Eigen/Geometry>
 
 #include "material_zoo.hpp"
 #include "structure/mesh_generators.hpp"
@@ -23,8 +22,12 @@ void* operator new(std::size_t n) {
   if (void* p = std::malloc(n ? n : 1)) return p;
   throw std::bad_alloc();
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
 
 using namespace valsalva::structure;
 using valsalva::structure::testing::material_zoo;
@@ -130,7 +133,9 @@ TEST_CASE("assembled stiffness equals -df/dx by central differences") {
       xm(j % 3, j / 3) -= h;
       forces.internal_forces(xp, fp);
       forces.internal_forces(xm, fm);
-      Kfd.col(j) = -(Eigen::Map<Eigen::VectorXd>(fp.data(), fp.size()) - Eigen::Map<Eigen::VectorXd>(fm.data(), fm.size())) / (2 * h);
+      Kfd.col(j) = -(Eigen::Map<Eigen::VectorXd>(fp.data(), fp.size()) -
+                     Eigen::Map<Eigen::VectorXd>(fm.data(), fm.size())) /
+                   (2 * h);
     }
     CHECK((Kd - Kfd).norm() <= 1e-6 * Kd.norm());
     if (z.material->objective() || z.name == "linear_elastic")
@@ -150,7 +155,8 @@ TEST_CASE("explicit mode allocates nothing and rejects mismatched sizes") {
   CHECK(g_allocs == 0);
   CHECK(minJ == doctest::Approx(1.01 * 1.01 * 1.01).epsilon(1e-12));
   Eigen::Matrix3Xd bad(3, 5);
-  CHECK_THROWS_WITH_AS(forces.internal_forces(x, bad), doctest::Contains("5 force columns"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(forces.internal_forces(x, bad), doctest::Contains("5 force columns"),
+                       std::invalid_argument);
 }
 
 TEST_CASE("nodal stresses of a homogeneous state") {

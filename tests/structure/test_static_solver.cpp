@@ -19,7 +19,8 @@ TEST_CASE("patch test: Dirichlet boundary, interior solved by Newton") {
   std::vector<int> boundary;
   for (int n = 0; n < m.num_nodes(); ++n) {
     const bool b = (m.X.col(n).array() < 1e-12).any() || (m.X.col(n).array() > 1 - 1e-12).any();
-    if (b) boundary.push_back(n);
+    if (b)
+      boundary.push_back(n);
     else
       for (int k = 0; k < 3; ++k) m.X(k, n) += u(rng);
   }
@@ -30,7 +31,10 @@ TEST_CASE("patch test: Dirichlet boundary, interior solved by Newton") {
     SolidForces forces(m, *z.material);
     StaticProblem p;
     p.forces = &forces;
-    p.dirichlet.push_back({boundary, {true, true, true}, [&](const Vec3& X) { Vec3 d = F * X - X; return d; }});
+    p.dirichlet.push_back({boundary, {true, true, true}, [&](const Vec3& X) {
+                             Vec3 d = F * X - X;
+                             return d;
+                           }});
     NewtonOptions o;
     o.load_steps = 2;
     const NewtonResult r = solve_static(p, o);
@@ -87,7 +91,8 @@ TEST_CASE("follower pressure: forces and stiffness against central differences")
   Eigen::Matrix3Xd f = Eigen::Matrix3Xd::Zero(3, m.num_nodes());
   const double p = 1e3, Ro = sp.radius + sp.thickness / 2;
   add_follower_pressure(m, faces, p, m.X, f, nullptr);
-  CHECK(f.rowwise().sum()[0] == doctest::Approx(-p * 2 * Ro * std::sin(sp.angle / 2) * sp.height).epsilon(1e-6));
+  CHECK(f.rowwise().sum()[0] ==
+        doctest::Approx(-p * 2 * Ro * std::sin(sp.angle / 2) * sp.height).epsilon(1e-6));
   CHECK(std::abs(f.rowwise().sum()[1]) <= 1e-9 * p * sp.height * Ro);
   Eigen::SparseMatrix<double> K = forces.stiffness_pattern();
   f.setZero();
@@ -102,7 +107,8 @@ TEST_CASE("follower pressure: forces and stiffness against central differences")
     add_follower_pressure(m, faces, p, xp, fp, nullptr);
     add_follower_pressure(m, faces, p, xm, fm, nullptr);
     const Eigen::VectorXd col = -(Eigen::Map<Eigen::VectorXd>(fp.data(), fp.size()) -
-                                  Eigen::Map<Eigen::VectorXd>(fm.data(), fm.size())) / (2 * h);
+                                  Eigen::Map<Eigen::VectorXd>(fm.data(), fm.size())) /
+                                (2 * h);
     err += (Kd.col(j) - col).squaredNorm();
   }
   CHECK(std::sqrt(err) <= 1e-6 * Kd.norm());

@@ -2,10 +2,9 @@
 // metrics (Turek–Hron CSM tip displacement within 1%, strip bending within 2% of beam theory and
 // the elastica, leaflet closure converging and closing).
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <filesystem>
-
-#include <fmt/format.h>
 
 #include "validation/case.hpp"
 
@@ -23,12 +22,18 @@ void run_quick(const std::string& name) {
   Report report;
   c->run(ctx, report);
   for (const auto& m : report.metrics())
-    MESSAGE(fmt::format("{}: {} = {:.6g} (reference {:.6g}, tolerance {:.3g}) {}", name, m.name, m.value,
-                        m.reference, m.tolerance, m.pass() ? "pass" : "FAIL"));
+    MESSAGE(fmt::format("{}: {} = {:.6g} (reference {:.6g}, tolerance {:.3g}) {}", name, m.name,
+                        m.value, m.reference, m.tolerance, m.pass() ? "pass" : "FAIL"));
   CHECK(report.all_pass());
 }
 }  // namespace
 
-TEST_CASE("turek_hron_csm --quick") { run_quick("turek_hron_csm"); }
-TEST_CASE("strip_bending --quick") { run_quick("strip_bending"); }
-TEST_CASE("leaflet_closure --quick") { run_quick("leaflet_closure"); }
+TEST_CASE("turek_hron_csm --quick") {
+  run_quick("turek_hron_csm");
+}
+TEST_CASE("strip_bending --quick") {
+  run_quick("strip_bending");
+}
+TEST_CASE("leaflet_closure --quick") {
+  run_quick("leaflet_closure");
+}

@@ -57,8 +57,7 @@ int main(int argc, char** argv) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   const double target = argc > 1 ? std::stod(argv[1]) : 0.00065;
-  const std::string file =
-      argc > 2 ? argv[2] : fmt::format("bench_pipe_{:.6f}.msh", target);
+  const std::string file = argc > 2 ? argv[2] : fmt::format("bench_pipe_{:.6f}.msh", target);
   if (rank == 0 && !std::filesystem::exists(file)) {
     const auto t0 = std::chrono::steady_clock::now();
     write_pipe_mesh(file, target);

@@ -3,13 +3,13 @@
 // and the 3x3x2 Gauss rules, and (with --static) the static solve time of the leaflet-closure case
 // on its fine 512-element mesh (one leaflet of the 1536-element valve).
 // Usage: bench_structure_forces [repetitions] [--static]
+#include <fmt/format.h>
+
 #include <chrono>
-#include <ctime>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "structure/mesh_generators.hpp"
 #include "structure/solid_forces.hpp"
@@ -37,23 +37,30 @@ int main(int argc, char** argv) {
     const auto t0 = std::chrono::steady_clock::now();
     double sink = 0;
     for (int r = 0; r < reps; ++r) sink += forces.internal_forces(x, f);
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / reps;
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / reps;
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c1);
     const double s = ((c1.tv_sec - c0.tv_sec) + 1e-9 * (c1.tv_nsec - c0.tv_nsec)) / reps;
     fmt::print("  wall {:.3f} ms per evaluation\n", 1e3 * wall);
-    fmt::print("gauss {}x{}x{}: {:.3f} ms CPU per evaluation, {:.1f} ns per element, {:.1f} ns per Gauss point "
-               "(target <= 2 ms) [{}]\n", rule[0], rule[1], rule[2], 1e3 * s, 1e9 * s / mesh.num_elements(),
-               1e9 * s / (mesh.num_elements() * forces.gauss_points_per_element()), sink > 0 ? "ok" : "?");
+    fmt::print(
+        "gauss {}x{}x{}: {:.3f} ms CPU per evaluation, {:.1f} ns per element, {:.1f} ns per Gauss "
+        "point "
+        "(target <= 2 ms) [{}]\n",
+        rule[0], rule[1], rule[2], 1e3 * s, 1e9 * s / mesh.num_elements(),
+        1e9 * s / (mesh.num_elements() * forces.gauss_points_per_element()), sink > 0 ? "ok" : "?");
   }
   if (argc > 2 && std::string(argv[2]) == "--static") {
     timespec c0, c1;
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c0);
     const auto lc = valsalva::validation::close_leaflet(true, 300.0, false);
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c1);
-    fmt::print("leaflet closure static solve, {} Q2 elements, 300 Pa: {} after {} Newton iterations ({} cuts), "
-               "{:.1f} s wall, {:.1f} s CPU [{}]\n", lc.mesh.num_elements(), lc.result.converged ? "converged" : "FAILED",
-               lc.result.iterations, lc.result.cuts, lc.seconds,
-               (c1.tv_sec - c0.tv_sec) + 1e-9 * (c1.tv_nsec - c0.tv_nsec), lc.result.solver);
+    fmt::print(
+        "leaflet closure static solve, {} Q2 elements, 300 Pa: {} after {} Newton iterations ({} "
+        "cuts), "
+        "{:.1f} s wall, {:.1f} s CPU [{}]\n",
+        lc.mesh.num_elements(), lc.result.converged ? "converged" : "FAILED", lc.result.iterations,
+        lc.result.cuts, lc.seconds, (c1.tv_sec - c0.tv_sec) + 1e-9 * (c1.tv_nsec - c0.tv_nsec),
+        lc.result.solver);
   }
   return 0;
 }

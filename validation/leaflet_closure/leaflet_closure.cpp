@@ -12,12 +12,12 @@
 // leaflets keep it short of that, hence the stated bound r_mid <= 0.35 R).
 #include "validation/leaflet_closure/leaflet_closure.hpp"
 
+#include <fmt/format.h>
+#include <fmt/os.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-
-#include <fmt/format.h>
-#include <fmt/os.h>
 
 #include "io/solid_output.hpp"
 #include "structure/mesh_generators.hpp"
@@ -35,9 +35,11 @@ SolidMesh scalloped_leaflet(const LeafletGeometry& g, int n_angle, int n_height)
     const double r = g.radius + (s[2] - 0.5) * g.thickness;
     return Vec3(r * std::cos(th), r * std::sin(th), za + s[1] * (g.height - za));
   });
-  m.source = fmt::format("<scalloped leaflet R={} t={} H={} post={}>", g.radius, g.thickness, g.height, g.post);
+  m.source = fmt::format("<scalloped leaflet R={} t={} H={} post={}>", g.radius, g.thickness,
+                         g.height, g.post);
   std::vector<int> att = m.node_set("v0");
-  for (const char* side : {"u0", "u1"}) att.insert(att.end(), m.node_set(side).begin(), m.node_set(side).end());
+  for (const char* side : {"u0", "u1"})
+    att.insert(att.end(), m.node_set(side).begin(), m.node_set(side).end());
   std::sort(att.begin(), att.end());
   att.erase(std::unique(att.begin(), att.end()), att.end());
   m.node_sets["attachment"] = att;
@@ -52,7 +54,8 @@ LeafletClosure close_leaflet(bool fine, double pressure, bool verbose) {
   c.mesh = scalloped_leaflet(c.geometry, fine ? 32 : 16, fine ? 16 : 8);
   c.pressure = pressure;
   for (int n : c.mesh.node_set("free_edge"))
-    if (std::abs(c.mesh.X(1, n)) < 1e-12 && std::abs(c.mesh.X(0, n) - c.geometry.radius) < 1e-9) c.free_edge_mid = n;
+    if (std::abs(c.mesh.X(1, n)) < 1e-12 && std::abs(c.mesh.X(0, n) - c.geometry.radius) < 1e-9)
+      c.free_edge_mid = n;
   const auto mat = make_neo_hookean(2.4e6, 1.6e6);
   SolidForces forces(c.mesh, *mat);
   StaticProblem prob;
@@ -81,13 +84,15 @@ void write_geometry(const LeafletClosure& c, const std::filesystem::path& dir) {
   auto nodes = fmt::output_file((dir / "closed_leaflet_nodes.csv").string());
   nodes.print("node,X,Y,Z,x,y,z\n");
   for (int n = 0; n < c.mesh.num_nodes(); ++n)
-    nodes.print("{},{:.10e},{:.10e},{:.10e},{:.10e},{:.10e},{:.10e}\n", n, c.mesh.X(0, n), c.mesh.X(1, n),
-                c.mesh.X(2, n), c.result.x(0, n), c.result.x(1, n), c.result.x(2, n));
+    nodes.print("{},{:.10e},{:.10e},{:.10e},{:.10e},{:.10e},{:.10e}\n", n, c.mesh.X(0, n),
+                c.mesh.X(1, n), c.mesh.X(2, n), c.result.x(0, n), c.result.x(1, n),
+                c.result.x(2, n));
   auto cells = fmt::output_file((dir / "closed_leaflet_hex27.csv").string());
   cells.print("# Q2 hexahedra, 27 nodes each in Gmsh order, 0-based node ids\n");
   const int nen = c.mesh.nodes_per_element();
   for (int e = 0; e < c.mesh.num_elements(); ++e) {
-    for (int a = 0; a < nen; ++a) cells.print("{}{}", c.mesh.element_nodes(e)[a], a + 1 < nen ? "," : "\n");
+    for (int a = 0; a < nen; ++a)
+      cells.print("{}{}", c.mesh.element_nodes(e)[a], a + 1 < nen ? "," : "\n");
   }
 }
 
@@ -96,30 +101,37 @@ void write_lines(const LeafletClosure& c, const std::filesystem::path& dir) {
   auto out = fmt::output_file((dir / "leaflet_lines.csv").string());
   out.print("line,X,Y,Z,x,y,z\n");
   const double R = c.geometry.radius;
-  auto on_mid = [&](int n) { return std::abs(std::hypot(c.mesh.X(0, n), c.mesh.X(1, n)) - R) < 1e-9; };
+  auto on_mid = [&](int n) {
+    return std::abs(std::hypot(c.mesh.X(0, n), c.mesh.X(1, n)) - R) < 1e-9;
+  };
   std::vector<int> edge, sym;
   for (int n : c.mesh.node_set("free_edge"))
     if (on_mid(n)) edge.push_back(n);
   for (int n = 0; n < c.mesh.num_nodes(); ++n)
     if (on_mid(n) && std::abs(c.mesh.X(1, n)) < 1e-12) sym.push_back(n);
-  std::sort(edge.begin(), edge.end(), [&](int a, int b) { return c.mesh.X(1, a) < c.mesh.X(1, b); });
+  std::sort(edge.begin(), edge.end(),
+            [&](int a, int b) { return c.mesh.X(1, a) < c.mesh.X(1, b); });
   std::sort(sym.begin(), sym.end(), [&](int a, int b) { return c.mesh.X(2, a) < c.mesh.X(2, b); });
   for (auto [name, ids] : {std::pair{"free_edge", &edge}, std::pair{"symmetry", &sym}})
     for (int n : *ids)
-      out.print("{},{:.8e},{:.8e},{:.8e},{:.8e},{:.8e},{:.8e}\n", name, c.mesh.X(0, n), c.mesh.X(1, n), c.mesh.X(2, n),
-                c.result.x(0, n), c.result.x(1, n), c.result.x(2, n));
+      out.print("{},{:.8e},{:.8e},{:.8e},{:.8e},{:.8e},{:.8e}\n", name, c.mesh.X(0, n),
+                c.mesh.X(1, n), c.mesh.X(2, n), c.result.x(0, n), c.result.x(1, n),
+                c.result.x(2, n));
 }
 
 void run(const Context& ctx, Report& report) {
-  const double pressure = 300.0;  // [Pa], 2.25 mmHg: beyond the snap-through (150 Pa does not invert the 128-element leaflet)
+  const double pressure = 300.0;  // [Pa], 2.25 mmHg: beyond the snap-through (150 Pa does not
+                                  // invert the 128-element leaflet)
   const LeafletClosure c = close_leaflet(!ctx.quick, pressure, false);
-  report.add("Newton converged to full pressure (1 = yes)", c.result.converged ? 1.0 : 0.0, 1.0, 0.0);
-  report.add("final relative residual", c.result.last_residuals.empty() ? INFINITY : c.result.last_residuals.back(),
-             0.0, 1e-6, Check::at_most);
+  report.add("Newton converged to full pressure (1 = yes)", c.result.converged ? 1.0 : 0.0, 1.0,
+             0.0);
+  report.add("final relative residual",
+             c.result.last_residuals.empty() ? INFINITY : c.result.last_residuals.back(), 0.0, 1e-6,
+             Check::at_most);
   const auto& x = c.result.x;
   const double r_mid = std::hypot(x(0, c.free_edge_mid), x(1, c.free_edge_mid));
-  report.add("free-edge midpoint radius / R (closed: towards 0)", r_mid / c.geometry.radius, 0.0, 0.35,
-             Check::at_most);
+  report.add("free-edge midpoint radius / R (closed: towards 0)", r_mid / c.geometry.radius, 0.0,
+             0.35, Check::at_most);
   write_geometry(c, ctx.out_dir);
   write_lines(c, ctx.out_dir);
   // ParaView view of the closed leaflet with its stresses (closed_leaflet.xmf + .h5).
@@ -127,11 +139,14 @@ void run(const Context& ctx, Report& report) {
   const NodalStress stress = nodal_stress(SolidForces(c.mesh, *mat), x);
   io::write_solid_results(ctx.out_dir, "closed_leaflet", c.mesh, x, &stress);
   auto s = fmt::output_file((ctx.out_dir / "solve.csv").string());
-  s.print("elements,pressure_Pa,converged,load_steps,newton_iterations,cuts,seconds,solver,free_edge_mid_x_m,"
-          "free_edge_mid_z_m,max_von_mises_Pa\n");
-  s.print("{},{},{},{},{},{},{:.3f},{},{:.6e},{:.6e},{:.6e}\n", c.mesh.num_elements(), pressure, c.result.converged,
-          c.result.steps, c.result.iterations, c.result.cuts, c.seconds, c.result.solver, x(0, c.free_edge_mid),
-          x(2, c.free_edge_mid), stress.von_mises.maxCoeff());
+  s.print(
+      "elements,pressure_Pa,converged,load_steps,newton_iterations,cuts,seconds,solver,free_edge_"
+      "mid_x_m,"
+      "free_edge_mid_z_m,max_von_mises_Pa\n");
+  s.print("{},{},{},{},{},{},{:.3f},{},{:.6e},{:.6e},{:.6e}\n", c.mesh.num_elements(), pressure,
+          c.result.converged, c.result.steps, c.result.iterations, c.result.cuts, c.seconds,
+          c.result.solver, x(0, c.free_edge_mid), x(2, c.free_edge_mid),
+          stress.von_mises.maxCoeff());
   if (!c.result.converged) fmt::print(stderr, "leaflet_closure: {}\n", c.result.diagnosis);
 }
 
@@ -139,7 +154,9 @@ void run(const Context& ctx, Report& report) {
 
 Case leaflet_closure_case() {
   return {"leaflet_closure",
-          "Cylindrical leaflet (R 12.5 mm, t 0.15 mm), scalloped attachment clamped, closed by pressure", run};
+          "Cylindrical leaflet (R 12.5 mm, t 0.15 mm), scalloped attachment clamped, closed by "
+          "pressure",
+          run};
 }
 
 }  // namespace valsalva::validation

@@ -18,7 +18,7 @@ struct LeafletClosure {
   structure::SolidMesh mesh;
   structure::NewtonResult result;
   LeafletGeometry geometry;
-  double pressure = 0;  // [Pa] on the aortic (outer) face, towards the axis
+  double pressure = 0;     // [Pa] on the aortic (outer) face, towards the axis
   int free_edge_mid = -1;  // node: free-edge midpoint on the mid-surface
   double seconds = 0;      // wall time of the static solve
 };

@@ -60,14 +60,17 @@ void run(const Context& ctx, Report& report) {
   MPI_Comm_rank(ctx.comm, &rank);
   std::unique_ptr<fmt::ostream> csv;
   if (rank == 0) {
-    csv = std::make_unique<fmt::ostream>(fmt::output_file((ctx.out_dir / "identities.csv").string()));
+    csv =
+        std::make_unique<fmt::ostream>(fmt::output_file((ctx.out_dir / "identities.csv").string()));
     csv->print("mesh,nodes,volume_error,closure_error,gradient_error\n");
   }
   for (const auto& m : meshes) {
     const auto id = check_identities(m.mesh, ctx.comm);
-    report.add(m.name + ": dual volume sum rel. error", id.volume_error, 0.0, 1e-12, Check::at_most);
+    report.add(m.name + ": dual volume sum rel. error", id.volume_error, 0.0, 1e-12,
+               Check::at_most);
     report.add(m.name + ": max dual closure / h^2", id.closure_error, 0.0, 1e-12, Check::at_most);
-    report.add(m.name + ": linear gradient rel. error", id.gradient_error, 0.0, 1e-10, Check::at_most);
+    report.add(m.name + ": linear gradient rel. error", id.gradient_error, 0.0, 1e-10,
+               Check::at_most);
     if (csv)
       csv->print("{},{},{:.6e},{:.6e},{:.6e}\n", m.name, id.nodes, id.volume_error,
                  id.closure_error, id.gradient_error);

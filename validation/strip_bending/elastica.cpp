@@ -11,14 +11,17 @@ struct State {
   double th, dth, y, x;
 };
 State shoot(double alpha, double c, int n) {
-  auto rhs = [alpha](const State& s) { return State{s.dth, -alpha * std::cos(s.th), std::sin(s.th), std::cos(s.th)}; };
+  auto rhs = [alpha](const State& s) {
+    return State{s.dth, -alpha * std::cos(s.th), std::sin(s.th), std::cos(s.th)};
+  };
   auto axpy = [](const State& a, double h, const State& b) {
     return State{a.th + h * b.th, a.dth + h * b.dth, a.y + h * b.y, a.x + h * b.x};
   };
   State s{0, c, 0, 0};
   const double h = 1.0 / n;
   for (int i = 0; i < n; ++i) {
-    const State k1 = rhs(s), k2 = rhs(axpy(s, h / 2, k1)), k3 = rhs(axpy(s, h / 2, k2)), k4 = rhs(axpy(s, h, k3));
+    const State k1 = rhs(s), k2 = rhs(axpy(s, h / 2, k1)), k3 = rhs(axpy(s, h / 2, k2)),
+                k4 = rhs(axpy(s, h, k3));
     s.th += h / 6 * (k1.th + 2 * k2.th + 2 * k3.th + k4.th);
     s.dth += h / 6 * (k1.dth + 2 * k2.dth + 2 * k3.dth + k4.dth);
     s.y += h / 6 * (k1.y + 2 * k2.y + 2 * k3.y + k4.y);
@@ -29,7 +32,8 @@ State shoot(double alpha, double c, int n) {
 }  // namespace
 
 ElasticaTip elastica_tip(double alpha, int steps) {
-  if (!(alpha > 0 && alpha < 20)) throw std::invalid_argument("elastica_tip: alpha must be in (0, 20)");
+  if (!(alpha > 0 && alpha < 20))
+    throw std::invalid_argument("elastica_tip: alpha must be in (0, 20)");
   // theta'(0) = alpha * x_tip lies in (0, alpha]; theta'(1) changes sign on that interval.
   double lo = 0, hi = alpha;
   if (shoot(alpha, hi, steps).dth < 0) throw std::runtime_error("elastica_tip: no bracket");

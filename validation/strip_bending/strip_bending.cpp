@@ -6,10 +6,10 @@
 //  - large loads alpha = P L^2/(EI) up to 5: tip deflection vs the elastica (shooting method in
 //    elastica.cpp), within 2% of the reference deflection (aspect ratio 7 up to alpha = 2, the
 //    finest mesh of the run for every alpha).
-#include <cmath>
-
 #include <fmt/format.h>
 #include <fmt/os.h>
+
+#include <cmath>
 
 #include "structure/mesh_generators.hpp"
 #include "structure/static_solver.hpp"
@@ -65,36 +65,42 @@ void run(const Context& ctx, Report& report) {
   for (int n : meshes) {
     const Tip t = solve_strip(n, a0);
     const double ref = a0 / 3;
-    out.print("{},{},{:.2f},{:.8e},{:.8e},{:.3e},beam\n", a0, n, kL / n / kT, t.v / kL, ref, t.v / kL / ref - 1);
+    out.print("{},{},{:.2f},{:.8e},{:.8e},{:.3e},beam\n", a0, n, kL / n / kT, t.v / kL, ref,
+              t.v / kL / ref - 1);
     if (n == meshes.front())
-      report.add(fmt::format("small load tip deflection / beam theory, aspect ratio {:.0f}", kL / n / kT),
-                 t.v / kL / ref, 1.0, 0.02);
+      report.add(
+          fmt::format("small load tip deflection / beam theory, aspect ratio {:.0f}", kL / n / kT),
+          t.v / kL / ref, 1.0, 0.02);
   }
-  const std::vector<double> alphas = ctx.quick ? std::vector<double>{2.0} : std::vector<double>{1.0, 2.0, 5.0};
+  const std::vector<double> alphas =
+      ctx.quick ? std::vector<double>{2.0} : std::vector<double>{1.0, 2.0, 5.0};
   for (double a : alphas) {
     const ElasticaTip ref = elastica_tip(a);
     for (int n : meshes) {
       const Tip t = solve_strip(n, a);
-      out.print("{},{},{:.2f},{:.8e},{:.8e},{:.3e},elastica\n", a, n, kL / n / kT, t.v / kL, ref.deflection,
-                t.v / kL / ref.deflection - 1);
+      out.print("{},{},{:.2f},{:.8e},{:.8e},{:.3e},elastica\n", a, n, kL / n / kT, t.v / kL,
+                ref.deflection, t.v / kL / ref.deflection - 1);
       // Asserted on the finest mesh of the run, and at aspect ratio 7 up to alpha = 2. Measured at
-      // aspect ratio 7 and alpha = 5 (tip rotation ~70 degrees): -2.2%, just outside 2%, so strongly
-      // bent leaflet regions want elements at most ~3.5 times longer than thick (-0.15% there).
+      // aspect ratio 7 and alpha = 5 (tip rotation ~70 degrees): -2.2%, just outside 2%, so
+      // strongly bent leaflet regions want elements at most ~3.5 times longer than thick (-0.15%
+      // there).
       if (n == meshes.back() || a <= 2)
-        report.add(fmt::format("alpha={} tip deflection / elastica, aspect ratio {:.1f}", a, kL / n / kT),
-                   t.v / kL / ref.deflection, 1.0, 0.02);
+        report.add(
+            fmt::format("alpha={} tip deflection / elastica, aspect ratio {:.1f}", a, kL / n / kT),
+            t.v / kL / ref.deflection, 1.0, 0.02);
     }
   }
   // The shooting reference itself against Bisshopp & Drucker's tabulated value at alpha = 1.
-  report.add("elastica shooting: deflection/L at alpha=1 (Bisshopp-Drucker 0.30172)", elastica_tip(1.0).deflection,
-             0.30172, 5e-5);
+  report.add("elastica shooting: deflection/L at alpha=1 (Bisshopp-Drucker 0.30172)",
+             elastica_tip(1.0).deflection, 0.30172, 5e-5);
 }
 
 }  // namespace
 
 Case strip_bending_case() {
   return {"strip_bending",
-          "Cantilever strip 0.15 mm thick, one Q2 element through the thickness: beam theory and elastica",
+          "Cantilever strip 0.15 mm thick, one Q2 element through the thickness: beam theory and "
+          "elastica",
           run};
 }
 

@@ -22,8 +22,9 @@ void run(const Context& ctx, Report& report) {
   std::unique_ptr<fmt::ostream> csv;
   if (rank == 0) {
     csv = std::make_unique<fmt::ostream>(fmt::output_file((ctx.out_dir / "errors.csv").string()));
-    csv->print("mesh,n,h,nodes,steps,dt,velocity_l2,velocity_linf,pressure_l2,max_divergence,"
-               "poisson_iterations,wall_seconds\n");
+    csv->print(
+        "mesh,n,h,nodes,steps,dt,velocity_l2,velocity_linf,pressure_l2,max_divergence,"
+        "poisson_iterations,wall_seconds\n");
   }
   struct Kind {
     std::string name, type;
@@ -34,8 +35,8 @@ void run(const Context& ctx, Report& report) {
   const std::vector<Kind> kinds = {{"hexa", "hexa", 0.0, 1.9, 0.1},
                                    {"tetra", "tetra", 0.0, 1.9, 0.5},
                                    {"tetra_perturbed", "tetra", 0.2, 1.0, 0.5}};
-  const std::vector<int> levels = ctx.quick ? std::vector<int>{16, 32, 64}
-                                            : std::vector<int>{16, 32, 64, 128};
+  const std::vector<int> levels =
+      ctx.quick ? std::vector<int>{16, 32, 64} : std::vector<int>{16, 32, 64, 128};
   for (const auto& kind : kinds) {
     std::vector<TgvResult> results;
     for (int n : levels) {
@@ -49,8 +50,8 @@ void run(const Context& ctx, Report& report) {
       results.push_back(r);
       if (csv)
         csv->print("{},{},{:.6e},{},{},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{},{:.4f}\n", kind.name,
-                   n, r.h, r.nodes, r.steps, r.dt, r.velocity_l2, r.velocity_linf,
-                   r.pressure_l2, r.max_divergence, r.max_poisson_iterations, r.wall_seconds);
+                   n, r.h, r.nodes, r.steps, r.dt, r.velocity_l2, r.velocity_linf, r.pressure_l2,
+                   r.max_divergence, r.max_poisson_iterations, r.wall_seconds);
     }
     const auto& a = results[results.size() - 2];
     const auto& b = results.back();
@@ -63,8 +64,8 @@ void run(const Context& ctx, Report& report) {
     // Finest-level error: bounded by the measured value (n 64: 1.2e-5 hexa, 3.9e-4 tetra,
     // 9.0e-4 perturbed) with a factor 2 margin, so a regression shows.
     const double bound = kind.name == "hexa" ? 2.4e-5 : kind.name == "tetra" ? 8e-4 : 1.8e-3;
-    report.add(kind.name + fmt::format(": velocity L2 error, n {}", b.n), b.velocity_l2, bound,
-               0.0, Check::at_most);
+    report.add(kind.name + fmt::format(": velocity L2 error, n {}", b.n), b.velocity_l2, bound, 0.0,
+               Check::at_most);
   }
 }
 

@@ -21,7 +21,7 @@ struct TgvSpec {
   int nz = 3;                      // cells across the slab
   double reynolds = 100;
   double t_end = 1.0;
-  double cfl = 0.5;                // dt = t_end / ceil(t_end / (cfl h / U))
+  double cfl = 0.5;  // dt = t_end / ceil(t_end / (cfl h / U))
   flow::PoissonOptions poisson;
 };
 

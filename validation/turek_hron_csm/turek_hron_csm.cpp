@@ -3,13 +3,13 @@
 // one layer of Q2 hexahedra with every node fixed in z. The clamped end follows the cylinder arc.
 // Reference: tip displacement of point A = (0.6, 0.2), FeatFlow level 5+1 values
 // (../shared/refdata/turek_hron_fsi). Metrics: |u_A - ref| <= 1% of |ref| on the finest mesh.
+#include <fmt/format.h>
+#include <fmt/os.h>
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-
-#include <fmt/format.h>
-#include <fmt/os.h>
 
 #include "structure/mesh_generators.hpp"
 #include "structure/static_solver.hpp"
@@ -31,28 +31,35 @@ std::vector<std::string> split_csv(const std::string& line) {
   std::string cur;
   bool quoted = false;
   for (char c : line) {
-    if (c == '"') quoted = !quoted;
-    else if (c == ',' && !quoted) { out.push_back(cur); cur.clear(); }
-    else cur += c;
+    if (c == '"')
+      quoted = !quoted;
+    else if (c == ',' && !quoted) {
+      out.push_back(cur);
+      cur.clear();
+    } else
+      cur += c;
   }
   out.push_back(cur);
   return out;
 }
 
-double parse(const std::string& s, const std::filesystem::path& file, int line, const std::string& what) {
+double parse(const std::string& s, const std::filesystem::path& file, int line,
+             const std::string& what) {
   try {
     std::size_t pos = 0;
     const double v = std::stod(s, &pos);
     if (pos == s.size()) return v;
   } catch (const std::exception&) {
   }
-  throw std::runtime_error(fmt::format("{}:{}: cannot read {} from '{}'", file.string(), line, what, s));
+  throw std::runtime_error(
+      fmt::format("{}:{}: cannot read {} from '{}'", file.string(), line, what, s));
 }
 
 CsmParams read_params(const std::filesystem::path& dir, const std::string& name) {
   CsmParams p;
   bool have_params = false, have_ux = false, have_uy = false;
-  const auto pfile = dir / "turek_hron_parameters.csv", rfile = dir / "turek_hron_reference_values.csv";
+  const auto pfile = dir / "turek_hron_parameters.csv",
+             rfile = dir / "turek_hron_reference_values.csv";
   std::ifstream in(pfile);
   if (!in) throw std::runtime_error(fmt::format("turek_hron_csm: cannot open {}", pfile.string()));
   std::string line;
@@ -71,12 +78,18 @@ CsmParams read_params(const std::filesystem::path& dir, const std::string& name)
   for (int ln = 1; std::getline(rin, line); ++ln) {
     const auto f = split_csv(line);
     if (line.empty() || line[0] == '#' || f[0] != name || f.at(5) != "FF-page") continue;
-    if (f[1] == "ux_A") { p.ux_ref = parse(f.at(2), rfile, ln, "ux_A"); have_ux = true; }
-    if (f[1] == "uy_A") { p.uy_ref = parse(f.at(2), rfile, ln, "uy_A"); have_uy = true; }
+    if (f[1] == "ux_A") {
+      p.ux_ref = parse(f.at(2), rfile, ln, "ux_A");
+      have_ux = true;
+    }
+    if (f[1] == "uy_A") {
+      p.uy_ref = parse(f.at(2), rfile, ln, "uy_A");
+      have_uy = true;
+    }
   }
   if (!have_params || !have_ux || !have_uy)
-    throw std::runtime_error(fmt::format("turek_hron_csm: {} parameters or FF-page references missing in {}",
-                                         name, dir.string()));
+    throw std::runtime_error(fmt::format(
+        "turek_hron_csm: {} parameters or FF-page references missing in {}", name, dir.string()));
   return p;
 }
 
@@ -132,20 +145,24 @@ void run(const Context& ctx, Report& report) {
       fine = solve_csm(p, nx, ny);
       out.print("{},{},{},{},{:.8e},{:.8e},{:.8e},{:.8e},{:.3e},{:.3e},{}\n", name, nx, ny,
                 3 * (2 * nx + 1) * (2 * ny + 1) * 3, fine.ux, fine.uy, p.ux_ref, p.uy_ref,
-                std::abs(fine.ux / p.ux_ref - 1), std::abs(fine.uy / p.uy_ref - 1), fine.iterations);
+                std::abs(fine.ux / p.ux_ref - 1), std::abs(fine.uy / p.uy_ref - 1),
+                fine.iterations);
     }
     const int nx = meshes.back()[0], ny = meshes.back()[1];
-    report.add(fmt::format("{} ux_A [m], Q2 {}x{}", name, nx, ny), fine.ux, p.ux_ref, 0.01 * std::abs(p.ux_ref));
-    report.add(fmt::format("{} uy_A [m], Q2 {}x{}", name, nx, ny), fine.uy, p.uy_ref, 0.01 * std::abs(p.uy_ref));
+    report.add(fmt::format("{} ux_A [m], Q2 {}x{}", name, nx, ny), fine.ux, p.ux_ref,
+               0.01 * std::abs(p.ux_ref));
+    report.add(fmt::format("{} uy_A [m], Q2 {}x{}", name, nx, ny), fine.uy, p.uy_ref,
+               0.01 * std::abs(p.uy_ref));
   }
 }
 
 }  // namespace
 
 Case turek_hron_csm_case() {
-  return {"turek_hron_csm",
-          "Turek-Hron CSM1/CSM2 gravity-loaded St Venant-Kirchhoff bar: tip displacement vs FeatFlow",
-          run};
+  return {
+      "turek_hron_csm",
+      "Turek-Hron CSM1/CSM2 gravity-loaded St Venant-Kirchhoff bar: tip displacement vs FeatFlow",
+      run};
 }
 
 }  // namespace valsalva::validation
