@@ -12,10 +12,15 @@ Case strip_bending_case();
 Case leaflet_closure_case();
 
 const std::vector<Case>& all_cases() {
+  // clang-format off
   static const std::vector<Case> cases = {
-      mesh_metrics_case(),  taylor_green_case(),    turek_hron_csm_case(),
-      strip_bending_case(), leaflet_closure_case(),
+      mesh_metrics_case(),
+      taylor_green_case(),
+      turek_hron_csm_case(),
+      strip_bending_case(),
+      leaflet_closure_case(),
   };
+  // clang-format on
   return cases;
 }
 
