@@ -1,0 +1,30 @@
+// Mesh of the DFG "flow around a cylinder" channel (Schäfer & Turek, "Benchmark computations of
+// laminar flow around a cylinder", Notes Numer. Fluid Mech. 52, 1996): a 2.2 x 0.41 channel
+// with a cylinder of diameter 0.1 centred at (0.2, 0.2), as a periodic slab in z. Gmsh's
+// OpenCASCADE kernel meshes the 2D section with triangles, graded from size_near on the
+// cylinder to size_far at `grading_distance` from it, and extrudes it into `layers` prism
+// layers; the prisms are split into tetrahedra (io/prism_split.hpp) so that the Poisson matrix
+// gets consistent P1 weights. Deterministic (one thread, fixed seed).
+// Patches: inlet (x = 0), outlet (x = 2.2), wall (y = 0 and y = 0.41), cylinder, front (z = 0),
+// back (z = thickness), to be paired as periodic by the caller; region "fluid".
+#pragma once
+
+#include "flow/mesh.hpp"
+
+namespace valsalva::io {
+
+struct CylinderChannelSpec {
+  double length = 2.2, height = 0.41;        // m
+  double centre_x = 0.2, centre_y = 0.2;     // m
+  double diameter = 0.1;                     // m
+  double size_near = 0.01, size_far = 0.04;  // m, triangle edge lengths
+  double grading_distance = 0.3;             // m from the cylinder surface
+  double thickness = 0.03;                   // m, slab thickness in z
+  int layers = 3;                            // >= 3 so periodic images stay distinct
+};
+
+// Throws std::invalid_argument for an inconsistent spec (cylinder not inside the channel,
+// non-positive sizes, fewer than 3 layers).
+flow::Mesh generate_cylinder_channel_mesh(const CylinderChannelSpec& spec);
+
+}  // namespace valsalva::io

@@ -1,0 +1,86 @@
+// DFG cylinder-channel slab mesh and the conforming prism split it relies on.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "flow/dual_metrics.hpp"
+#include "flow/mesh_check.hpp"
+#include "io/box_generator.hpp"
+#include "io/cylinder_channel_generator.hpp"
+#include "io/prism_split.hpp"
+
+using namespace valsalva;
+
+namespace {
+
+double total_volume(const flow::Mesh& mesh) {
+  double v = 0;
+  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) v += flow::cell_volume(mesh, c);
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("prism split: conforming tetrahedra of the same volume, quad faces cut alike") {
+  io::BoxSpec spec;
+  spec.cells = {4, 3, 5};
+  spec.length = Eigen::Vector3d(1.0, 0.7, 1.3);
+  spec.cell_type = "prism";
+  spec.perturbation = 0.2;
+  const auto prisms = io::generate_box(spec);
+  const auto tets = io::split_prisms_to_tetrahedra(prisms);
+  CHECK(tets.num_cells() == 3 * prisms.num_cells());
+  for (auto t : tets.cell_types) REQUIRE(t == flow::CellType::tetra);
+  // check_mesh rejects non-conforming faces (a face seen once and untagged) and inverted cells.
+  CHECK_NOTHROW(flow::check_mesh(tets));
+  CHECK(total_volume(tets) == doctest::Approx(total_volume(prisms)).epsilon(1e-13));
+  for (flow::GlobalIndex c = 0; c < tets.num_cells(); ++c) CHECK(flow::cell_volume(tets, c) > 0);
+}
+
+TEST_CASE("prism split refuses hexahedra") {
+  io::BoxSpec spec;
+  spec.cells = {2, 2, 2};
+  CHECK_THROWS_AS(io::split_prisms_to_tetrahedra(io::generate_box(spec)), flow::MeshError);
+}
+
+TEST_CASE("cylinder channel: patches, volume, periodic slab metrics") {
+  io::CylinderChannelSpec spec;
+  spec.size_near = 0.02;
+  spec.size_far = 0.08;
+  auto mesh = io::generate_cylinder_channel_mesh(spec);
+  MESSAGE("cylinder channel: ", mesh.num_nodes(), " nodes, ", mesh.num_cells(), " tetrahedra");
+  for (const char* p : {"inlet", "outlet", "wall", "cylinder", "front", "back"})
+    CHECK_MESSAGE(mesh.patch_index(p) >= 0, p);
+  CHECK_NOTHROW(flow::check_mesh(mesh));
+  // Volume: channel minus the inscribed polygon of the cylinder (deficit below (2 pi/n)^2/6 of
+  // the disc with n >= pi d / size_near chords), times the thickness.
+  const double r = spec.diameter / 2;
+  const double disc = std::numbers::pi * r * r;
+  const double exact = (spec.length * spec.height - disc) * spec.thickness;
+  const double n_chords = std::numbers::pi * spec.diameter / spec.size_near;
+  const double t = 2 * std::numbers::pi / n_chords;
+  const double volume = total_volume(mesh);
+  MESSAGE("volume error ", volume / exact - 1);
+  CHECK(volume > exact);
+  CHECK(volume - exact < 1.5 * disc * t * t / 6 * spec.thickness);
+  // Nodes of the cylinder patch lie on the circle; front/back pair as periodic.
+  const int cyl = mesh.patch_index("cylinder");
+  double off = 0;
+  for (flow::GlobalIndex f = 0; f < mesh.num_faces(); ++f)
+    if (mesh.face_patches[f] == cyl)
+      for (auto n : mesh.face(f))
+        off = std::max(off, std::abs(std::hypot(mesh.nodes[n].x() - spec.centre_x,
+                                                mesh.nodes[n].y() - spec.centre_y) -
+                                     r));
+  CHECK(off < 1e-9 * r);
+  mesh.periodic.push_back({"front", "back", Eigen::Vector3d(0, 0, spec.thickness)});
+  const auto metrics = flow::compute_dual_metrics(mesh);
+  double dual = 0;
+  for (double v : metrics.volume) dual += v;
+  CHECK(dual == doctest::Approx(volume).epsilon(1e-12));
+  // Deterministic: the same spec gives the same mesh.
+  const auto again = io::generate_cylinder_channel_mesh(spec);
+  CHECK(again.num_cells() == mesh.num_cells());
+  CHECK(again.nodes == mesh.nodes);
+}
