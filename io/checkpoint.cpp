@@ -1,0 +1,197 @@
+#include "io/checkpoint.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstring>
+#include <regex>
+#include <stdexcept>
+
+namespace valsalva::io {
+
+namespace {
+
+// FNV-1a over 64-bit words (one multiply per word keeps hashing a 3 M-node mesh fast).
+struct Hasher {
+  std::uint64_t h = 14695981039346656037ull;
+  void add(std::uint64_t word) {
+    h ^= word;
+    h *= 1099511628211ull;
+  }
+  void add(double x) {
+    std::uint64_t w = 0;
+    std::memcpy(&w, &x, sizeof w);
+    add(w);
+  }
+};
+
+double hi(std::uint64_t h) {
+  return static_cast<double>(h >> 32);
+}
+double lo(std::uint64_t h) {
+  return static_cast<double>(h & 0xffffffffull);
+}
+
+std::string hex(std::uint64_t h) {
+  return fmt::format("{:016x}", h);
+}
+
+// Collective: rank 0 runs `action`; its error, if any, is raised on every rank.
+template <class F>
+void on_root(const flow::Comm& comm, F&& action) {
+  std::string error;
+  if (comm.root()) {
+    try {
+      action();
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  }
+  h5::settle(comm.get(), error);
+}
+
+}  // namespace
+
+std::uint64_t mesh_hash(const flow::Mesh& mesh) {
+  Hasher hash;
+  hash.add(static_cast<std::uint64_t>(mesh.num_nodes()));
+  for (const auto& x : mesh.nodes)
+    for (int c = 0; c < 3; ++c) hash.add(x[c]);
+  hash.add(static_cast<std::uint64_t>(mesh.num_cells()));
+  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
+    hash.add(static_cast<std::uint64_t>(mesh.cell_types[c]));
+    for (auto n : mesh.cell(c)) hash.add(static_cast<std::uint64_t>(n));
+  }
+  return hash.h;
+}
+
+CheckpointWriter::CheckpointWriter(const flow::LocalMesh& local, std::uint64_t mesh_hash,
+                                   std::filesystem::path dir, std::string basename, int keep)
+    : local_(&local),
+      hash_(mesh_hash),
+      dir_(std::move(dir)),
+      basename_(std::move(basename)),
+      keep_(keep) {
+  if (keep_ < 1) throw std::invalid_argument(fmt::format("checkpoint: keep = {} < 1", keep_));
+  owned_rows_.assign(local.dual_node.begin(), local.dual_node.begin() + local.num_owned);
+  on_root(local.comm, [&] { std::filesystem::create_directories(dir_); });
+}
+
+std::filesystem::path CheckpointWriter::path_of(std::int64_t step) const {
+  return dir_ / fmt::format("{}_{:09d}.h5", basename_, step);
+}
+
+std::filesystem::path CheckpointWriter::write(const flow::FlowState& state, std::int64_t step,
+                                              double dt, std::span<const CheckpointArray> extras) {
+  const flow::LocalMesh& local = *local_;
+  const auto final_path = path_of(step);
+  auto tmp_path = final_path;
+  tmp_path += ".tmp";
+  {
+    h5::File file(local.comm.get(), tmp_path, h5::Mode::create);
+    file.write_attribute("format_version", checkpoint_format_version);
+    file.write_attribute("time", state.time);
+    file.write_attribute("step", static_cast<double>(step));
+    file.write_attribute("dt", dt);
+    file.write_attribute("global_nodes", static_cast<double>(local.global_nodes));
+    file.write_attribute("mesh_hash_hi", hi(hash_));
+    file.write_attribute("mesh_hash_lo", lo(hash_));
+    const auto n = static_cast<std::size_t>(local.num_owned);
+    file.write_rows<double>("velocity", local.global_nodes, 3, owned_rows_,
+                            std::span<const double>(state.velocity.data()->data(), 3 * n));
+    file.write_rows<double>("pressure", local.global_nodes, 0, owned_rows_,
+                            std::span<const double>(state.pressure.data(), n));
+    for (const auto& a : extras) {
+      if (a.name == "velocity" || a.name == "pressure" ||
+          !std::regex_match(a.name, std::regex("[A-Za-z0-9_]+")))
+        throw std::invalid_argument(
+            fmt::format("checkpoint '{}': bad extra array name '{}'", tmp_path.string(), a.name));
+      file.write_rows<double>(a.name, a.global_rows, a.cols, a.rows, a.data);
+    }
+    file.close();
+  }
+  on_root(local.comm, [&] {
+    std::filesystem::rename(tmp_path, final_path);
+    // Rotation: keep the newest `keep_` complete checkpoints of this basename.
+    const std::regex pattern(basename_ + "_([0-9]{9})\\.h5");
+    std::vector<std::pair<std::int64_t, std::filesystem::path>> found;
+    for (const auto& entry : std::filesystem::directory_iterator(dir_)) {
+      std::smatch m;
+      const std::string name = entry.path().filename().string();
+      if (std::regex_match(name, m, pattern)) found.emplace_back(std::stoll(m[1]), entry.path());
+    }
+    std::sort(found.begin(), found.end());
+    for (std::size_t i = 0; i + keep_ < found.size(); ++i) std::filesystem::remove(found[i].second);
+  });
+  return final_path;
+}
+
+std::optional<std::filesystem::path> latest_checkpoint(const std::filesystem::path& dir,
+                                                       const std::string& basename) {
+  if (!std::filesystem::is_directory(dir)) return std::nullopt;
+  const std::regex pattern(basename + "_([0-9]{9})\\.h5");
+  std::optional<std::filesystem::path> best;
+  std::int64_t best_step = -1;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    std::smatch m;
+    const std::string name = entry.path().filename().string();
+    if (!std::regex_match(name, m, pattern)) continue;
+    const std::int64_t step = std::stoll(m[1]);
+    if (step > best_step) best_step = step, best = entry.path();
+  }
+  return best;
+}
+
+CheckpointReader::CheckpointReader(const flow::LocalMesh& local, std::uint64_t mesh_hash,
+                                   std::filesystem::path path)
+    : local_(&local), file_(local.comm.get(), std::move(path), h5::Mode::read) {
+  const std::string where = fmt::format("checkpoint '{}'", file_.path().string());
+  info_.format_version = static_cast<int>(file_.read_attribute("format_version"));
+  if (info_.format_version != checkpoint_format_version)
+    throw std::runtime_error(fmt::format("{}: format version {}, this program reads version {}",
+                                         where, info_.format_version, checkpoint_format_version));
+  info_.time = file_.read_attribute("time");
+  info_.step = static_cast<std::int64_t>(file_.read_attribute("step"));
+  info_.dt = file_.read_attribute("dt");
+  info_.global_nodes = static_cast<std::int64_t>(file_.read_attribute("global_nodes"));
+  info_.mesh_hash = (static_cast<std::uint64_t>(file_.read_attribute("mesh_hash_hi")) << 32) |
+                    static_cast<std::uint64_t>(file_.read_attribute("mesh_hash_lo"));
+  if (info_.global_nodes != local.global_nodes || info_.mesh_hash != mesh_hash)
+    throw std::runtime_error(fmt::format(
+        "{} was written for another mesh: {} nodes, mesh hash {}; this run's mesh has {} nodes, "
+        "mesh hash {}",
+        where, info_.global_nodes, hex(info_.mesh_hash), local.global_nodes, hex(mesh_hash)));
+  for (const char* name : {"velocity", "pressure"}) {
+    const auto dims = file_.dims(name);
+    if (dims.empty() || dims[0] != local.global_nodes)
+      throw std::runtime_error(fmt::format("{}: dataset '{}' has {} rows, expected {}", where, name,
+                                           dims.empty() ? 0 : dims[0], local.global_nodes));
+  }
+}
+
+void CheckpointReader::read_state(flow::FlowState& state) const {
+  const flow::LocalMesh& local = *local_;
+  const std::span<const std::int64_t> rows(local.dual_node.data(), local.dual_node.size());
+  const auto v = file_.read_rows<double>("velocity", rows);
+  state.pressure = file_.read_rows<double>("pressure", rows);
+  state.velocity.resize(local.num_local());
+  for (int i = 0; i < local.num_local(); ++i)
+    state.velocity[i] = Eigen::Vector3d(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+  state.time = info_.time;
+}
+
+std::pair<std::int64_t, int> CheckpointReader::shape(const std::string& name) const {
+  if (!file_.has(name))
+    throw std::runtime_error(
+        fmt::format("checkpoint '{}': no array '{}'", file_.path().string(), name));
+  const auto dims = file_.dims(name);
+  return {dims.at(0), dims.size() > 1 ? static_cast<int>(dims[1]) : 0};
+}
+
+std::vector<double> CheckpointReader::read_array(const std::string& name,
+                                                 std::span<const std::int64_t> rows) const {
+  shape(name);
+  return file_.read_rows<double>(name, rows);
+}
+
+}  // namespace valsalva::io
