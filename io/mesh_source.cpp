@@ -6,6 +6,7 @@
 
 #include "flow/mesh_check.hpp"
 #include "io/box_generator.hpp"
+#include "io/cylinder_channel_generator.hpp"
 #include "io/gmsh_reader.hpp"
 #include "io/pipe_generator.hpp"
 
@@ -44,6 +45,24 @@ flow::Mesh build_mesh(const Scene& scene) {
     if (!std::filesystem::exists(file))
       throw scene.error("mesh.file", fmt::format("file '{}' does not exist", file.string()));
     mesh = read_gmsh(file);
+  } else if (source == "cylinder_channel") {
+    const std::string k = "mesh.cylinder_channel.";
+    CylinderChannelSpec spec;
+    spec.size_near = scene.get<double>(k + "size_near");
+    spec.size_far = scene.get<double>(k + "size_far");
+    spec.grading_distance = scene.get<double>(k + "grading_distance");
+    spec.thickness = scene.get<double>(k + "thickness");
+    spec.layers = scene.get<int>(k + "layers");
+    spec.length = scene.get<double>(k + "length");
+    spec.height = scene.get<double>(k + "height");
+    spec.diameter = scene.get<double>(k + "diameter");
+    spec.centre_x = scene.get<double>(k + "centre_x");
+    spec.centre_y = scene.get<double>(k + "centre_y");
+    try {
+      mesh = generate_cylinder_channel_mesh(spec);
+    } catch (const std::invalid_argument& e) {
+      throw scene.error("mesh.cylinder_channel", e.what());
+    }
   } else {
     mesh = generate_pipe_mesh(scene.get<double>("mesh.pipe.radius"),
                               scene.get<double>("mesh.pipe.length"),

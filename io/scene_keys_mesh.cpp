@@ -6,12 +6,12 @@ namespace valsalva::io {
 
 void declare_mesh_keys(Schema& s) {
   s.section("mesh", "Where the fluid mesh comes from.");
-  s.choice("mesh.source", {"box", "gmsh", "pipe"})
+  s.choice("mesh.source", {"box", "gmsh", "pipe", "cylinder_channel"})
       .required()
       .unit_of("-")
       .doc(
-          "Built-in box generator ([mesh.box]), a Gmsh .msh file (mesh.file), or a Gmsh-API pipe "
-          "([mesh.pipe])");
+          "Built-in box generator ([mesh.box]), a Gmsh .msh file (mesh.file), a Gmsh-API pipe "
+          "([mesh.pipe]) or the DFG cylinder channel as a periodic slab ([mesh.cylinder_channel])");
   s.string("mesh.file")
       .required()
       .unit_of("-")
@@ -62,6 +62,48 @@ void declare_mesh_keys(Schema& s) {
   s.real("mesh.pipe.radius").required().above(0).unit_of("m").doc("Pipe radius");
   s.real("mesh.pipe.length").required().above(0).unit_of("m").doc("Pipe length along its axis");
   s.real("mesh.pipe.size").required().above(0).unit_of("m").doc("Target tetrahedron edge length");
+
+  s.section("mesh.cylinder_channel",
+            "DFG flow-around-a-cylinder channel (Schaefer & Turek 1996) as a slab of tetrahedra: "
+            "graded triangles extruded in z and split; patches inlet, outlet, wall, cylinder, "
+            "front, back (pair front/back in [mesh.periodic.<pair>]).");
+  s.when("mesh.cylinder_channel", "mesh.source", {"cylinder_channel"});
+  s.real("mesh.cylinder_channel.size_near")
+      .required()
+      .above(0)
+      .unit_of("m")
+      .doc("Triangle edge length on the cylinder");
+  s.real("mesh.cylinder_channel.size_far")
+      .required()
+      .above(0)
+      .unit_of("m")
+      .doc("Triangle edge length from grading_distance away from the cylinder on");
+  s.real("mesh.cylinder_channel.grading_distance")
+      .def(0.3)
+      .above(0)
+      .unit_of("m")
+      .doc("Distance from the cylinder over which the size grows linearly from near to far");
+  s.real("mesh.cylinder_channel.thickness")
+      .def(0.03)
+      .above(0)
+      .unit_of("m")
+      .doc("Slab thickness in z");
+  s.integer("mesh.cylinder_channel.layers")
+      .def(3)
+      .at_least(3)
+      .unit_of("-")
+      .doc("Cell layers across the slab (3 at least, so that periodic images stay apart)");
+  s.real("mesh.cylinder_channel.length").def(2.2).above(0).unit_of("m").doc("Channel length");
+  s.real("mesh.cylinder_channel.height").def(0.41).above(0).unit_of("m").doc("Channel height");
+  s.real("mesh.cylinder_channel.diameter").def(0.1).above(0).unit_of("m").doc("Cylinder diameter");
+  s.real("mesh.cylinder_channel.centre_x")
+      .def(0.2)
+      .unit_of("m")
+      .doc("Cylinder centre, x (from the inlet)");
+  s.real("mesh.cylinder_channel.centre_y")
+      .def(0.2)
+      .unit_of("m")
+      .doc("Cylinder centre, y (from the lower wall)");
 
   s.section("mesh.periodic.<pair>",
             "Periodic patch pair (any table name): every node of `slave` sits at a node of "
