@@ -49,8 +49,16 @@ StepReport ProjectionRK4::step(FlowState& state, double dt) {
   // Predictor with the old pressure gradient, fixed over the stages.
   gradient(mesh_, state.pressure, grad_p_);
   stage_ = state.velocity;
+  double alpha_prev = 0;  // the stage velocity stands at t^n + alpha_prev dt
+  int stage = 0;
   for (double alpha : std::array{1.0 / 4, 1.0 / 3, 1.0 / 2, 1.0}) {
     momentum_rhs(stage_, rhs_);
+    if (body_force_) {
+      force_.resize(static_cast<std::size_t>(n));
+      body_force_(stage++, state.time + alpha_prev * dt, stage_, force_);
+      for (int i = 0; i < n; ++i) rhs_[i] += force_[i] / rho;
+      alpha_prev = alpha;
+    }
     for (int i = 0; i < n; ++i)
       stage_[i] = state.velocity[i] + alpha * dt * (rhs_[i] - grad_p_[i] / rho);
   }

@@ -11,6 +11,7 @@
 // pressure increment).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -37,6 +38,12 @@ struct StepReport {
   double max_divergence = 0;  // max |div v^{n+1}| over owned nodes, 1/s
 };
 
+// Body-force density f [N/m^3] at owned and ghost nodes (overwritten), evaluated once per RK
+// stage from that stage's velocity; f/rho enters the momentum right-hand side. Stage k = 0..3
+// uses the velocity at stage_time = t^n + {0, 1/4, 1/3, 1/2}[k] dt.
+using BodyForce = std::function<void(
+    int stage, double stage_time, const VectorField& stage_velocity, VectorField& force_density)>;
+
 class ProjectionRK4 {
  public:
   // `poisson_weights`: edge weights of the Poisson matrix (flow::poisson_weights); empty means
@@ -52,6 +59,10 @@ class ProjectionRK4 {
 
   const std::vector<double>& laplacian_weights() const { return weights_; }
 
+  // Installs (or, with an empty function, removes) the body-force hook; without one no force
+  // array is allocated or touched.
+  void set_body_force(BodyForce force) { body_force_ = std::move(force); }
+
  private:
   const LocalMesh& mesh_;
   ProjectionOptions options_;
@@ -60,6 +71,8 @@ class ProjectionRK4 {
   ScalarField dp_, div_;  // dp_ is kept between steps: warm start of the next solve
   VectorField grad_p_, rhs_, conv_, stage_;
   TensorField grad_u_;
+  BodyForce body_force_;
+  VectorField force_;  // body-force density of the current stage (only with a hook)
 };
 
 }  // namespace valsalva::flow
