@@ -15,6 +15,7 @@ ProjectionRK4::ProjectionRK4(const LocalMesh& mesh, ProjectionOptions options,
       options_(options),
       weights_(flow::laplacian_weights(mesh)),
       poisson_weights_(poisson_weights.empty() ? weights_ : std::move(poisson_weights)),
+      convection_(make_convection_scheme(options.scheme, mesh)),
       poisson_(mesh, poisson_weights_, options.poisson),
       dp_(mesh.num_local(), 0.0) {
   if (!(options.density > 0) || !(options.viscosity >= 0))
@@ -24,7 +25,7 @@ ProjectionRK4::ProjectionRK4(const LocalMesh& mesh, ProjectionOptions options,
 }
 
 void ProjectionRK4::momentum_rhs(const VectorField& u, VectorField& rhs) {
-  convection(mesh_, u, u, conv_);
+  convection_->apply(u, conv_);
   if (options_.viscosity > 0) {
     gradient(mesh_, u, grad_u_);
     viscous(mesh_, weights_, options_.viscosity, u, grad_u_, rhs);

@@ -15,6 +15,7 @@
 #include <memory>
 #include <vector>
 
+#include "flow/convection_scheme.hpp"
 #include "flow/local_mesh.hpp"
 #include "flow/operators.hpp"
 #include "flow/pressure_poisson.hpp"
@@ -28,8 +29,9 @@ struct FlowState {
 };
 
 struct ProjectionOptions {
-  double density = 1.0;    // kg/m^3
-  double viscosity = 0.0;  // kinematic, m^2/s
+  double density = 1.0;             // kg/m^3
+  double viscosity = 0.0;           // kinematic, m^2/s
+  std::string scheme = "central2";  // convective scheme (flow::make_convection_scheme)
   PoissonOptions poisson;
 };
 
@@ -67,6 +69,7 @@ class ProjectionRK4 {
   const LocalMesh& mesh_;
   ProjectionOptions options_;
   std::vector<double> weights_, poisson_weights_;
+  std::unique_ptr<ConvectionScheme> convection_;
   PressurePoisson poisson_;
   ScalarField dp_, div_;  // dp_ is kept between steps: warm start of the next solve
   VectorField grad_p_, rhs_, conv_, stage_;
