@@ -21,8 +21,8 @@ int patch_index(const LocalMesh& mesh, const std::string& patch) {
 
 }  // namespace
 
-Eigen::Vector3d wall_force(const LocalMesh& mesh, const std::string& patch,
-                           const WallForceInput& in, WallForceMethod method) {
+std::vector<WallLoad> wall_loads(const LocalMesh& mesh, const std::string& patch,
+                                 const WallForceInput& in, WallForceMethod method) {
   if (!in.velocity || !in.pressure || !in.velocity_gradient ||
       (method == WallForceMethod::residual && !in.laplacian_weights))
     throw std::invalid_argument(
@@ -34,41 +34,50 @@ Eigen::Vector3d wall_force(const LocalMesh& mesh, const std::string& patch,
   const auto& g = *in.velocity_gradient;
   const double mu = in.dynamic_viscosity, rho = in.density;
 
-  // Owned nodes on the patch.
-  std::vector<char> on_patch(mesh.num_local(), 0);
+  // Owned nodes on the patch, with the area vector of their faces on it.
+  std::vector<int> slot(mesh.num_local(), -1);
+  std::vector<WallLoad> loads;
   for (const auto& b : mesh.boundary)
-    if (b.patch == p && b.node < mesh.num_owned) on_patch[b.node] = 1;
-
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();
-  if (method == WallForceMethod::surface) {
-    for (const auto& b : mesh.boundary)
-      if (b.patch == p && b.node < mesh.num_owned) {
-        const Eigen::Matrix3d& gj = g[b.node];
-        force += pr[b.node] * b.area - mu * (gj + gj.transpose()) * b.area;
+    if (b.patch == p && b.node < mesh.num_owned) {
+      if (slot[b.node] < 0) {
+        slot[b.node] = static_cast<int>(loads.size());
+        loads.push_back({b.node, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
       }
-  } else {
-    // -T_j = -(sum conv_out - sum visc_in + sum pres_out - V rho f) over the node's interior
-    // dual faces. A node shared with another patch (a corner) gives its whole reaction to this
-    // patch: the split is undefined there and such nodes are rare on bodies.
-    const auto& a = *in.laplacian_weights;
-    for (int e = 0; e < mesh.num_owned_edges; ++e) {
-      const auto [j, k] = mesh.edges[e];
-      if (!on_patch[j] && !on_patch[k]) continue;
-      const Eigen::Vector3d& s = mesh.edge_normal[e];
-      const Eigen::Vector3d conv = rho * (0.5 * (u[j] + u[k]).dot(s)) * 0.5 * (u[j] + u[k]);
-      Eigen::Vector3d visc = mu * a[e] * (u[k] - u[j]);
-      if (!in.stiffness_weights)
-        visc += mu * 0.5 * (g[j] + g[k]) * (s - a[e] * mesh.edge_vector[e]);
-      const Eigen::Vector3d pres = 0.5 * (pr[j] + pr[k]) * s;
-      // Flux out of j through S_jk (and into k).
-      const Eigen::Vector3d out_of_j = conv - visc + pres;
-      if (on_patch[j]) force -= out_of_j;
-      if (on_patch[k]) force += out_of_j;
+      loads[slot[b.node]].area += b.area;
     }
-    if (in.body_force)
-      for (int i = 0; i < mesh.num_owned; ++i)
-        if (on_patch[i]) force += mesh.volume[i] * (*in.body_force)[i];
+
+  if (method == WallForceMethod::surface) {
+    for (auto& l : loads) {
+      const Eigen::Matrix3d& gj = g[l.node];
+      l.force = pr[l.node] * l.area - mu * (gj + gj.transpose()) * l.area;
+    }
+    return loads;
   }
+  // Force on the wall = -T_j = V_j f_j - sum_k (conv_out - visc_in + pres_out) over all dual
+  // faces of the node. A node shared with another patch (a corner) gives its whole reaction to
+  // this patch: the split is undefined there and such nodes are rare on bodies.
+  const auto& a = *in.laplacian_weights;
+  for (int e = 0; e < mesh.num_owned_edges; ++e) {
+    const auto [j, k] = mesh.edges[e];
+    if (slot[j] < 0 && slot[k] < 0) continue;
+    const Eigen::Vector3d& s = mesh.edge_normal[e];
+    const Eigen::Vector3d conv = rho * (0.5 * (u[j] + u[k]).dot(s)) * 0.5 * (u[j] + u[k]);
+    Eigen::Vector3d visc = mu * a[e] * (u[k] - u[j]);
+    if (!in.stiffness_weights) visc += mu * 0.5 * (g[j] + g[k]) * (s - a[e] * mesh.edge_vector[e]);
+    const Eigen::Vector3d pres = 0.5 * (pr[j] + pr[k]) * s;
+    const Eigen::Vector3d out_of_j = conv - visc + pres;  // through S_jk, into k
+    if (slot[j] >= 0) loads[slot[j]].force -= out_of_j;
+    if (slot[k] >= 0) loads[slot[k]].force += out_of_j;
+  }
+  if (in.body_force)
+    for (auto& l : loads) l.force += mesh.volume[l.node] * (*in.body_force)[l.node];
+  return loads;
+}
+
+Eigen::Vector3d wall_force(const LocalMesh& mesh, const std::string& patch,
+                           const WallForceInput& in, WallForceMethod method) {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  for (const auto& l : wall_loads(mesh, patch, in, method)) force += l.force;
   for (int c = 0; c < 3; ++c) force[c] = mesh.comm.sum(force[c]);
   return force;
 }

@@ -31,15 +31,27 @@ struct WallForceInput {
   double dynamic_viscosity = 0;  // Pa s
   const VectorField* velocity = nullptr;
   const ScalarField* pressure = nullptr;
-  const TensorField* velocity_gradient = nullptr;          // flow::gradient of the velocity
+  const TensorField* velocity_gradient = nullptr;  // flow::gradient of the velocity
   // Viscous edge weights of the residual method: flow::laplacian_weights (two-point weight plus
   // the non-orthogonal correction with nodal gradients), or, on all-tetrahedral meshes, the P1
   // stiffness weights of flow::poisson_weights with `stiffness_weights = true` (no correction:
   // the median-dual flux of the piecewise-linear field, consistent on any tetrahedral mesh).
   const std::vector<double>* laplacian_weights = nullptr;
   bool stiffness_weights = false;
-  const VectorField* body_force = nullptr;                 // force per unit volume, N/m^3; optional
+  const VectorField* body_force = nullptr;  // force per unit volume, N/m^3; optional
 };
+
+// The force (N) of the fluid on the wall share of each owned node of a patch, with the node's
+// outward (fluid -> wall) area vector on that patch; the pieces of wall_force and of the wall
+// shear stress (flow/wall_shear.hpp).
+struct WallLoad {
+  int node = 0;  // local node
+  Eigen::Vector3d force{0, 0, 0};
+  Eigen::Vector3d area{0, 0, 0};
+};
+std::vector<WallLoad> wall_loads(const LocalMesh& mesh, const std::string& patch,
+                                 const WallForceInput& in,
+                                 WallForceMethod method = WallForceMethod::residual);
 
 // Total force (N) of the fluid on patch `patch` (a name of LocalMesh::patch_names), summed over
 // all ranks (collective). Throws std::invalid_argument for an unknown patch or missing input.

@@ -6,6 +6,7 @@
 #include "field_test_utils.hpp"
 #include "flow/poisson_weights.hpp"
 #include "flow/wall_force.hpp"
+#include "flow/wall_shear.hpp"
 
 using namespace valsalva;
 
@@ -102,4 +103,58 @@ TEST_CASE("wall force: unknown patch is refused with the mesh's patch names") {
   CHECK_THROWS_WITH_AS(flow::wall_force(local, "cylinder", in, flow::WallForceMethod::surface),
                        doctest::Contains("patch 'cylinder' is not in the mesh"),
                        std::invalid_argument);
+}
+
+TEST_CASE("wall shear stress: plane Poiseuille wall nodes carry f H / 2 along x") {
+  io::BoxSpec spec;
+  spec.cells = {6, 6, 6};
+  spec.periodic = {true, false, true};
+  const auto mesh = io::generate_box(spec);
+  const auto metrics = flow::compute_dual_metrics(mesh);
+  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
+  const double mu = 1e-3, f = 3.0;
+  flow::VectorField u(local.num_local()), body(local.num_local(), Eigen::Vector3d(f, 0, 0));
+  for (int i = 0; i < local.num_local(); ++i) {
+    const double y = local.position[i].y();
+    u[i] = Eigen::Vector3d(f / (2 * mu) * y * (1 - y), 0, 0);
+  }
+  flow::ScalarField p(local.num_local(), 0.0);
+  flow::TensorField g;
+  flow::gradient(local, u, g);
+  const auto weights = flow::laplacian_weights(local);
+  flow::WallForceInput in;
+  in.density = 1000;
+  in.dynamic_viscosity = mu;
+  in.velocity = &u;
+  in.pressure = &p;
+  in.velocity_gradient = &g;
+  in.laplacian_weights = &weights;
+  in.body_force = &body;
+  const auto tau = flow::wall_shear_stress(flow::wall_loads(local, "ymin", in));
+  double worst = 0;
+  for (const auto& t : tau) worst = std::max(worst, (t - Eigen::Vector3d(f / 2, 0, 0)).norm());
+  MESSAGE(tau.size(), " wall nodes, max |tau - f H/2 e_x| = ", worst);
+  CHECK(worst < 1e-12 * f);
+}
+
+TEST_CASE("TAWSS and OSI: steady stress gives OSI 0, a purely oscillatory one 1/2") {
+  const double tau0 = 1.7, period = 0.8;
+  const int steps = 64;
+  flow::WallShearStatistics steady, oscillating;
+  for (int n = 0; n < 3 * steps; ++n) {
+    const double t = (n + 1) * period / steps;
+    steady.add({Eigen::Vector3d(tau0, 0, 0)}, period / steps);
+    oscillating.add({Eigen::Vector3d(0, tau0 * std::sin(2 * M_PI * t / period), 0)},
+                    period / steps);
+  }
+  CHECK(steady.osi()[0] == doctest::Approx(0).epsilon(1e-14));
+  CHECK(steady.tawss()[0] == doctest::Approx(tau0).epsilon(1e-14));
+  CHECK(oscillating.osi()[0] == doctest::Approx(0.5).epsilon(1e-12));
+  // Mean of |sin| = 2/pi; the rectangle rule on 64 samples per period is exact to ~1e-3.
+  CHECK(oscillating.tawss()[0] == doctest::Approx(2 * tau0 / M_PI).epsilon(2e-3));
+  // Checkpoint round trip.
+  flow::WallShearStatistics restored;
+  restored.restore(oscillating.state());
+  CHECK(restored.osi()[0] == oscillating.osi()[0]);
+  CHECK(restored.duration() == oscillating.duration());
 }

@@ -1,0 +1,40 @@
+// Wall shear stress and its cycle statistics, the haemodynamic indices of vascular biomechanics:
+//   tau_w        tangential part of the fluid's force on a wall node's dual face, per unit area
+//                (flow::wall_loads: residual/reaction or surface-traction method)
+//   TAWSS        (1/T) int |tau_w| dt
+//   OSI          1/2 (1 - |int tau_w dt| / int |tau_w| dt)   (Ku, Giddens, Zarins & Glagov,
+//                Arteriosclerosis 5, 1985): 0 for a steady direction, 1/2 for a purely
+//                oscillatory stress.
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "flow/wall_force.hpp"
+
+namespace valsalva::flow {
+
+// tau_j = (F_j - (F_j . n_j) n_j) / |A_j|, n_j = A_j / |A_j|, one per load (Pa).
+std::vector<Eigen::Vector3d> wall_shear_stress(const std::vector<WallLoad>& loads);
+
+// Time integrals of tau_w and |tau_w| at a fixed set of wall nodes (the nodes of the loads given
+// to the first add()); rectangle rule with the step's dt, which integrates a periodic signal
+// sampled uniformly over whole periods exactly for its mean.
+class WallShearStatistics {
+ public:
+  void add(const std::vector<Eigen::Vector3d>& tau, double dt);
+  double duration() const { return duration_; }
+  std::vector<double> tawss() const;
+  std::vector<double> osi() const;  // 0 where tau_w was zero throughout
+
+  // Accumulators for checkpoints: per node sum tau dt (3) and sum |tau| dt (1), then duration.
+  std::vector<double> state() const;
+  void restore(const std::vector<double>& state);
+
+ private:
+  std::vector<Eigen::Vector3d> sum_tau_;
+  std::vector<double> sum_abs_;
+  double duration_ = 0;
+};
+
+}  // namespace valsalva::flow
