@@ -1,0 +1,217 @@
+// Benchmark (opt-in, not a test): the Taylor-Green vortex at Re = 1600, case C3.5 of the
+// International Workshop on High-Order CFD Methods (box (2 pi)^3, V0 = L = 1, nu = 1/1600,
+// u = sin x cos y cos z, v = -cos x sin y cos z, w = 0,
+// p = (cos 2x + cos 2y)(cos 2z + 2)/16), run to t_end on an n^3 periodic hexahedral box with a
+// fixed time step from the CFL number. Measures what the flow-solver issue asks for:
+//   wall and CPU time, node-steps per second per core, the share of the Poisson solve, Poisson
+//   iterations, peak resident memory per node, and the error of the dissipation rate -dE/dt
+//   against the 512^3 spectral reference (validation/refdata/tgv_re1600/spectral_Re1600_512.gdiag):
+//   max |eps - eps_ref| / max eps_ref over 0 <= t <= t_end, peak value and time.
+// Writes OUT/tgv_<scheme>_<n>_np<ranks>.csv (t, E, -dE/dt) and appends one summary row to
+// OUT/summary.csv; validation/bench/tgv_re1600_plot.py draws -dE/dt(t) and error vs CPU time.
+// Usage: [mpiexec -n R] bench_tgv_re1600 [--n 32] [--scheme central2|central4] [--cfl 0.5]
+//        [--t-end 10] [--out bench-results/tgv_re1600]
+#include <fmt/format.h>
+#include <mpi.h>
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "flow/dual_metrics.hpp"
+#include "flow/local_mesh.hpp"
+#include "flow/poisson_weights.hpp"
+#include "flow/projection_rk4.hpp"
+#include "io/box_generator.hpp"
+
+using namespace valsalva;
+
+namespace {
+
+struct Args {
+  int n = 32;
+  std::string scheme = "central2";
+  double cfl = 0.5, t_end = 10;
+  std::filesystem::path out = "bench-results/tgv_re1600";
+};
+
+Args parse(int argc, char** argv) {
+  Args a;
+  for (int i = 1; i < argc; ++i) {
+    const std::string key = argv[i];
+    if (i + 1 >= argc) throw std::invalid_argument("missing value after " + key);
+    const std::string value = argv[++i];
+    if (key == "--n")
+      a.n = std::stoi(value);
+    else if (key == "--scheme")
+      a.scheme = value;
+    else if (key == "--cfl")
+      a.cfl = std::stod(value);
+    else if (key == "--t-end")
+      a.t_end = std::stod(value);
+    else if (key == "--out")
+      a.out = value;
+    else
+      throw std::invalid_argument("unknown option " + key +
+                                  " (accepted: --n --scheme --cfl --t-end --out)");
+  }
+  return a;
+}
+
+// Columns t, E, -dE/dt of the reference file (2 comment lines).
+std::vector<std::array<double, 3>> read_reference(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot open " + file.string());
+  std::vector<std::array<double, 3>> rows;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream s(line);
+    std::array<double, 3> r{};
+    if (s >> r[0] >> r[1] >> r[2]) rows.push_back(r);
+  }
+  return rows;
+}
+
+double interpolate(const std::vector<std::array<double, 3>>& ref, double t, int column) {
+  std::size_t i = 1;
+  while (i + 1 < ref.size() && ref[i][0] < t) ++i;
+  const double w = (t - ref[i - 1][0]) / (ref[i][0] - ref[i - 1][0]);
+  return (1 - w) * ref[i - 1][column] + w * ref[i][column];
+}
+
+double cpu_seconds() {
+  timespec c;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c);
+  return c.tv_sec + 1e-9 * c.tv_nsec;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  MPI_Init(&argc, &argv);
+  int rank = 0, size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  try {
+    const Args args = parse(argc, argv);
+    const double two_pi = 2 * std::numbers::pi, nu = 1.0 / 1600;
+    io::BoxSpec spec;
+    spec.cells = {args.n, args.n, args.n};
+    spec.length = Eigen::Vector3d::Constant(two_pi);
+    spec.periodic = {true, true, true};
+    const auto mesh = io::generate_box(spec);
+    const auto metrics = flow::compute_dual_metrics(mesh);
+    flow::PartitionOptions partition;
+    partition.ghost_layers = 2;
+    const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, partition);
+
+    flow::ProjectionOptions options;
+    options.density = 1;
+    options.viscosity = nu;
+    options.scheme = args.scheme;
+    options.poisson.tolerance = 1e-8;
+    flow::ProjectionRK4 solver(local, options, flow::poisson_weights(mesh, metrics, local));
+
+    flow::FlowState state;
+    state.velocity.resize(local.num_local());
+    state.pressure.resize(local.num_local());
+    for (int i = 0; i < local.num_local(); ++i) {
+      const auto& x = local.position[i];
+      state.velocity[i] = {std::sin(x.x()) * std::cos(x.y()) * std::cos(x.z()),
+                           -std::cos(x.x()) * std::sin(x.y()) * std::cos(x.z()), 0.0};
+      state.pressure[i] =
+          (std::cos(2 * x.x()) + std::cos(2 * x.y())) * (std::cos(2 * x.z()) + 2) / 16;
+    }
+    const double total_volume = std::pow(two_pi, 3);
+    auto energy = [&] {
+      double e = 0;
+      for (int i = 0; i < local.num_owned; ++i)
+        e += 0.5 * local.volume[i] * state.velocity[i].squaredNorm();
+      return local.comm.sum(e) / total_volume;
+    };
+    const double h = two_pi / args.n;
+    const int steps = static_cast<int>(std::ceil(args.t_end / (args.cfl * h)));
+    const double dt = args.t_end / steps;
+
+    std::vector<double> times{0}, energies{energy()};
+    int max_its = 0;
+    long total_its = 0;
+    MPI_Barrier(MPI_COMM_WORLD);
+    const double cpu0 = cpu_seconds();
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int s = 0; s < steps; ++s) {
+      const auto report = solver.step(state, dt);
+      max_its = std::max(max_its, report.poisson.iterations);
+      total_its += report.poisson.iterations;
+      times.push_back(state.time);
+      energies.push_back(energy());
+      if (!std::isfinite(energies.back()))
+        throw std::runtime_error(fmt::format("kinetic energy not finite at step {}", s + 1));
+    }
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double cpu = local.comm.sum(cpu_seconds() - cpu0);  // all ranks
+
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    const double peak_kb = local.comm.max(static_cast<double>(usage.ru_maxrss));
+    const double owned = static_cast<double>(local.num_owned);
+    const double bytes_per_node = local.comm.max(1024.0 * usage.ru_maxrss / owned);
+
+    if (rank == 0) {
+      const auto ref = read_reference(std::filesystem::path(VALSALVA_SOURCE_DIR) /
+                                      "validation/refdata/tgv_re1600/spectral_Re1600_512.gdiag");
+      double ref_peak = 0, peak = 0, peak_t = 0, worst = 0;
+      for (const auto& r : ref)
+        if (r[0] <= args.t_end) ref_peak = std::max(ref_peak, r[2]);
+      std::filesystem::create_directories(args.out);
+      const auto csv = args.out / fmt::format("tgv_{}_{}_np{}.csv", args.scheme, args.n, size);
+      std::ofstream out(csv);
+      out << "t,E,dissipation,dissipation_reference\n";
+      for (std::size_t i = 1; i + 1 < times.size(); ++i) {
+        const double eps = -(energies[i + 1] - energies[i - 1]) / (times[i + 1] - times[i - 1]);
+        const double eps_ref = interpolate(ref, times[i], 2);
+        worst = std::max(worst, std::abs(eps - eps_ref));
+        if (eps > peak) peak = eps, peak_t = times[i];
+        out << fmt::format("{:.6f},{:.10e},{:.10e},{:.10e}\n", times[i], energies[i], eps, eps_ref);
+      }
+      const double node_steps = static_cast<double>(local.global_nodes) * steps;
+      const auto summary = args.out / "summary.csv";
+      const bool header = !std::filesystem::exists(summary);
+      std::ofstream sum(summary, std::ios::app);
+      if (header)
+        sum << "scheme,n,ranks,steps,dt,wall_s,cpu_s,node_steps_per_s_per_core,"
+               "poisson_its_mean,poisson_its_max,peak_rss_kb,bytes_per_node,"
+               "dissipation_error_max_rel,peak,peak_time\n";
+      sum << fmt::format(
+          "{},{},{},{},{:.6g},{:.3f},{:.3f},{:.4g},{:.2f},{},{:.0f},{:.0f},{:.5f},{:.6f},{:.3f}\n",
+          args.scheme, args.n, size, steps, dt, wall, cpu, node_steps / cpu,
+          double(total_its) / steps, max_its, peak_kb, bytes_per_node, worst / ref_peak, peak,
+          peak_t);
+      fmt::print(
+          "TGV Re 1600, {}^3 hexahedra, {}, {} ranks: {} steps of dt {:.4g} to t = {}\n"
+          "  wall {:.1f} s, CPU {:.1f} s, {:.3g} node-steps/s/core, Poisson its mean {:.2f} max "
+          "{}\n"
+          "  peak RSS {:.0f} MB per rank, {:.0f} B per owned node\n"
+          "  -dE/dt: max error {:.4f} of the reference peak {:.6f}; peak {:.6f} at t = {:.2f} "
+          "(reference 0.012858 at 8.97)\n  -> {}\n",
+          args.n, args.scheme, size, steps, dt, args.t_end, wall, cpu, node_steps / cpu,
+          double(total_its) / steps, max_its, peak_kb / 1024, bytes_per_node, worst / ref_peak,
+          ref_peak, peak, peak_t, csv.string());
+    }
+  } catch (const std::exception& e) {
+    if (rank == 0) fmt::print(stderr, "bench_tgv_re1600: {}\n", e.what());
+    MPI_Abort(MPI_COMM_WORLD, 1);
+  }
+  MPI_Finalize();
+  return 0;
+}
