@@ -7,6 +7,8 @@
 #include <string>
 #include <utility>
 
+#include "flow/viscous_stress.hpp"
+
 namespace valsalva::flow {
 
 ProjectionRK4::ProjectionRK4(const LocalMesh& mesh, ProjectionOptions options,
@@ -26,7 +28,15 @@ ProjectionRK4::ProjectionRK4(const LocalMesh& mesh, ProjectionOptions options,
 
 void ProjectionRK4::momentum_rhs(const VectorField& u, VectorField& rhs) {
   convection_->apply(u, conv_);
-  if (options_.viscosity > 0) {
+  if (options_.subgrid_viscosity) {
+    // The gradient's ghosts are valid, so nu_sgs is computed on ghosts too: no exchange.
+    gradient(mesh_, u, grad_u_);
+    nu_sgs_.resize(grad_u_.size());
+    options_.subgrid_viscosity(grad_u_, nu_sgs_);
+    nu_eff_.resize(nu_sgs_.size());
+    for (std::size_t i = 0; i < nu_sgs_.size(); ++i) nu_eff_[i] = options_.viscosity + nu_sgs_[i];
+    viscous_stress(mesh_, weights_, nu_eff_, u, grad_u_, rhs);
+  } else if (options_.viscosity > 0) {
     gradient(mesh_, u, grad_u_);
     viscous(mesh_, weights_, options_.viscosity, u, grad_u_, rhs);
   } else {
@@ -79,6 +89,13 @@ StepReport ProjectionRK4::step(FlowState& state, double dt) {
   for (int i = 0; i < mesh_.num_owned; ++i) worst = std::max(worst, std::abs(div_[i]));
   report.max_divergence = mesh_.comm.max(worst);
   return report;
+}
+
+double ProjectionRK4::max_subgrid_viscosity() const {
+  double worst = 0;
+  for (int i = 0; i < mesh_.num_owned && !nu_sgs_.empty(); ++i)
+    worst = std::max(worst, nu_sgs_[i]);
+  return mesh_.comm.max(worst);
 }
 
 }  // namespace valsalva::flow

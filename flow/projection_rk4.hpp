@@ -33,6 +33,11 @@ struct ProjectionOptions {
   double viscosity = 0.0;           // kinematic, m^2/s
   std::string scheme = "central2";  // convective scheme (flow::make_convection_scheme)
   PoissonOptions poisson;
+  // LES: fills nu_sgs [m^2/s] at owned and ghost nodes from the stage's velocity gradient
+  // (owned + ghosts valid; nu_sgs is sized by the solver). Empty = laminar: the constant-nu
+  // Laplacian runs and nothing else is computed or allocated. When set, the viscous term is the
+  // full stress div((nu + nu_sgs)(grad u + grad u^T)) (flow/viscous_stress.hpp).
+  std::function<void(const TensorField& grad_u, ScalarField& nu_sgs)> subgrid_viscosity;
 };
 
 struct StepReport {
@@ -61,6 +66,11 @@ class ProjectionRK4 {
 
   const std::vector<double>& laplacian_weights() const { return weights_; }
 
+  // nu_sgs of the last RK stage evaluated (owned + ghosts; empty without a subgrid model).
+  const ScalarField& subgrid_viscosity() const { return nu_sgs_; }
+  // Collective: max over owned nodes of that nu_sgs (0 without a subgrid model), m^2/s.
+  double max_subgrid_viscosity() const;
+
   // Installs (or, with an empty function, removes) the body-force hook; without one no force
   // array is allocated or touched.
   void set_body_force(BodyForce force) { body_force_ = std::move(force); }
@@ -74,6 +84,7 @@ class ProjectionRK4 {
   ScalarField dp_, div_;  // dp_ is kept between steps: warm start of the next solve
   VectorField grad_p_, rhs_, conv_, stage_;
   TensorField grad_u_;
+  ScalarField nu_sgs_, nu_eff_;  // LES only: subgrid and total viscosity
   BodyForce body_force_;
   VectorField force_;  // body-force density of the current stage (only with a hook)
 };

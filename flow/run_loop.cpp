@@ -66,7 +66,8 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
 
 double RunLoop::choose_dt(double remaining) {
   const auto& t = options_.time;
-  const double nu = options_.projection.viscosity;
+  // LES: nu + max nu_sgs of the previous step's last stage bounds the viscous rate.
+  const double nu = options_.projection.viscosity + solver_.max_subgrid_viscosity();
   rates_ = stability_rates(local_, solver_.laplacian_weights(), nu, state_.velocity, scratch_);
   const double limit = 1.0 / rates_.stability;  // +inf at rest without viscosity
   double dt = t.dt;

@@ -1,0 +1,32 @@
+#include "les/subgrid_viscosity.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace valsalva::les {
+
+SubgridViscosity::SubgridViscosity(std::string_view model_name, std::optional<double> constant,
+                                   std::vector<double> filter_width)
+    : model_(make_sgs_model(model_name,
+                            constant && *constant > 0.0 ? constant : std::optional<double>{})),
+      delta_(std::move(filter_width)) {
+  for (std::size_t i = 0; i < delta_.size(); ++i)
+    if (!(std::isfinite(delta_[i]) && delta_[i] > 0.0))
+      throw std::invalid_argument(fmt::format(
+          "subgrid viscosity ({}): filter width of node {} is {}, expected a finite value > 0",
+          name(model_.kind), i, delta_[i]));
+}
+
+void SubgridViscosity::operator()(std::span<const Eigen::Matrix3d> grad,
+                                  std::span<double> nu_sgs) const {
+  compute_nu_sgs(model_, grad, delta_, nu_sgs);
+}
+
+void SubgridViscosity::operator()(std::span<const double> grad_flat,
+                                  std::span<double> nu_sgs) const {
+  compute_nu_sgs(model_, grad_flat, delta_, nu_sgs);
+}
+
+}  // namespace valsalva::les

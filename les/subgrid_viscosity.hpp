@@ -1,0 +1,40 @@
+// The subgrid viscosity the flow solver asks for at every RK stage: a model chosen by name and
+// constant (les/sgs_model.hpp) bound to the nodal filter widths of one mesh partition
+// (Delta = cube root of the dual volume, handed in as a plain vector so that les/ never sees
+// flow/ types). The flow solver wraps it in its callback; nothing here allocates per call.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "les/sgs_model.hpp"
+
+namespace valsalva::les {
+
+class SubgridViscosity {
+ public:
+  // `model_name`: sigma | wale | smagorinsky | none; `constant`: empty or <= 0 = the model's
+  // default (les/sgs_model.hpp). `filter_width`: Delta [m] per node, > 0 and finite
+  // (std::invalid_argument naming the first bad node).
+  SubgridViscosity(std::string_view model_name, std::optional<double> constant,
+                   std::vector<double> filter_width);
+
+  // nu_sgs[i] [m^2/s] from the velocity gradient at node i (g_ij = du_i/dx_j); one gradient and
+  // one output per filter width (std::invalid_argument otherwise).
+  void operator()(std::span<const Eigen::Matrix3d> grad, std::span<double> nu_sgs) const;
+  // Same from 9 row-major doubles per node.
+  void operator()(std::span<const double> grad_flat, std::span<double> nu_sgs) const;
+
+  const SgsModel& model() const { return model_; }
+  bool active() const { return model_.kind != SgsKind::none; }
+  std::size_t size() const { return delta_.size(); }
+
+ private:
+  SgsModel model_;
+  std::vector<double> delta_;
+};
+
+}  // namespace valsalva::les
