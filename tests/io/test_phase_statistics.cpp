@@ -1,0 +1,215 @@
+// Phase statistics: a synthetic periodic signal with known phase means, RMS and Reynolds
+// stresses (cycle-to-cycle fluctuations from exactly zero-mean, orthogonal +-1 sequences);
+// a 1e8 offset with 1e-3 fluctuations (Welford keeps 1e-6 relative, the naive sum of squares
+// loses everything); Chan merge equals the sequential accumulation; checkpoint round trip at
+// the world size and at one rank; HDF5/XDMF output read back.
+#include <doctest/doctest.h>
+#include <mpi.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "flow/dual_metrics.hpp"
+#include "flow/local_mesh.hpp"
+#include "io/box_generator.hpp"
+#include "io/phase_statistics.hpp"
+#include "io/xdmf_writer.hpp"
+
+using namespace valsalva;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double period = 0.8, rho = 1100;
+constexpr int bins = 4, cycles = 8;
+
+flow::Mesh box() {
+  io::BoxSpec spec;
+  spec.cell_type = "tetra";
+  spec.cells = {6, 4, 3};
+  return io::generate_box(spec);
+}
+
+// Zero-mean, unit-variance, mutually orthogonal sequences over 8 cycles (Walsh functions).
+double e(std::int64_t c) {
+  return c % 2 ? -1.0 : 1.0;
+}
+double f(std::int64_t c) {
+  return (c / 2) % 2 ? -1.0 : 1.0;
+}
+double g(std::int64_t c) {
+  return (c / 4) % 2 ? -1.0 : 1.0;
+}
+
+// Phase mean of u at node position x in bin b.
+double mean_u(const Eigen::Vector3d& x, int b) {
+  return x.x() + std::sin(2 * M_PI * (b + 0.5) / bins);
+}
+
+// Sample at one node, cycle c, bin b: mean + a e + 0.5 a f (v), ...
+void fill(const flow::LocalMesh& local, std::int64_t c, int b, flow::FlowState& s) {
+  s.velocity.resize(local.num_local());
+  s.pressure.resize(local.num_local());
+  for (int i = 0; i < local.num_owned; ++i) {
+    const auto& x = local.position[i];
+    const double a = 0.1 * (1 + x.y());
+    s.velocity[i] = {mean_u(x, b) + a * e(c), -0.5 + 0.5 * a * e(c) + a * f(c), 2 * a * g(c)};
+    s.pressure[i] = 100.0 * b + 3 * a * f(c);
+  }
+}
+
+void run_cycles(const flow::LocalMesh& local, io::PhaseStatistics& stats, int first, int last) {
+  flow::FlowState s;
+  for (int c = first; c < last; ++c)
+    for (int b = 0; b < bins; ++b) {
+      fill(local, c, b, s);
+      stats.add(0.2 + (c + (b + 0.5) / bins) * period, s.velocity, s.pressure);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("phase statistics of a synthetic periodic signal") {
+  const auto mesh = box();
+  const auto metrics = flow::compute_dual_metrics(mesh);
+  auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  io::PhaseStatistics stats(local, {period, bins, 0.2, rho, "phase"}, io::all_owned_nodes(local));
+  CHECK(stats.bin_of(0.2) == 0);
+  CHECK(stats.bin_of(0.2 + 0.25 * period) == 1);
+  CHECK(stats.bin_of(0.2 + 3.99 * period) == 3);
+  CHECK(stats.cycle_of(0.2 + 2.5 * period) == 2);
+  flow::FlowState before;
+  fill(local, 0, 0, before);
+  stats.add(0.1, before.velocity, before.pressure);  // before start: ignored
+  run_cycles(local, stats, 0, cycles);
+  CHECK(stats.cycles() == cycles);
+  double worst = 0;
+  for (int b = 0; b < bins; ++b) {
+    CHECK(stats.count(b) == cycles);
+    for (std::size_t i = 0; i < stats.nodes().size(); ++i) {
+      const auto& x = local.position[stats.nodes()[i]];
+      const double a = 0.1 * (1 + x.y());
+      const int n = int(i);
+      worst = std::max(
+          {worst, std::abs(stats.mean(b, n, 0) - mean_u(x, b)), std::abs(stats.mean(b, n, 1) + 0.5),
+           std::abs(stats.mean(b, n, 3) - 100.0 * b), std::abs(stats.rms(b, n, 0) - a),
+           std::abs(stats.rms(b, n, 1) - a * std::sqrt(1.25)), std::abs(stats.rms(b, n, 2) - 2 * a),
+           std::abs(stats.rms(b, n, 3) - 3 * a),
+           std::abs(stats.reynolds_stress(b, n, 0, 1) - 0.5 * a * a),
+           std::abs(stats.reynolds_stress(b, n, 1, 0) - 0.5 * a * a),
+           std::abs(stats.reynolds_stress(b, n, 0, 2)), std::abs(stats.reynolds_stress(b, n, 2, 1)),
+           std::abs(stats.kinetic_energy(b, n) - rho / 2 * a * a * (1 + 1.25 + 4)) / rho});
+    }
+  }
+  CHECK(local.comm.max(worst) < 1e-12);  // a few ulps of the largest value, p = 300 Pa
+
+  // Chan merge: cycles 0-2 and 3-7 accumulated apart, then merged.
+  io::PhaseStatistics first(local, stats.options(), stats.nodes());
+  io::PhaseStatistics second(local, stats.options(), stats.nodes());
+  run_cycles(local, first, 0, 3);
+  run_cycles(local, second, 3, cycles);
+  first.merge(second);
+  CHECK(first.cycles() == cycles);
+  double merge_error = 0;
+  for (int b = 0; b < bins; ++b)
+    for (int i = 0; i < int(stats.nodes().size()); ++i)
+      for (int q = 0; q < 4; ++q)
+        merge_error = std::max({merge_error, std::abs(first.mean(b, i, q) - stats.mean(b, i, q)),
+                                std::abs(first.rms(b, i, q) - stats.rms(b, i, q))});
+  CHECK(local.comm.max(merge_error) < 1e-12);
+}
+
+TEST_CASE("phase statistics: large offset, Welford against the naive sum of squares") {
+  const auto mesh = box();
+  const auto metrics = flow::compute_dual_metrics(mesh);
+  auto local = flow::distribute(mesh, metrics, MPI_COMM_SELF, {2, "metis"});
+  io::PhaseStatistics stats(local, {0.0, 1, 0.0, rho, "mean"}, {0});
+  const double offset = 1e8, sigma = 1e-3;
+  double sum = 0, sum2 = 0;
+  std::vector<double> sample(4, 0.0);
+  const int n = 1000;
+  for (int k = 0; k < n; ++k) {
+    sample[0] = offset + sigma * e(k) + 0.3 * sigma * std::sin(0.1 * k);
+    sum += sample[0], sum2 += sample[0] * sample[0];
+    stats.add_sample(0, 0, sample);
+  }
+  // Reference: two passes in long double over the same stored doubles.
+  long double mean = 0, var = 0;
+  for (int k = 0; k < n; ++k)
+    mean += (long double)(offset + sigma * e(k) + 0.3 * sigma * std::sin(0.1 * k));
+  mean /= n;
+  for (int k = 0; k < n; ++k) {
+    const long double d =
+        (long double)(offset + sigma * e(k) + 0.3 * sigma * std::sin(0.1 * k)) - mean;
+    var += d * d;
+  }
+  const double rms_ref = std::sqrt(double(var / n));
+  const double naive = std::sqrt(std::max(0.0, sum2 / n - (sum / n) * (sum / n)));
+  MESSAGE("rms reference ", rms_ref, ", Welford ", stats.rms(0, 0, 0), ", naive ", naive);
+  CHECK(std::abs(stats.rms(0, 0, 0) - rms_ref) < 1e-6 * rms_ref);
+  CHECK(std::abs(naive - rms_ref) > 0.5 * rms_ref);  // the naive formula is useless here
+}
+
+TEST_CASE("phase statistics: checkpoint round trip and output") {
+  const fs::path dir =
+      fs::path("test_output") / "phase_statistics" / ("np" + std::to_string(flow::Comm().size()));
+  const auto mesh = box();
+  const auto metrics = flow::compute_dual_metrics(mesh);
+  auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  const io::PhaseStatisticsOptions options{period, bins, 0.2, rho, "plane"};
+  // A plane subset: nodes near y = 0.5.
+  const auto plane = io::nodes_near_plane(local, {0, 0.5, 0}, {0, 1, 0}, 1e-9);
+  CHECK(local.comm.sum(std::int64_t(plane.size())) == 7 * 4);
+  io::PhaseStatistics stats(local, options, plane);
+  run_cycles(local, stats, 0, 5);
+  const auto arrays = stats.checkpoint_arrays();
+  flow::FlowState state;
+  fill(local, 0, 0, state);
+  io::CheckpointWriter writer(local, io::mesh_hash(mesh), dir);
+  const auto path = writer.write(state, 1, 1e-3, arrays);
+
+  for (MPI_Comm comm : {MPI_COMM_WORLD, MPI_COMM_SELF}) {
+    auto other = flow::distribute(mesh, metrics, comm, {2, "metis"});
+    const auto other_plane = io::nodes_near_plane(other, {0, 0.5, 0}, {0, 1, 0}, 1e-9);
+    io::PhaseStatistics back(other, options, other_plane);
+    back.restore(io::CheckpointReader(other, io::mesh_hash(mesh), path));
+    CHECK(back.cycles() == 5);
+    int bad = 0;
+    for (int b = 0; b < bins; ++b) {
+      CHECK(back.count(b) == 5);
+      for (std::size_t i = 0; i < other_plane.size(); ++i) {
+        const auto& x = other.position[other_plane[i]];
+        const double a = 0.1 * (1 + x.y());
+        // Over 5 cycles e = (1,-1,1,-1,1) has mean 0.2; g = (1,1,1,1,-1) has RMS 0.8.
+        bad += std::abs(back.mean(b, int(i), 0) - mean_u(x, b) - 0.2 * a) > 1e-14;
+        bad += std::abs(back.rms(b, int(i), 2) - 1.6 * a) > 1e-14;
+      }
+    }
+    CHECK(other.comm.sum(std::int64_t(bad)) == 0);
+    io::PhaseStatistics other_bins(other, {period, 2, 0.2, rho, "plane"}, other_plane);
+    CHECK_THROWS_WITH(other_bins.restore(io::CheckpointReader(other, io::mesh_hash(mesh), path)),
+                      doctest::Contains("saved with period 0.8 s, 4 bins"));
+  }
+
+  // Output: one XDMF step per bin, NaN off the plane.
+  const auto xmf = stats.write(mesh, metrics, dir / "out");
+  CHECK(fs::exists(xmf));
+  if (local.comm.root()) {
+    const auto u = io::read_nodal_field(dir / "out" / "plane_000002.h5", "mean_velocity");
+    const auto k = io::read_nodal_field(dir / "out" / "plane_000002.h5", "k");
+    int on = 0, off = 0, wrong = 0;
+    for (flow::GlobalIndex m = 0; m < mesh.num_nodes(); ++m) {
+      const auto& x = mesh.nodes[m];
+      if (std::abs(x.y() - 0.5) < 1e-9) {
+        ++on;
+        wrong += std::abs(u[3 * m] - mean_u(x, 2) - 0.2 * 0.1 * (1 + x.y())) > 1e-14;
+        wrong += !(k[m] > 0);
+      } else {
+        off += std::isnan(u[3 * m]) && std::isnan(k[m]);
+      }
+    }
+    CHECK(on == 28);
+    CHECK(off == mesh.num_nodes() - 28);
+    CHECK(wrong == 0);
+  }
+}
