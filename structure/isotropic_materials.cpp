@@ -14,6 +14,9 @@ class NeoHookean final : public Hyperelastic {
  public:
   NeoHookean(double G, double K) : G_(G), K_(K) {}
   std::string name() const override { return "neo_hookean"; }
+  std::optional<std::array<double, 2>> neo_hookean_parameters() const override {
+    return std::array<double, 2>{G_, K_};
+  }
 
   double energy_C(const Mat3& C) const override {
     const double lnJ = 0.5 * std::log(C.determinant());

@@ -4,8 +4,10 @@
 // Parameters are SI (Pa). Formulas: Holzapfel, Nonlinear Solid Mechanics (Wiley 2000), ch. 6.
 #pragma once
 
+#include <array>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "structure/tensor.hpp"
@@ -25,6 +27,11 @@ class Material {
   virtual double energy(const Mat3& F) const = 0;
   // Whether P(QF) = Q P(F) for rotations Q (false only for the small-strain law).
   virtual bool objective() const { return true; }
+  // {G, K} when this is the quasi-incompressible neo-Hookean law below: the explicit force
+  // kernel then evaluates P inline on packs of elements instead of calling pk1 per point.
+  virtual std::optional<std::array<double, 2>> neo_hookean_parameters() const {
+    return std::nullopt;
+  }
 };
 
 // Laws written in terms of C = F^T F: P = F S, A_iJkL = delta_ik S_LJ + F_iI CC_IJLN F_kN.
