@@ -24,12 +24,13 @@ void declare_flow_keys(Schema& s) {
       .at_least(0)
       .unit_of("Pa s")
       .doc("Dynamic viscosity (Newtonian); 3.6e-3 is the reference experiment's blood analogue");
-  s.choice("flow.scheme", {"central2"})
+  s.choice("flow.scheme", {"central2", "central4"})
       .def("central2")
       .unit_of("-")
       .doc(
-          "Convective scheme: 2nd-order centred, kinetic-energy conserving (the 4th-order scheme "
-          "is not implemented yet)");
+          "Convective scheme: central2 = 2nd-order centred, kinetic-energy conserving; central4 = "
+          "4th-order centred edge scheme (Hermite face values, 4th order on uniform hexahedra and "
+          "split tetrahedra, lower on irregular meshes; needs partition.ghost_layers >= 2)");
   s.real("flow.velocity_limit")
       .def(50.0)
       .above(0)
@@ -155,6 +156,7 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   const double rho = scene.get<double>("flow.density");
   o.projection.density = rho;
   o.projection.viscosity = scene.get<double>("flow.viscosity") / rho;
+  o.projection.scheme = scene.get<std::string>("flow.scheme");
   o.velocity_limit = scene.get<double>("flow.velocity_limit");
 
   o.time.end = scene.get<double>("time.end");
