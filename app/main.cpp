@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <exception>
 
+#include "app/command_compare_piv.hpp"
 #include "app/commands.hpp"
 
 int main(int argc, char** argv) {
@@ -40,6 +41,9 @@ int main(int argc, char** argv) {
 
   auto* docs = cli.add_subcommand("docs-scenes", "Print the scene-key reference (docs/scenes.md)");
 
+  std::function<int()> compare_piv;
+  auto* piv = valsalva::app::add_compare_piv(cli, compare_piv);
+
   int code = 0;
   try {
     cli.parse(argc, argv);
@@ -54,6 +58,7 @@ int main(int argc, char** argv) {
     if (*info) code = valsalva::app::mesh_info(mesh_file, scale);
     if (*val) code = valsalva::app::validate(case_name, list, quick, out);
     if (*docs) code = valsalva::app::docs_scenes();
+    if (*piv) code = compare_piv();
   } catch (const std::exception& e) {
     // Inputs are read on every rank, so every rank fails alike; with several ranks a failure on
     // one rank alone must not leave the others waiting in a collective.

@@ -181,7 +181,7 @@ PivData read_piv_csv(const std::filesystem::path& path) {
       it = frame_of_value.emplace(std::isfinite(key) ? key : 0.0, data.frames.size()).first;
       PivFrame f;
       f.phase = key;
-      f.label = data.frame_key.empty() ? "all" : fmt::format("{}={}", data.frame_key, key);
+      f.label = data.frame_key.empty() ? "all" : fmt::format("{}={:.6g}", data.frame_key, key);
       data.frames.push_back(std::move(f));
     }
     add_point(r, line_no, at, values, data.frames[it->second]);

@@ -11,6 +11,7 @@
 
 #include <Eigen/Dense>
 #include <array>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -25,11 +26,14 @@ struct PointLocation {
   std::array<double, 8> weights{};           // sum to 1
   Eigen::Vector3d reference{0, 0, 0};        // reference coordinates in the cell
 
-  // Interpolates a nodal array indexed by mesh node with `components` values per node.
+  // Interpolates a nodal field given as value_of_node(mesh node). Nodes with a negligible
+  // weight (|w| <= 1e-14) are skipped, so a point on a face or a node does not read the
+  // off-face nodes (which may be NaN, e.g. outside a statistics subset).
   template <class Get>
   double interpolate(Get&& value_of_node) const {
     double s = 0;
-    for (int k = 0; k < count; ++k) s += weights[k] * value_of_node(nodes[k]);
+    for (int k = 0; k < count; ++k)
+      if (std::abs(weights[k]) > 1e-14) s += weights[k] * value_of_node(nodes[k]);
     return s;
   }
 };

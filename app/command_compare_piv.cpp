@@ -1,0 +1,237 @@
+// `valsalva compare-piv STATS.xmf PIV_FILE --origin x,y,z --ex x,y,z --ey x,y,z [--line ...]`:
+// reads the statistics written by io::PhaseStatistics::write (mesh, one HDF5 file per phase bin,
+// <name>_phases.csv), reads the PIV file, matches every PIV frame to the bin whose phase time is
+// nearest to the frame's phase/time value (or to --bin), and writes metrics.csv, frame_<i>.csv,
+// profile_<line>_<i>.csv and frame_<i>.png (io/plot_piv.py) into --out. Runs on rank 0.
+#include "app/command_compare_piv.hpp"
+
+#include <fmt/format.h>
+#include <mpi.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include "io/hdf5_file.hpp"
+#include "io/piv_compare.hpp"
+#include "io/probes.hpp"
+#include "io/xdmf_writer.hpp"
+
+namespace valsalva::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Options {
+  std::string stats, piv, out = "piv-compare";
+  std::vector<double> origin, ex, ey;
+  std::vector<std::string> lines;
+  int bin = -1;
+  int line_points = 60;
+  bool plot = true;
+};
+
+// The mesh of an XdmfWriter mesh file: coordinates and the Mixed topology (VTK order -> Gmsh).
+flow::Mesh read_xdmf_mesh(const fs::path& file) {
+  const io::h5::File h5(file, io::h5::Mode::read);
+  const auto xyz = h5.read_all<double>("coordinates");
+  const auto topo = h5.read_all<std::int64_t>("topology");
+  flow::Mesh mesh;
+  mesh.source = file.string();
+  for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)
+    mesh.nodes.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
+  for (std::size_t i = 0; i < topo.size();) {
+    flow::CellType type;
+    switch (topo[i]) {
+      case 6:
+        type = flow::CellType::tetra;
+        break;
+      case 7:
+        type = flow::CellType::pyramid;
+        break;
+      case 8:
+        type = flow::CellType::prism;
+        break;
+      case 9:
+        type = flow::CellType::hexa;
+        break;
+      default:
+        throw std::runtime_error(fmt::format("'{}': topology entry {} has XDMF cell code {}",
+                                             file.string(), i, topo[i]));
+    }
+    const int n = flow::node_count(type);
+    std::vector<flow::GlobalIndex> nodes(topo.begin() + i + 1, topo.begin() + i + 1 + n);
+    if (type == flow::CellType::prism) std::swap(nodes[1], nodes[2]), std::swap(nodes[4], nodes[5]);
+    mesh.add_cell(type, nodes);
+    i += 1 + n;
+  }
+  return mesh;
+}
+
+// bin -> phase time from <name>_phases.csv.
+std::vector<double> read_phase_times(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error(fmt::format("compare-piv: cannot open '{}'", file.string()));
+  std::vector<double> t;
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line)) {
+    std::stringstream ss(line);
+    std::string bin, time;
+    std::getline(ss, bin, ',');
+    std::getline(ss, time, ',');
+    t.push_back(std::stod(time));
+  }
+  return t;
+}
+
+io::SimulationStatistics read_bin(const fs::path& file) {
+  io::SimulationStatistics s;
+  s.mean_velocity = io::read_nodal_field(file, "mean_velocity");
+  s.rms_velocity = io::read_nodal_field(file, "rms_velocity");
+  s.reynolds_uv = io::read_nodal_field(file, "reynolds_uv");
+  s.reynolds_uw = io::read_nodal_field(file, "reynolds_uw");
+  s.reynolds_vw = io::read_nodal_field(file, "reynolds_vw");
+  return s;
+}
+
+io::ProfileLine parse_line(const std::string& text) {
+  // name:x0,y0,x1,y1
+  const auto colon = text.find(':');
+  io::ProfileLine l;
+  std::vector<double> v;
+  if (colon != std::string::npos) {
+    l.name = text.substr(0, colon);
+    std::stringstream ss(text.substr(colon + 1));
+    std::string item;
+    while (std::getline(ss, item, ',')) {
+      try {
+        v.push_back(std::stod(item));
+      } catch (const std::exception&) {
+        v.clear();
+        break;
+      }
+    }
+  }
+  if (v.size() != 4 || l.name.empty())
+    throw std::invalid_argument(
+        fmt::format("compare-piv: --line '{}' is not NAME:x0,y0,x1,y1 (PIV-plane metres)", text));
+  l.a = {v[0], v[1]}, l.b = {v[2], v[3]};
+  return l;
+}
+
+int run(const Options& o) {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank != 0) return 0;
+  const fs::path stats(o.stats);
+  const fs::path dir = stats.parent_path();
+  const std::string name = stats.stem().string();
+  const auto mesh = read_xdmf_mesh(dir / (name + "_mesh.h5"));
+  const auto phase_times = read_phase_times(dir / (name + "_phases.csv"));
+  const auto piv = io::read_piv(o.piv);
+  const io::PivPlane plane(Eigen::Vector3d(o.origin.data()), Eigen::Vector3d(o.ex.data()),
+                           Eigen::Vector3d(o.ey.data()));
+  std::vector<io::ProfileLine> lines;
+  for (const auto& l : o.lines) lines.push_back(parse_line(l)), lines.back().points = o.line_points;
+  const io::PointLocator locator(mesh);
+  fs::create_directories(o.out);
+
+  std::vector<io::FrameComparison> all;
+  for (std::size_t f = 0; f < piv.frames.size(); ++f) {
+    const auto& frame = piv.frames[f];
+    int bin = o.bin;
+    if (bin < 0) {
+      if (phase_times.size() == 1) {
+        bin = 0;
+      } else if (std::isnan(frame.phase)) {
+        throw std::runtime_error(fmt::format(
+            "compare-piv: PIV frame '{}' of '{}' has no phase/time and the statistics have {} "
+            "bins: give --bin",
+            frame.label, piv.source, phase_times.size()));
+      } else {
+        double best = INFINITY;
+        for (std::size_t b = 0; b < phase_times.size(); ++b)
+          if (std::abs(phase_times[b] - frame.phase) < best)
+            best = std::abs(phase_times[b] - frame.phase), bin = int(b);
+      }
+    }
+    if (bin >= int(phase_times.size()))
+      throw std::invalid_argument(fmt::format(
+          "compare-piv: --bin {} but the statistics have {} bins", bin, phase_times.size()));
+    const auto sim = read_bin(dir / fmt::format("{}_{:06d}.h5", name, bin));
+    const io::PivSampler sampler(locator, plane, frame);
+    auto c = io::compare_frame(frame, sampler, sim);
+    const auto csv = fs::path(o.out) / fmt::format("frame_{:03d}.csv", f);
+    io::write_comparison_csv(csv, frame, c);
+    std::string profiles;
+    // Nearest PIV point within 0.75 of the typical spacing (grid area / points).
+    double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
+    for (std::size_t i = 0; i < frame.size(); ++i)
+      xmin = std::min(xmin, frame.x[i]), xmax = std::max(xmax, frame.x[i]),
+      ymin = std::min(ymin, frame.y[i]), ymax = std::max(ymax, frame.y[i]);
+    const double spacing = std::sqrt((xmax - xmin) * (ymax - ymin) / double(frame.size()));
+    for (const auto& l : lines) {
+      const auto p = io::sample_profile(l, sampler, frame, sim, 0.75 * spacing);
+      const auto path = fs::path(o.out) / fmt::format("profile_{}_{:03d}.csv", l.name, f);
+      io::write_profile_csv(path, p);
+      profiles += fmt::format(" --profile '{}'", path.string());
+    }
+    fmt::print(
+        "frame {} '{}' -> bin {} (phase time {:.4g} s): u RMSE {:.4g} m/s, normalised {:.3g}, "
+        "correlation {:.4f}; v RMSE {:.4g} m/s; {} points, {} masked, {} outside\n",
+        f, frame.label, bin, phase_times[bin], c.u.rmse, c.u.normalised_error, c.u.correlation,
+        c.v.rmse, c.u.points, c.masked, c.outside);
+    if (o.plot) {
+      const auto png = fs::path(o.out) / fmt::format("frame_{:03d}.png", f);
+      const std::string cmd = fmt::format(
+          "/usr/bin/python3 '{}/io/plot_piv.py' '{}' '{}'{} --title '{}: PIV vs simulation bin {}'",
+          VALSALVA_SOURCE_DIR, csv.string(), png.string(), profiles, frame.label, bin);
+      if (std::system(cmd.c_str()) != 0)
+        fmt::print(stderr, "compare-piv: warning: plot failed ({})\n", cmd);
+    }
+    all.push_back(std::move(c));
+  }
+  io::write_metrics_csv(fs::path(o.out) / "metrics.csv", all);
+  fmt::print("compare-piv: {} frames, results in '{}'\n", all.size(), o.out);
+  return 0;
+}
+
+}  // namespace
+
+CLI::App* add_compare_piv(CLI::App& cli, std::function<int()>& action) {
+  auto o = std::make_shared<Options>();
+  auto* c = cli.add_subcommand("compare-piv", "Compare PIV data with saved phase statistics");
+  c->add_option("stats", o->stats, "Statistics .xmf written by a run (PhaseStatistics)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  c->add_option("piv", o->piv, "PIV file: CSV or Tecplot ASCII (m, m/s)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  c->add_option("--origin", o->origin, "PIV origin in the simulation frame, m (x,y,z)")
+      ->required()
+      ->expected(3)
+      ->delimiter(',');
+  c->add_option("--ex", o->ex, "PIV x axis in the simulation frame, unit vector")
+      ->required()
+      ->expected(3)
+      ->delimiter(',');
+  c->add_option("--ey", o->ey, "PIV y axis in the simulation frame, unit vector")
+      ->required()
+      ->expected(3)
+      ->delimiter(',');
+  c->add_option("--line", o->lines, "Profile line NAME:x0,y0,x1,y1 in PIV-plane metres");
+  c->add_option("--line-points", o->line_points, "Points per profile line");
+  c->add_option("--bin", o->bin, "Statistics bin for every frame (default: nearest phase)");
+  c->add_option("--out", o->out, "Output folder");
+  c->add_flag("!--no-plot", o->plot, "Do not make PNG plots");
+  action = [o] { return run(*o); };
+  return c;
+}
+
+}  // namespace valsalva::app
