@@ -1,4 +1,5 @@
-"""Taylor-Green vortex: velocity L2 error against h and against wall time, one line per mesh."""
+"""Taylor-Green vortex Re 100: velocity L2 error against h and against wall time (colour = mesh,
+solid = central2, dashed = central4), and the truncation error of each momentum term against h."""
 import csv
 import sys
 from collections import defaultdict
@@ -12,23 +13,39 @@ import matplotlib.pyplot as plt
 out = Path(sys.argv[1])
 rows = defaultdict(list)
 for r in csv.DictReader(open(out / "errors.csv")):
-    rows[r["mesh"]].append(r)
-fig, (ax_h, ax_t) = plt.subplots(1, 2, figsize=(11, 4.5))
-for k, (mesh, rs) in enumerate(rows.items()):
+    rows[(r["mesh"], r["scheme"])].append(r)
+terms = defaultdict(list)
+for r in csv.DictReader(open(out / "terms.csv")):
+    terms[(r["mesh"], r["scheme"])].append(r)
+meshes = sorted({m for m, _ in rows}, key=["hexa", "tetra", "tetra_perturbed"].index)
+style = {"central2": "o-", "central4": "s--"}
+fig, (ax_h, ax_t, ax_e) = plt.subplots(1, 3, figsize=(16, 4.8))
+for (mesh, scheme), rs in rows.items():
+    c = f"C{meshes.index(mesh)}"
     h = [float(r["h"]) for r in rs]
     e = [float(r["velocity_l2"]) for r in rs]
     t = [float(r["wall_seconds"]) for r in rs]
-    ax_h.loglog(h, e, "o-", color=f"C{k}", label=mesh)
-    ax_t.loglog(t, e, "o-", color=f"C{k}", label=mesh)
-h0 = [float(r["h"]) for r in next(iter(rows.values()))]
-e0 = float(next(iter(rows.values()))[0]["velocity_l2"])
-ax_h.loglog(h0, [e0 * (x / h0[0]) ** 2 for x in h0], "k--", lw=0.8, label="slope 2")
+    ax_h.loglog(h, e, style[scheme], color=c, label=f"{mesh} {scheme}")
+    ax_t.loglog(t, e, style[scheme], color=c, label=f"{mesh} {scheme}")
+h0 = sorted({float(r["h"]) for rs in rows.values() for r in rs})
+for p, ls in ((2, ":"), (4, "-.")):
+    ax_h.loglog(h0, [3e-3 * (x / h0[-1]) ** p for x in h0], "k" + ls, lw=0.8, label=f"slope {p}")
+for (mesh, scheme), rs in terms.items():
+    c = f"C{meshes.index(mesh)}"
+    h = [float(r["h"]) for r in rs]
+    ax_e.loglog(h, [float(r["convection_l2"]) for r in rs], style[scheme], color=c,
+                label=f"convection {mesh} {scheme}")
+    if scheme == "central2":
+        ax_e.loglog(h, [float(r["viscous_l2"]) for r in rs], "^:", color=c, label=f"viscous {mesh}")
 ax_h.set_xlabel("h [m]")
 ax_t.set_xlabel("wall time [s]")
+ax_e.set_xlabel("h [m]")
 for ax in (ax_h, ax_t):
-    ax.set_ylabel("velocity L2 error [m/s]")
+    ax.set_ylabel("velocity L2 error at t = 1 [m/s]")
+ax_e.set_ylabel("truncation error on the exact fields (L2) [m/s2]")
+for ax in (ax_h, ax_t, ax_e):
     ax.grid(True, which="both", lw=0.3)
-    ax.legend(fontsize=8)
-fig.suptitle("Taylor-Green vortex, Re 100, t = 1, 2nd-order centred scheme")
+    ax.legend(fontsize=6)
+fig.suptitle("Taylor-Green vortex, Re 100, t = 1: central2 (solid) and central4 (dashed)")
 fig.tight_layout()
 fig.savefig(out / "taylor_green.png", dpi=110)

@@ -5,8 +5,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "flow/convection_scheme.hpp"
 #include "flow/dual_metrics.hpp"
+#include "flow/initial_condition.hpp"
 #include "flow/local_mesh.hpp"
+#include "flow/operators.hpp"
 #include "flow/poisson_weights.hpp"
 #include "flow/projection_rk4.hpp"
 #include "io/box_generator.hpp"
@@ -15,22 +18,13 @@ namespace valsalva::validation {
 
 namespace {
 
-struct Exact {
-  double nu, rho;
-  Eigen::Vector3d velocity(const Eigen::Vector3d& x, double t) const {
-    const double f = std::exp(-2 * nu * t);
-    return {std::sin(x.x()) * std::cos(x.y()) * f, -std::cos(x.x()) * std::sin(x.y()) * f, 0.0};
-  }
-  double pressure(const Eigen::Vector3d& x, double t) const {
-    const double f = std::exp(-2 * nu * t);
-    return rho / 4 * (std::cos(2 * x.x()) + std::cos(2 * x.y())) * f * f;
-  }
+struct TgvMesh {
+  flow::Mesh mesh;
+  flow::DualMetrics metrics;
+  flow::LocalMesh local;
 };
 
-}  // namespace
-
-TgvResult run_taylor_green(const TgvSpec& spec, MPI_Comm comm) {
-  const auto start = std::chrono::steady_clock::now();
+TgvMesh build_mesh(const TgvSpec& spec, MPI_Comm comm) {
   const double two_pi = 2 * std::numbers::pi;
   const double h = two_pi / spec.n;
   io::BoxSpec box;
@@ -39,16 +33,51 @@ TgvResult run_taylor_green(const TgvSpec& spec, MPI_Comm comm) {
   box.cells = {spec.n, spec.n, spec.nz};
   box.length = Eigen::Vector3d(two_pi, two_pi, spec.nz * h);
   box.periodic = {true, true, true};
-  const auto mesh = io::generate_box(box);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, comm, {2, "metis"});
+  TgvMesh m;
+  m.mesh = io::generate_box(box);
+  m.metrics = flow::compute_dual_metrics(m.mesh);
+  m.local = flow::distribute(m.mesh, m.metrics, comm, {2, "metis"});
+  return m;
+}
+
+flow::TaylorGreen exact_solution(const TgvSpec& spec) {
+  return {1.0, 1.0, 1.0 / spec.reynolds, 1.0};  // U0 = L = rho = 1, nu = 1/Re (0 if Re = inf)
+}
+
+double mean_kinetic_energy(const flow::LocalMesh& local, const flow::VectorField& u) {
+  double e = 0, v = 0;
+  for (int i = 0; i < local.num_owned; ++i) {
+    e += 0.5 * local.volume[i] * u[i].squaredNorm();
+    v += local.volume[i];
+  }
+  return local.comm.sum(e) / local.comm.sum(v);
+}
+
+// sqrt(sum V |a - b|^2 / sum V) over owned nodes.
+double l2_difference(const flow::LocalMesh& local, const flow::VectorField& a,
+                     const flow::VectorField& b) {
+  double e = 0, v = 0;
+  for (int i = 0; i < local.num_owned; ++i) {
+    e += local.volume[i] * (a[i] - b[i]).squaredNorm();
+    v += local.volume[i];
+  }
+  return std::sqrt(local.comm.sum(e) / local.comm.sum(v));
+}
+
+}  // namespace
+
+TgvResult run_taylor_green(const TgvSpec& spec, MPI_Comm comm) {
+  const auto start = std::chrono::steady_clock::now();
+  const TgvMesh m = build_mesh(spec, comm);
+  const auto& local = m.local;
 
   flow::ProjectionOptions options;
-  options.density = 1.0;
-  options.viscosity = 1.0 / spec.reynolds;
+  const auto exact = exact_solution(spec);
+  options.density = exact.rho;
+  options.viscosity = exact.nu;
+  options.scheme = spec.scheme;
   options.poisson = spec.poisson;
-  const Exact exact{options.viscosity, options.density};
-  flow::ProjectionRK4 solver(local, options, flow::poisson_weights(mesh, metrics, local));
+  flow::ProjectionRK4 solver(local, options, flow::poisson_weights(m.mesh, m.metrics, local));
 
   flow::FlowState state;
   for (int i = 0; i < local.num_local(); ++i) {
@@ -57,14 +86,19 @@ TgvResult run_taylor_green(const TgvSpec& spec, MPI_Comm comm) {
   }
   TgvResult r;
   r.n = spec.n;
-  r.h = h;
+  r.h = 2 * std::numbers::pi / spec.n;
   r.nodes = local.global_nodes;
-  r.steps = static_cast<int>(std::ceil(spec.t_end / (spec.cfl * h) - 1e-9));
+  double dt = spec.cfl * r.h;
+  if (spec.dt_max > 0) dt = std::min(dt, spec.dt_max);
+  r.steps = static_cast<int>(std::ceil(spec.t_end / dt - 1e-9));
   r.dt = spec.t_end / r.steps;
+  r.kinetic_energy.reserve(r.steps + 1);
+  r.kinetic_energy.push_back(mean_kinetic_energy(local, state.velocity));
   for (int s = 0; s < r.steps; ++s) {
     const auto report = solver.step(state, r.dt);
     r.max_poisson_iterations = std::max(r.max_poisson_iterations, report.poisson.iterations);
     r.max_divergence = std::max(r.max_divergence, report.max_divergence);
+    r.kinetic_energy.push_back(mean_kinetic_energy(local, state.velocity));
   }
 
   const auto& c = local.comm;
@@ -92,6 +126,31 @@ TgvResult run_taylor_green(const TgvSpec& spec, MPI_Comm comm) {
   r.wall_seconds =
       c.max(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return r;
+}
+
+TgvTermErrors taylor_green_term_errors(const TgvSpec& spec, MPI_Comm comm) {
+  const TgvMesh m = build_mesh(spec, comm);
+  const auto& local = m.local;
+  const auto exact = exact_solution(spec);
+  const int n = local.num_local();
+  flow::VectorField u(n), conv, conv_exact(n), visc, visc_exact(n), grad_p, grad_p_exact(n);
+  flow::ScalarField p(n);
+  flow::TensorField grad_u;
+  for (int i = 0; i < n; ++i) {
+    const auto& x = local.position[i];
+    u[i] = exact.velocity(x, 0.0);
+    p[i] = exact.pressure(x, 0.0);
+    // For the TGV: div(u u) = (u.grad) u = -grad p / rho, lap u = -2 u / L^2.
+    grad_p_exact[i] = Eigen::Vector3d(-0.5 * std::sin(2 * x.x()), -0.5 * std::sin(2 * x.y()), 0);
+    conv_exact[i] = -grad_p_exact[i];
+    visc_exact[i] = -2 * exact.nu * u[i];
+  }
+  flow::make_convection_scheme(spec.scheme, local)->apply(u, conv);
+  flow::gradient(local, u, grad_u);
+  flow::viscous(local, flow::laplacian_weights(local), exact.nu, u, grad_u, visc);
+  flow::gradient(local, p, grad_p);
+  return {l2_difference(local, conv, conv_exact), l2_difference(local, visc, visc_exact),
+          l2_difference(local, grad_p, grad_p_exact)};
 }
 
 }  // namespace valsalva::validation

@@ -1,14 +1,17 @@
 // 2D Taylor-Green vortex on a periodic slab [0, 2 pi]^2 x [0, nz h] (Taylor & Green, Proc. R.
 // Soc. A 158, 1937): u = sin x cos y F, v = -cos x sin y F, p = rho/4 (cos 2x + cos 2y) F^2,
 // F = exp(-2 nu t), U = L = 1, nu = 1/Re. One run of the projection + RK4 solver to t_end
-// from the exact initial state, with velocity and pressure errors against the exact solution.
-// Shared by the validation case and the CTest convergence test.
+// from the exact initial state, with velocity and pressure errors against the exact solution,
+// and the truncation error of each term of the momentum equation on the exact fields (to see
+// which term limits the order). reynolds = inf gives the inviscid (steady Euler) vortex.
+// Shared by the validation cases (taylor_green, tgv_inviscid) and the CTest tests.
 #pragma once
 
 #include <mpi.h>
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "flow/pressure_poisson.hpp"
 
@@ -21,7 +24,9 @@ struct TgvSpec {
   int nz = 3;                      // cells across the slab
   double reynolds = 100;
   double t_end = 1.0;
-  double cfl = 0.5;  // dt = t_end / ceil(t_end / (cfl h / U))
+  double cfl = 0.5;   // dt = t_end / ceil(t_end / (cfl h / U))
+  double dt_max = 0;  // > 0: dt is also at most this (a time error below the spatial one)
+  std::string scheme = "central2";  // flow::make_convection_scheme
   flow::PoissonOptions poisson;
 };
 
@@ -37,8 +42,18 @@ struct TgvResult {
   double max_divergence = 0;
   int max_poisson_iterations = 0;
   double wall_seconds = 0;
+  // Mean kinetic energy sum V |u|^2 / 2 / sum V after every step (index 0: initial state).
+  std::vector<double> kinetic_energy;
 };
 
 TgvResult run_taylor_green(const TgvSpec& spec, MPI_Comm comm);
+
+// Volume-weighted L2 norms over owned nodes of (discrete - exact) for each term of the
+// momentum equation evaluated on the exact TGV fields at t = 0: convection div(u u) with
+// spec.scheme, viscous nu lap u, pressure gradient grad p / rho.
+struct TgvTermErrors {
+  double convection = 0, viscous = 0, pressure_gradient = 0;
+};
+TgvTermErrors taylor_green_term_errors(const TgvSpec& spec, MPI_Comm comm);
 
 }  // namespace valsalva::validation
