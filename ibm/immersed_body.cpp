@@ -1,0 +1,91 @@
+// Forces of one immersed solid; see immersed_body.hpp.
+#include "ibm/immersed_body.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace valsalva::ibm {
+
+using structure::Mat3;
+using structure::Vec3;
+
+Eigen::VectorXd lumped_nodal_volume(const structure::SolidMesh& mesh) {
+  const int nen = mesh.nodes_per_element();
+  const auto rule = structure::gauss_hex(structure::default_gauss(mesh.order));
+  std::vector<double> N(nen), dN(3 * nen);
+  Eigen::VectorXd volume = Eigen::VectorXd::Zero(mesh.num_nodes());
+  for (int e = 0; e < mesh.num_elements(); ++e) {
+    const int* en = mesh.element_nodes(e);
+    for (int g = 0; g < rule.size(); ++g) {
+      structure::hex_shape(mesh.order, rule.points[g], N, dN);
+      Mat3 J = Mat3::Zero();  // dX/dxi
+      for (int a = 0; a < nen; ++a)
+        for (int k = 0; k < 3; ++k) J.col(k) += mesh.X.col(en[a]) * dN[3 * a + k];
+      const double w = rule.weights[g] * J.determinant();
+      for (int a = 0; a < nen; ++a) volume[en[a]] += w * N[a];
+    }
+  }
+  return volume;
+}
+
+ImmersedBody::ImmersedBody(const structure::SolidMesh& mesh, const structure::Material& material,
+                           BodySpec spec)
+    : forces_(mesh, material), spec_(std::move(spec)) {
+  for (const auto& name : spec_.clamped_sets) {
+    const auto& set = mesh.node_set(name);  // throws naming the set when it does not exist
+    clamped_.insert(clamped_.end(), set.begin(), set.end());
+  }
+  std::sort(clamped_.begin(), clamped_.end());
+  clamped_.erase(std::unique(clamped_.begin(), clamped_.end()), clamped_.end());
+  if (!clamped_.empty() && !(spec_.tether_stiffness > 0 && std::isfinite(spec_.tether_stiffness)))
+    throw std::invalid_argument(
+        fmt::format("ibm::ImmersedBody '{}': clamped node sets need a positive tether stiffness "
+                    "[N/m] (got {})",
+                    spec_.name, spec_.tether_stiffness));
+  nodal_volume_ = lumped_nodal_volume(mesh);
+  const int nen = mesh.nodes_per_element();
+  for (int a = 0; a < nen; ++a)
+    for (int b = a + 1; b < nen; ++b) {
+      const Vec3 d = structure::hex_reference_node(mesh.order, a) -
+                     structure::hex_reference_node(mesh.order, b);
+      // One lattice step along one reference axis: 2/p in reference units.
+      const double step = 2.0 / static_cast<int>(mesh.order);
+      if (std::abs(d.norm() - step) < 1e-12) neighbour_pairs_.push_back({a, b});
+    }
+}
+
+double ImmersedBody::forces(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
+                            Eigen::Ref<Eigen::Matrix3Xd> f) const {
+  const double min_det = forces_.internal_forces(x, f);
+  const auto& X = mesh().X;
+  for (int a : clamped_) f.col(a) -= spec_.tether_stiffness * (x.col(a) - X.col(a));
+  return min_det;
+}
+
+Eigen::Vector3d ImmersedBody::tether_force(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const {
+  Vec3 total = Vec3::Zero();
+  for (int a : clamped_) total -= spec_.tether_stiffness * (x.col(a) - mesh().X.col(a));
+  return total;
+}
+
+void ImmersedBody::stiffness(const Eigen::Matrix3Xd& x, Eigen::SparseMatrix<double>& K) const {
+  Eigen::Matrix3Xd f(3, num_nodes());
+  forces_.assemble(x, f, K);
+  for (int a : clamped_)
+    for (int i = 0; i < 3; ++i) K.coeffRef(3 * a + i, 3 * a + i) += spec_.tether_stiffness;
+}
+
+double ImmersedBody::max_marker_spacing(const Eigen::Matrix3Xd& x) const {
+  double worst = 0;
+  for (int e = 0; e < mesh().num_elements(); ++e) {
+    const int* en = mesh().element_nodes(e);
+    for (const auto& [a, b] : neighbour_pairs_)
+      worst = std::max(worst, (x.col(en[a]) - x.col(en[b])).norm());
+  }
+  return worst;
+}
+
+}  // namespace valsalva::ibm

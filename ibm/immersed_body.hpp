@@ -1,0 +1,69 @@
+// One immersed solid of the ITBM coupling: its Lagrangian hexahedral mesh, material law and the
+// forces its nodes (the markers) apply to the fluid:
+//   F_a(x) = F_int,a(x) - k_t (x_a - X_a) [a clamped],
+// F_int the explicit internal forces of structure::SolidForces (F_a = -int P grad_X N_a dV, so
+// sum_a F_int,a = 0 and the torque vanishes for objective laws) and the second term a stiff
+// tether (spring of stiffness k_t [N/m] per node) holding clamped nodes at their anchors, the
+// reference positions (Griffith & Luo, J. Comput. Phys. 2017, "target points"). The tether
+// reaction is a force like any other: it is spread too, so the fluid feels the support.
+//
+// Markers are the solid's nodes (Q2: all 27 per element), not its Gauss points: the weak form
+// gives forces at nodes, so spreading nodal forces keeps total force and torque exactly, and the
+// interpolated velocity moves the nodes that define the finite-element geometry without a
+// projection. Each marker carries the lumped reference volume V_a = int N_a dV (positive for
+// Lagrange Q1/Q2: corner 1/216, edge 1/54, face 2/27, centre 8/27 of a cube's volume) and, with
+// solid density rho_s, the mass rho_s V_a, which the coupling neglects (fluid fills the solid).
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "structure/material.hpp"
+#include "structure/solid_forces.hpp"
+#include "structure/solid_mesh.hpp"
+
+namespace valsalva::ibm {
+
+struct BodySpec {
+  std::string name = "structure";
+  std::vector<std::string> clamped_sets;  // node sets held by the tether
+  double tether_stiffness = 0;            // k_t [N/m per node], > 0 when clamped_sets is not empty
+};
+
+class ImmersedBody {
+ public:
+  // `mesh` and `material` must outlive the body.
+  ImmersedBody(const structure::SolidMesh& mesh, const structure::Material& material,
+               BodySpec spec);
+
+  // f (3 x nodes) = internal + tether forces at positions x; returns the smallest det F.
+  // Allocation-free.
+  double forces(const Eigen::Ref<const Eigen::Matrix3Xd>& x, Eigen::Ref<Eigen::Matrix3Xd> f) const;
+  // Sum of the tether forces at x (the reaction of the supports on the solid).
+  Eigen::Vector3d tether_force(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const;
+  // Stiffness K = -dF/dx at x (internal tangent + k_t on clamped nodes), dof 3*node + component.
+  void stiffness(const Eigen::Matrix3Xd& x, Eigen::SparseMatrix<double>& K) const;
+
+  const BodySpec& spec() const { return spec_; }
+  const structure::SolidMesh& mesh() const { return forces_.mesh(); }
+  const structure::SolidForces& solid_forces() const { return forces_; }
+  int num_nodes() const { return mesh().num_nodes(); }
+  const std::vector<int>& clamped_nodes() const { return clamped_; }  // sorted, unique
+  const Eigen::VectorXd& nodal_volume() const { return nodal_volume_; }
+  // Largest distance between lattice-neighbour nodes of an element (the marker spacing) at x.
+  double max_marker_spacing(const Eigen::Matrix3Xd& x) const;
+
+ private:
+  structure::SolidForces forces_;
+  BodySpec spec_;
+  std::vector<int> clamped_;
+  Eigen::VectorXd nodal_volume_;
+  std::vector<std::array<int, 2>> neighbour_pairs_;  // local node pairs one lattice step apart
+};
+
+// Lumped reference volumes V_a = int N_a dV of a hexahedral mesh.
+Eigen::VectorXd lumped_nodal_volume(const structure::SolidMesh& mesh);
+
+}  // namespace valsalva::ibm

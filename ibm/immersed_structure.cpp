@@ -1,0 +1,178 @@
+// ITBM coupling; see immersed_structure.hpp.
+#include "ibm/immersed_structure.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <span>
+#include <stdexcept>
+
+#include "ibm/ib_stability.hpp"
+
+namespace valsalva::ibm {
+
+namespace {
+
+std::span<Eigen::Vector3d> as_points(Eigen::Matrix3Xd& m) {
+  return {reinterpret_cast<Eigen::Vector3d*>(m.data()), static_cast<std::size_t>(m.cols())};
+}
+
+}  // namespace
+
+ImmersedStructure::ImmersedStructure(flow::LocalMesh& mesh, ImmersedOptions options)
+    : mesh_(mesh), options_(options), transfer_(mesh, options.transfer) {
+  if (!(options_.fluid_density > 0))
+    throw std::invalid_argument(fmt::format(
+        "ibm::ImmersedStructure: fluid density must be > 0 (got {})", options_.fluid_density));
+}
+
+int ImmersedStructure::add_body(const structure::SolidMesh& mesh,
+                                const structure::Material& material, BodySpec spec) {
+  bodies_.push_back(std::make_unique<ImmersedBody>(mesh, material, std::move(spec)));
+  const int first = num_markers(), n = mesh.num_nodes();
+  first_.push_back(first);
+  auto grow = [&](Eigen::Matrix3Xd& m) { m.conservativeResize(3, first + n); };
+  for (auto* m : {&x_, &x_n_, &x_stage_, &velocity_, &force_, &wrapped_}) grow(*m);
+  x_.middleCols(first, n) = mesh.X;
+  velocity_.middleCols(first, n).setZero();
+  force_.middleCols(first, n).setZero();
+  dt_max_ = -1;
+  return static_cast<int>(bodies_.size()) - 1;
+}
+
+void ImmersedStructure::set_positions(const Eigen::Matrix3Xd& x) {
+  if (x.cols() != x_.cols())
+    throw std::invalid_argument(fmt::format(
+        "ibm::ImmersedStructure::set_positions: {} positions for {} markers", x.cols(), x_.cols()));
+  x_ = x;
+  dt_max_ = -1;
+}
+
+flow::BodyForce ImmersedStructure::body_force() {
+  return [this](int stage, double t, const flow::VectorField& u, flow::VectorField& f) {
+    stage_force(stage, t, u, f);
+  };
+}
+
+void ImmersedStructure::locate(const Eigen::Matrix3Xd& x) {
+  wrapped_ = x;
+  if (options_.box)
+    for (int d = 0; d < 3; ++d) {
+      if (!options_.box->periodic[d]) continue;
+      const double o = options_.box->origin[d], L = options_.box->length[d];
+      for (int a = 0; a < wrapped_.cols(); ++a)
+        wrapped_(d, a) = o + (wrapped_(d, a) - o) - L * std::floor((wrapped_(d, a) - o) / L);
+    }
+  transfer_.locate(as_points(wrapped_));
+}
+
+void ImmersedStructure::compute_forces(const Eigen::Matrix3Xd& x) {
+  min_det_ = 1e300;
+  for (int b = 0; b < num_bodies(); ++b) {
+    const double det = bodies_[b]->forces(x.middleCols(first_[b], count(b)),
+                                          force_.middleCols(first_[b], count(b)));
+    min_det_ = std::min(min_det_, det);
+    if (!(det > 0)) {
+      const auto [e, worst] = bodies_[b]->solid_forces().worst_element(
+          Eigen::Matrix3Xd(x.middleCols(first_[b], count(b))));
+      throw std::runtime_error(fmt::format(
+          "ibm::ImmersedStructure: body '{}' has an inverted element {} (det F = {:.3e}); the "
+          "coupling is unstable or the time step too large (last stable_time_step {:.3e} s)",
+          bodies_[b]->spec().name, e, worst, dt_max_));
+    }
+  }
+}
+
+void ImmersedStructure::spread(flow::VectorField& density) {
+  density.resize(static_cast<std::size_t>(mesh_.num_local()));
+  transfer_.spread(as_points(force_), density);
+}
+
+void ImmersedStructure::interpolate(const flow::VectorField& u) {
+  u_copy_ = u;  // interpolate() refreshes ghosts in place; the stage velocity is const
+  transfer_.interpolate(std::span<Eigen::Vector3d>(u_copy_), as_points(velocity_));
+}
+
+void ImmersedStructure::stage_force(int stage, double stage_time,
+                                    const flow::VectorField& stage_velocity,
+                                    flow::VectorField& force_density) {
+  if (stage == 0) {
+    t_n_ = stage_time;
+    x_n_ = x_;
+  }
+  if (options_.mode == CouplingMode::per_step) {
+    if (stage == 0) {
+      locate(x_n_);
+      compute_forces(x_n_);
+      spread(held_force_);
+    }
+    force_density = held_force_;
+    return;
+  }
+  // X_k = X^n + a_k dt U_{k-1}, a_k dt = t_k - t^n.
+  if (stage == 0)
+    x_stage_ = x_n_;
+  else
+    x_stage_ = x_n_ + (stage_time - t_n_) * velocity_;
+  locate(x_stage_);
+  compute_forces(x_stage_);
+  spread(force_density);
+  interpolate(stage_velocity);
+}
+
+void ImmersedStructure::finish_step(const flow::FlowState& state) {
+  const double dt = state.time - t_n_;
+  if (!(dt > 0))
+    throw std::logic_error(
+        "ibm::ImmersedStructure::finish_step: called without a flow step through the body-force "
+        "hook (time did not advance)");
+  if (options_.mode == CouplingMode::per_step) {
+    // Transfer is still located at X^n: U(u^{n+1}, X^n).
+    interpolate(state.velocity);
+  }
+  x_ = x_n_ + dt * velocity_;
+}
+
+double ImmersedStructure::stable_time_step() {
+  locate(x_);
+  std::vector<Eigen::SparseMatrix<double>> K(bodies_.size());
+  for (int b = 0; b < num_bodies(); ++b)
+    bodies_[b]->stiffness(Eigen::Matrix3Xd(x_.middleCols(first_[b], count(b))), K[b]);
+  auto apply = [&](const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd& kv) {
+    kv.resize(3, v.cols());
+    for (int b = 0; b < num_bodies(); ++b) {
+      const int n = count(b);
+      Eigen::Map<const Eigen::VectorXd> vb(v.data() + 3 * first_[b], 3 * n);
+      Eigen::Map<Eigen::VectorXd> kb(kv.data() + 3 * first_[b], 3 * n);
+      kb = K[b] * vb;
+    }
+  };
+  const auto eig = kernel_mapped_stiffness_eigenvalue(transfer_, apply);
+  dt_max_ = coupling_time_step_bound(eig.lambda, options_.fluid_density,
+                                     options_.mode == CouplingMode::per_stage);
+  return dt_max_;
+}
+
+void ImmersedStructure::check_time_step(double dt) {
+  if (dt_max_ < 0) stable_time_step();
+  if (dt > options_.stability_safety * dt_max_)
+    throw std::runtime_error(fmt::format(
+        "ibm::ImmersedStructure: time step {:.4e} s exceeds the stability limit {:.4e} s of the "
+        "explicit immersed-boundary coupling ({} mode; safety factor {}): the limit is "
+        "{} / omega with omega^2 = lambda_max(Interp Spread K) / rho, set by the solid stiffness "
+        "and the fluid mesh size at the markers. Lower the time step, soften or coarsen the "
+        "solid, or widen the kernel",
+        dt, options_.stability_safety * dt_max_,
+        options_.mode == CouplingMode::per_stage ? "per-stage" : "per-step",
+        options_.stability_safety, options_.mode == CouplingMode::per_stage ? "2 sqrt(2)" : "2"));
+}
+
+Eigen::Vector3d ImmersedStructure::total_force(int b) const {
+  return force_.middleCols(first_[b], count(b)).rowwise().sum();
+}
+
+Eigen::Vector3d ImmersedStructure::tether_force(int b) const {
+  return bodies_[b]->tether_force(x_.middleCols(first_[b], count(b)));
+}
+
+}  // namespace valsalva::ibm

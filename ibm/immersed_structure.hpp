@@ -1,0 +1,119 @@
+// The immersed thick boundary method (ITBM) coupling: solids whose nodes are markers in the
+// fluid (Peskin, Acta Numerica 11, 2002; thick membranes on unstructured meshes with RKPM
+// kernels: Sigüenza, Mendez, Nicoud et al., Int. J. Numer. Meth. Biomed. Engng. 32, 2016).
+// Solid inertia is neglected (the fluid fills the solid); each marker moves with the fluid:
+//   dX/dt = U(X) = sum_j u_j phi(x_j, X) V_j,     f_j = sum_a F_a(X) phi(x_j, X_a).
+//
+// Time integration is the flow's low-storage RK4 applied to the pair (u, X), through the
+// ProjectionRK4 body-force hook (mode per_stage):
+//   stage k = 0..3 at t_k = t^n + a_k dt (a = 0, 1/4, 1/3, 1/2):
+//     X_k = X^n + a_k dt U_{k-1}          (X_0 = X^n)
+//     F_k = F(X_k) (internal + tether), spread to the fluid force density
+//     U_k = interpolation of the stage velocity u_k at X_k
+//   after the projection: X^{n+1} = X^n + dt U_3.
+// Mode per_step (classic explicit IB): F(X^n) spread once and held over the four stages;
+// X^{n+1} = X^n + dt U(u^{n+1}, X^n) with the projected, divergence-free velocity.
+// Which to use and why: see ibm/ib_stability.hpp and the membrane_relaxation case.
+//
+// Parallel: markers and solid forces are replicated on every rank (solids have thousands of
+// nodes); ibm::DiracTransfer evaluates each marker on one rank and halo-exchanges.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "flow/local_mesh.hpp"
+#include "flow/projection_rk4.hpp"
+#include "ibm/dirac_transfer.hpp"
+#include "ibm/immersed_body.hpp"
+
+namespace valsalva::ibm {
+
+enum class CouplingMode { per_stage, per_step };
+
+// A periodic fluid box: markers are wrapped into it for location (the solid keeps unwrapped
+// positions for its forces).
+struct PeriodicBox {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  Eigen::Vector3d length = Eigen::Vector3d::Ones();
+  std::array<bool, 3> periodic{false, false, false};
+};
+
+struct ImmersedOptions {
+  TransferOptions transfer;
+  CouplingMode mode = CouplingMode::per_stage;
+  double fluid_density = 1.0;      // kg/m^3, for the stability bound
+  std::optional<PeriodicBox> box;  // wrap markers across periodic directions
+  double stability_safety = 1.0;   // dt is refused above safety * dt_max (ib_stability.hpp)
+};
+
+class ImmersedStructure {
+ public:
+  // The fluid mesh must outlive this object.
+  ImmersedStructure(flow::LocalMesh& mesh, ImmersedOptions options);
+
+  // Adds a solid (before the first step); returns its index. Its markers start at the mesh's
+  // reference positions.
+  int add_body(const structure::SolidMesh& mesh, const structure::Material& material,
+               BodySpec spec);
+
+  // Moves all markers (3 x num_markers(), e.g. a pre-deformed initial shape or a restart).
+  void set_positions(const Eigen::Matrix3Xd& x);
+
+  // The hook for flow::ProjectionRK4::set_body_force (captures `this`).
+  flow::BodyForce body_force();
+  // Stage k of the step from stage_time: positions X_k, forces, spread into `force_density`
+  // (owned + ghosts, overwritten), interpolation of `stage_velocity`. Collective.
+  void stage_force(int stage, double stage_time, const flow::VectorField& stage_velocity,
+                   flow::VectorField& force_density);
+  // After ProjectionRK4::step: markers to X^{n+1} (state.time is t^{n+1}). Collective.
+  void finish_step(const flow::FlowState& state);
+
+  // Largest stable time step of the explicit coupling at the current positions, from the
+  // largest eigenvalue of the kernel-mapped stiffness (ib_stability.hpp). Collective.
+  double stable_time_step();
+  // Throws, with the bound and where it comes from, when dt > safety * the last
+  // stable_time_step() (computed now if it never was). Collective.
+  void check_time_step(double dt);
+
+  int num_bodies() const { return static_cast<int>(bodies_.size()); }
+  const ImmersedBody& body(int b) const { return *bodies_[b]; }
+  int first_marker(int b) const { return first_[b]; }
+  int num_markers() const { return static_cast<int>(x_.cols()); }
+  // Current positions, last marker velocities and last forces (3 x markers, all bodies).
+  const Eigen::Matrix3Xd& positions() const { return x_; }
+  const Eigen::Matrix3Xd& velocities() const { return velocity_; }
+  const Eigen::Matrix3Xd& forces() const { return force_; }
+  // Positions, velocities and forces of body b only.
+  Eigen::Matrix3Xd body_positions(int b) const { return x_.middleCols(first_[b], count(b)); }
+  // Total force the body applies to the fluid (= its tether reaction: internal forces sum to
+  // zero), and the tether reaction alone, at the last forces.
+  Eigen::Vector3d total_force(int b) const;
+  Eigen::Vector3d tether_force(int b) const;
+  double last_min_det() const { return min_det_; }
+  const DiracTransfer& transfer() const { return transfer_; }
+  const ImmersedOptions& options() const { return options_; }
+
+ private:
+  int count(int b) const { return bodies_[b]->num_nodes(); }
+  void compute_forces(const Eigen::Matrix3Xd& x);  // force_ at x, checks det F
+  void locate(const Eigen::Matrix3Xd& x);          // wraps into the box
+  void interpolate(const flow::VectorField& u);    // velocity_ at the located markers
+  void spread(flow::VectorField& density);
+
+  flow::LocalMesh& mesh_;
+  ImmersedOptions options_;
+  DiracTransfer transfer_;
+  std::vector<std::unique_ptr<ImmersedBody>> bodies_;
+  std::vector<int> first_;
+  Eigen::Matrix3Xd x_, x_n_, x_stage_, velocity_, force_, wrapped_;
+  double t_n_ = 0;
+  double min_det_ = 1;
+  double dt_max_ = -1;  // last stable_time_step(), -1 before the first
+  flow::VectorField u_copy_, held_force_;
+};
+
+}  // namespace valsalva::ibm
