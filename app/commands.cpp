@@ -20,6 +20,7 @@
 #include "io/scene.hpp"
 #include "io/scene_docs.hpp"
 #include "io/scene_keys_flow.hpp"
+#include "io/scene_keys_les.hpp"
 #include "validation/case.hpp"
 
 namespace valsalva::app {
@@ -67,17 +68,21 @@ int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std
   // Fields go to <basename>.xmf/.h5 in the run directory: "fields" at the output interval,
   // "last_good" when the run stops on a bad state. FieldOutput is collective; the run loop
   // calls the sink on every rank.
+  const auto les = io::les_setup(scene, local);  // nu_sgs/nu joins the fields with a model
   std::map<std::string, std::unique_ptr<io::FieldOutput>> outputs;
   auto sink = [&](const std::string& basename, double time, const flow::FieldSet& set) {
     auto& o = outputs[basename];
     if (!o) o = std::make_unique<io::FieldOutput>(mesh, metrics, local, run_dir.path(), basename);
     std::vector<io::FieldOutput::Scalar> scalars;
     std::vector<io::FieldOutput::Vector> vectors;
-    for (const auto& [name, f] : set.scalars) scalars.push_back({name, f});
+    flow::FieldSet all = set;
+    les.add_fields(all);
+    for (const auto& [name, f] : all.scalars) scalars.push_back({name, f});
     for (const auto& [name, f] : set.vectors) vectors.push_back({name, f});
     o->write(time, scalars, vectors);
   };
-  const auto run_options = io::flow_run_options(scene, run_dir.path());
+  auto run_options = io::flow_run_options(scene, run_dir.path());
+  run_options.projection.subgrid_viscosity = les.subgrid_viscosity;
   if (rank == 0) {
     fmt::print(
         "mesh: {} nodes ({} dual nodes), {} cells; partition: {} ranks, {} ghost layers, "
@@ -88,6 +93,8 @@ int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std
                run_options.projection.density, run_options.projection.viscosity,
                scene.get<std::string>("flow.scheme"), run_options.initial.type);
   }
+  if (rank == 0 && les.subgrid_viscosity)
+    fmt::print("les: model {}, constant {:.4g}\n", les.model, les.constant);
   flow::RunLoop loop(mesh, metrics, local, run_options, sink);
   flow::RunSummary summary;
   try {

@@ -1,0 +1,72 @@
+// Scene keys of the subgrid-scale model (les/, issue 4) and their reader les_setup.
+#include "io/scene_keys_les.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "io/scene_keys.hpp"
+#include "les/subgrid_viscosity.hpp"
+
+namespace valsalva::io {
+
+void declare_les_keys(Schema& s) {
+  s.section("les", "Large Eddy Simulation: the subgrid-scale eddy viscosity added to nu.");
+  s.choice("les.model", {"none", "sigma", "wale", "smagorinsky"})
+      .def("none")
+      .unit_of("-")
+      .doc(
+          "Subgrid model, nu_sgs from the nodal velocity gradient with Delta = cube root of the "
+          "dual volume; none = laminar (no subgrid viscosity is computed)");
+  s.real("les.constant")
+      .def(0.0)
+      .at_least(0)
+      .note("0 = the model's default")
+      .unit_of("-")
+      .doc(
+          "Model constant; 0 takes the default: sigma 1.35 (Nicoud et al., Phys. Fluids 23, "
+          "085106, 2011), wale 0.5 (Nicoud & Ducros, Flow Turbul. Combust. 62, 1999: "
+          "C_w^2 = 10.6 C_s^2), smagorinsky 0.17 (Lilly 1967 with C_K = 1.5)");
+}
+
+struct LesSetup::Shared {
+  les::SubgridViscosity model;
+  double nu = 0;
+  const flow::ScalarField* last = nullptr;  // the solver's nu_sgs array, filled last
+  flow::ScalarField ratio;
+};
+
+void LesSetup::add_fields(flow::FieldSet& set) const {
+  if (!shared) return;
+  auto& sh = *shared;
+  const double scale = sh.nu > 0 ? 1.0 / sh.nu : 1.0;
+  sh.ratio.assign(sh.model.size(), 0.0);  // zero before the first stage (t = 0)
+  if (sh.last)
+    for (std::size_t i = 0; i < sh.ratio.size(); ++i) sh.ratio[i] = (*sh.last)[i] * scale;
+  set.scalars.emplace_back(sh.nu > 0 ? "nu_sgs_over_nu" : "nu_sgs", &sh.ratio);
+}
+
+LesSetup les_setup(const Scene& scene, const flow::LocalMesh& local) {
+  LesSetup out;
+  out.model = scene.get<std::string>("les.model");
+  if (out.model == "none") return out;
+  const double c = scene.get<double>("les.constant");
+  try {
+    out.shared = std::make_shared<LesSetup::Shared>(
+        LesSetup::Shared{les::SubgridViscosity(out.model, c, local.h),
+                         scene.get<double>("flow.viscosity") / scene.get<double>("flow.density"),
+                         nullptr,
+                         {}});
+  } catch (const std::invalid_argument& e) {
+    throw scene.error("les.constant", e.what(), "a finite value > 0, or 0 for the default");
+  }
+  out.constant = out.shared->model.model().constant;
+  out.subgrid_viscosity = [sh = out.shared](const flow::TensorField& grad,
+                                            flow::ScalarField& nu_sgs) {
+    sh->model(grad, nu_sgs);
+    sh->last = &nu_sgs;
+  };
+  return out;
+}
+
+}  // namespace valsalva::io

@@ -1,0 +1,33 @@
+// The LES set-up of a scene ([les]): the reader that goes with declare_les_keys, kept next to
+// the declarations (io/scene_keys_les.cpp).
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "flow/local_mesh.hpp"
+#include "flow/operators.hpp"
+#include "flow/run_loop.hpp"
+#include "io/scene.hpp"
+
+namespace valsalva::io {
+
+struct LesSetup {
+  std::string model = "none";
+  double constant = 0;  // the constant in use (the model's default when les.constant = 0)
+  // For flow::ProjectionOptions::subgrid_viscosity; empty for les.model = "none".
+  std::function<void(const flow::TensorField&, flow::ScalarField&)> subgrid_viscosity;
+  // Appends nu_sgs / nu (or nu_sgs when nu = 0) of the last RK stage to `set`; a no-op for
+  // "none" or before the first stage. The pointers stay valid until the next call.
+  void add_fields(flow::FieldSet& set) const;
+
+  struct Shared;  // the model, the nu_sgs seen last and the output scratch
+  std::shared_ptr<Shared> shared;
+};
+
+// [les] for `local` (filter width = cube root of the dual volume, LocalMesh::h). Throws
+// SceneError naming les.constant for a constant the model rejects.
+LesSetup les_setup(const Scene& scene, const flow::LocalMesh& local);
+
+}  // namespace valsalva::io
