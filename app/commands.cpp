@@ -19,6 +19,7 @@
 #include "io/run_directory.hpp"
 #include "io/scene.hpp"
 #include "io/scene_docs.hpp"
+#include "io/scene_keys_boundary.hpp"
 #include "io/scene_keys_flow.hpp"
 #include "io/scene_keys_les.hpp"
 #include "validation/case.hpp"
@@ -43,6 +44,7 @@ int check_scene(const std::filesystem::path& scene_file) {
   const auto scene = io::load_scene(scene_file);
   const auto mesh = io::build_mesh(scene);
   const auto metrics = flow::compute_dual_metrics(mesh);
+  io::read_boundary_conditions(scene, mesh);  // every non-periodic patch has a valid condition
   if (world_rank() == 0)
     fmt::print("{}: scene and mesh are valid ({} nodes, {} cells, {} boundary patches)\n",
                scene_file.string(), metrics.num_nodes(), mesh.num_cells(), mesh.patch_names.size());
@@ -95,7 +97,9 @@ int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std
   }
   if (rank == 0 && les.subgrid_viscosity)
     fmt::print("les: model {}, constant {:.4g}\n", les.model, les.constant);
-  flow::RunLoop loop(mesh, metrics, local, run_options, sink);
+  auto flow_options = run_options;  // and the boundary conditions, checked against the mesh
+  flow_options.boundary = io::read_boundary_conditions(scene, mesh);
+  flow::RunLoop loop(mesh, metrics, local, flow_options, sink);
   flow::RunSummary summary;
   try {
     summary = loop.run();

@@ -60,6 +60,12 @@ HYPRE_Int precondition_setup(HYPRE_Solver solver, HYPRE_ParCSRMatrix A, HYPRE_Pa
   return HYPRE_BoomerAMGSetup(reinterpret_cast<NullSpacePreconditioner*>(solver)->amg, A, b, x);
 }
 
+// Plain V-cycle for the non-singular (Dirichlet) system.
+HYPRE_Int precondition_plain(HYPRE_Solver solver, HYPRE_ParCSRMatrix A, HYPRE_ParVector b,
+                             HYPRE_ParVector x) {
+  return HYPRE_BoomerAMGSolve(reinterpret_cast<NullSpacePreconditioner*>(solver)->amg, A, b, x);
+}
+
 }  // namespace
 
 struct PressurePoisson::Hypre {
@@ -72,6 +78,14 @@ struct PressurePoisson::Hypre {
   HYPRE_Solver pcg = nullptr, amg = nullptr;
   std::vector<HYPRE_BigInt> rows;
   std::vector<double> values;
+  // Dirichlet elimination: owned row r gets + a x_c on its right-hand side for each coupling
+  // (r, c, a) to a Dirichlet node c; Dirichlet rows carry their diagonal d.
+  struct Coupling {
+    int row, col;
+    double a;
+  };
+  std::vector<Coupling> couplings;
+  std::vector<double> dirichlet_diagonal;  // per owned node, 0 when not Dirichlet
 
   ~Hypre() {
     if (pcg) HYPRE_ParCSRPCGDestroy(pcg);
@@ -100,7 +114,18 @@ PressurePoisson::PressurePoisson(const LocalMesh& mesh, const std::vector<double
   const HYPRE_BigInt lower = mesh.first_owned;
   const HYPRE_BigInt upper = mesh.first_owned + mesh.num_owned - 1;
 
-  // Rows of -lap(x) V (symmetric positive semi-definite): diagonal sum_k a_jk, off -a_jk.
+  const auto& fixed = options_.dirichlet;
+  if (!fixed.empty() && fixed.size() != static_cast<std::size_t>(mesh.num_local()))
+    throw std::invalid_argument("flow::PressurePoisson: " + std::to_string(fixed.size()) +
+                                " Dirichlet flags for " + std::to_string(mesh.num_local()) +
+                                " local nodes");
+  auto is_fixed = [&](int i) { return !fixed.empty() && fixed[i] != 0; };
+  std::int64_t fixed_count = 0;
+  for (int i = 0; i < mesh.num_owned; ++i) fixed_count += is_fixed(i);
+  singular_ = mesh.comm.sum(fixed_count) == 0;
+
+  // Rows of -lap(x) V (symmetric positive semi-definite): diagonal sum_k a_jk, off -a_jk;
+  // Dirichlet rows keep only their diagonal, Dirichlet columns move to the right-hand side.
   std::vector<std::map<HYPRE_BigInt, double>> rows(mesh.num_owned);
   for (int e = 0; e < mesh.num_owned_edges; ++e) {
     const auto [j, k] = mesh.edges[e];
@@ -108,9 +133,16 @@ PressurePoisson::PressurePoisson(const LocalMesh& mesh, const std::vector<double
     for (const auto& [r, c] : {std::pair{j, k}, std::pair{k, j}}) {
       if (r >= mesh.num_owned) continue;
       rows[r][mesh.global_id[r]] += a;
-      rows[r][mesh.global_id[c]] -= a;
+      if (is_fixed(r)) continue;
+      if (is_fixed(c))
+        h.couplings.push_back({r, c, a});
+      else
+        rows[r][mesh.global_id[c]] -= a;
     }
   }
+  h.dirichlet_diagonal.assign(mesh.num_owned, 0.0);
+  for (int r = 0; r < mesh.num_owned; ++r)
+    if (is_fixed(r)) h.dirichlet_diagonal[r] = rows[r][mesh.global_id[r]];
   VALSALVA_HYPRE(HYPRE_IJMatrixCreate(comm, lower, upper, lower, upper, &h.A));
   VALSALVA_HYPRE(HYPRE_IJMatrixSetObjectType(h.A, HYPRE_PARCSR));
   std::vector<HYPRE_Int> sizes(mesh.num_owned);
@@ -155,9 +187,11 @@ PressurePoisson::PressurePoisson(const LocalMesh& mesh, const std::vector<double
   HYPRE_BoomerAMGSetCoarsenType(h.amg, options.coarsen_type);
   HYPRE_BoomerAMGSetInterpType(h.amg, options.interp_type);
   HYPRE_BoomerAMGSetRelaxType(h.amg, options.relax_type);
-  // The coarsest level is singular too: smooth it instead of the default direct solve.
-  HYPRE_BoomerAMGSetCycleRelaxType(h.amg, options.relax_type, 3);
-  HYPRE_BoomerAMGSetCycleNumSweeps(h.amg, 4, 3);
+  if (singular_) {
+    // The coarsest level is singular too: smooth it instead of the default direct solve.
+    HYPRE_BoomerAMGSetCycleRelaxType(h.amg, options.relax_type, 3);
+    HYPRE_BoomerAMGSetCycleNumSweeps(h.amg, 4, 3);
+  }
   HYPRE_BoomerAMGSetStrongThreshold(h.amg, options.strong_threshold);
   HYPRE_BoomerAMGSetAggNumLevels(h.amg, options.aggressive_levels);
   HYPRE_BoomerAMGSetNumSweeps(h.amg, 1);
@@ -171,7 +205,9 @@ PressurePoisson::PressurePoisson(const LocalMesh& mesh, const std::vector<double
   HYPRE_PCGSetLogging(h.pcg, 1);
   HYPRE_PCGSetPrintLevel(h.pcg, options.print_level);
   h.precond.amg = h.amg;
-  HYPRE_PCGSetPrecond(h.pcg, reinterpret_cast<HYPRE_PtrToSolverFcn>(precondition),
+  HYPRE_PCGSetPrecond(h.pcg,
+                      reinterpret_cast<HYPRE_PtrToSolverFcn>(singular_ ? precondition
+                                                                       : precondition_plain),
                       reinterpret_cast<HYPRE_PtrToSolverFcn>(precondition_setup),
                       reinterpret_cast<HYPRE_Solver>(&h.precond));
   // Set up once (AMG hierarchy included); solve() reuses it.
@@ -190,14 +226,21 @@ PoissonResult PressurePoisson::solve(const std::vector<double>& f, std::vector<d
                                 std::to_string(mesh_.num_local()));
   auto& h = *hypre_;
   const auto& comm = mesh_.comm;
-  // b = -V f, made consistent with the constant null space (A symmetric, A 1 = 0).
+  // b = -V f; Dirichlet rows d g, eliminated columns a g. Without Dirichlet rows b is made
+  // consistent with the constant null space (A symmetric, A 1 = 0).
   CompensatedSum sum;
   for (int i = 0; i < n; ++i) {
     h.values[i] = -mesh_.volume[i] * f[i];
     sum.add(h.values[i]);
   }
-  const double mean = comm.sum(sum.value()) / static_cast<double>(mesh_.global_nodes);
-  for (int i = 0; i < n; ++i) h.values[i] -= mean;
+  if (singular_) {
+    const double mean = comm.sum(sum.value()) / static_cast<double>(mesh_.global_nodes);
+    for (int i = 0; i < n; ++i) h.values[i] -= mean;
+  } else {
+    for (int i = 0; i < n; ++i)
+      if (h.dirichlet_diagonal[i] != 0) h.values[i] = h.dirichlet_diagonal[i] * x[i];
+    for (const auto& c : h.couplings) h.values[c.row] += c.a * x[c.col];
+  }
   VALSALVA_HYPRE(HYPRE_IJVectorSetValues(h.b, n, h.rows.data(), h.values.data()));
   VALSALVA_HYPRE(HYPRE_IJVectorSetValues(h.x, n, h.rows.data(), x.data()));
 
@@ -225,6 +268,13 @@ PoissonResult PressurePoisson::solve(const std::vector<double>& f, std::vector<d
         iterations, options_.max_iterations, result.relative_residual, options_.tolerance));
 
   VALSALVA_HYPRE(HYPRE_IJVectorGetValues(h.x, n, h.rows.data(), x.data()));
+  if (!singular_) {
+    // Dirichlet values exactly as given, not to the solver tolerance.
+    for (int i = 0; i < n; ++i)
+      if (h.dirichlet_diagonal[i] != 0) x[i] = h.values[i] / h.dirichlet_diagonal[i];
+    const_cast<Halo&>(mesh_.halo).exchange(x, HaloMode::insert);
+    return result;
+  }
   // Zero volume-weighted mean fixes the free constant.
   CompensatedSum xv, vol;
   for (int i = 0; i < n; ++i) {

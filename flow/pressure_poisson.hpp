@@ -8,9 +8,14 @@
 // Henson & Yang, "BoomerAMG", Appl. Numer. Math. 41, 2002). The AMG hierarchy is set up once in
 // the constructor and reused by every solve; the solve starts from the x it is given (warm
 // start).
-// Boundary patches are homogeneous Neumann (walls, inlets) and periodic patches carry no faces,
-// so the operator is singular with the constants as null space: the right-hand side is made
-// consistent by removing its mean, and the solution is returned with zero volume-weighted mean.
+// Boundary patches are homogeneous Neumann (walls, inlets, convective outlets) unless their nodes
+// are flagged Dirichlet (pressure outlets, PoissonOptions::dirichlet): a Dirichlet row is
+// d_j x_j = d_j g_j (d_j the row's diagonal, to keep AMG's scaling) with g the value x holds on
+// entry, and its column is eliminated into the right-hand side of the other rows, so the matrix
+// stays symmetric positive definite. Without Dirichlet nodes (periodic, or every boundary a
+// velocity condition) the operator is singular with the constants as null space: the
+// right-hand side is made consistent by removing its mean, and the solution is returned with
+// zero volume-weighted mean.
 #pragma once
 
 #include <memory>
@@ -32,6 +37,9 @@ struct PoissonOptions {
   int relax_type = 6;
   int aggressive_levels = 0;
   int print_level = 0;
+  // Per local node (owned and ghosts): 1 = Dirichlet node, its value is the x given to solve();
+  // empty = none (flow::BoundaryConditions::pressure_dirichlet() fills it).
+  std::vector<char> dirichlet;
 };
 
 struct PoissonResult {
@@ -55,11 +63,14 @@ class PressurePoisson {
   PoissonResult solve(const std::vector<double>& f, std::vector<double>& x);
 
   const PoissonOptions& options() const { return options_; }
+  // True when no node is Dirichlet: constants are the null space (mean removed).
+  bool singular() const { return singular_; }
 
  private:
   struct Hypre;
   const LocalMesh& mesh_;
   PoissonOptions options_;
+  bool singular_ = true;
   std::unique_ptr<Hypre> hypre_;
 };
 

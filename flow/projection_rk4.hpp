@@ -6,15 +6,18 @@
 //   p^{n+1} = p^n + dp.
 // The stage form is 4th order in time for linear autonomous right-hand sides and 2nd order for
 // the nonlinear momentum equation. Spatial operators: flow/operators.hpp (2nd-order centred),
-// Poisson: flow/pressure_poisson.hpp. Boundary handling so far: periodic patches (no boundary
-// faces); other patches enter only through the operators' boundary dual faces (zero-gradient
-// pressure increment).
+// Poisson: flow/pressure_poisson.hpp. Boundary conditions (ProjectionOptions::boundary, see
+// flow/boundary_conditions.hpp): imposed on every stage at t + alpha_i dt and again after the
+// correction at t + dt; dp is Neumann at velocity boundaries and Dirichlet (dp = 0) at pressure
+// outlets (the caller puts BoundaryConditions::pressure_dirichlet() into poisson.dirichlet).
+// Periodic patches carry no boundary faces.
 #pragma once
 
 #include <functional>
 #include <memory>
 #include <vector>
 
+#include "flow/boundary_conditions.hpp"
 #include "flow/convection_scheme.hpp"
 #include "flow/local_mesh.hpp"
 #include "flow/operators.hpp"
@@ -38,6 +41,7 @@ struct ProjectionOptions {
   // Laplacian runs and nothing else is computed or allocated. When set, the viscous term is the
   // full stress div((nu + nu_sgs)(grad u + grad u^T)) (flow/viscous_stress.hpp).
   std::function<void(const TensorField& grad_u, ScalarField& nu_sgs)> subgrid_viscosity;
+  std::shared_ptr<BoundaryConditions> boundary;  // null: every patch periodic
 };
 
 struct StepReport {
@@ -82,6 +86,7 @@ class ProjectionRK4 {
   std::unique_ptr<ConvectionScheme> convection_;
   PressurePoisson poisson_;
   ScalarField dp_, div_;  // dp_ is kept between steps: warm start of the next solve
+  ScalarField div_grad_p_, lap_p_;  // pressure damping with boundary conditions (step())
   VectorField grad_p_, rhs_, conv_, stage_;
   TensorField grad_u_;
   ScalarField nu_sgs_, nu_eff_;  // LES only: subgrid and total viscosity

@@ -21,22 +21,6 @@ double seconds(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double>(b - a).count();
 }
 
-// Boundary conditions do not exist yet: every boundary patch must be periodic (periodic
-// patches carry no boundary faces in the LocalMesh).
-void require_periodic(const LocalMesh& local) {
-  std::vector<std::int64_t> faces(local.patch_names.size(), 0);
-  for (const auto& f : local.boundary) ++faces[f.patch];
-  std::string open;
-  for (std::size_t p = 0; p < faces.size(); ++p)
-    if (local.comm.sum(faces[p]) > 0)
-      open += (open.empty() ? "'" : ", '") + local.patch_names[p] + "'";
-  if (!open.empty())
-    throw RunError("flow run: boundary patches " + open +
-                   " are not periodic; boundary conditions are not implemented yet, so a flow "
-                   "run needs a fully periodic mesh (mesh.box.periodic = [\"x\", \"y\", \"z\"] "
-                   "or [mesh.periodic.<pair>] tables)");
-}
-
 }  // namespace
 
 RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& local,
@@ -44,8 +28,7 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
     : local_(local),
       options_(std::move(options)),
       sink_(std::move(sink)),
-      solver_((require_periodic(local), local), options_.projection,
-              poisson_weights(mesh, metrics, local)) {
+      solver_(local, attach_boundary(), poisson_weights(mesh, metrics, local)) {
   const auto& ic = options_.initial;
   const int n = local.num_local();
   state_.velocity.assign(n, Eigen::Vector3d::Zero());
@@ -61,7 +44,28 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
     throw RunError("flow run: unknown initial.type '" + ic.type +
                    "' (accepted: rest, taylor_green)");
   }
+  if (boundary_) {
+    boundary_->impose_pressure(state_.pressure);
+    boundary_->hold_outlets(state_.velocity);
+    boundary_->impose(state_.velocity, 0.0);
+  }
   last_good_ = state_;
+}
+
+// Boundary conditions when the mesh has non-periodic patches (or the options name some).
+ProjectionOptions& RunLoop::attach_boundary() {
+  auto& p = options_.projection;
+  const auto faces = static_cast<std::int64_t>(local_.boundary.size());
+  if (local_.comm.sum(faces) == 0 && options_.boundary.empty()) return p;
+  try {
+    boundary_ = std::make_shared<BoundaryConditions>(local_, options_.boundary, p.viscosity);
+  } catch (const std::invalid_argument& e) {
+    throw RunError(std::string("flow run: ") + e.what(), "boundary");
+  }
+  p.boundary = boundary_;
+  p.poisson.dirichlet =
+      boundary_->has_pressure_outlet() ? boundary_->pressure_dirichlet() : std::vector<char>{};
+  return p;
 }
 
 double RunLoop::choose_dt(double remaining) {
@@ -146,7 +150,10 @@ RunSummary RunLoop::run() {
     csv.open(out.dir / "log.csv");
     if (!csv) throw RunError("flow run: cannot write " + (out.dir / "log.csv").string());
     csv << "step,time,dt,cfl,fourier,max_div,kinetic_energy,poisson_iterations,"
-           "poisson_residual,wall_per_step,eta\n";
+           "poisson_residual,wall_per_step,eta";
+    if (boundary_)
+      for (int p : boundary_->spec_patches()) csv << ",flux_" << local_.patch_names[p];
+    csv << ",mass_imbalance\n";
   }
   const bool fields = out.interval > 0;
   if (fields) write_fields("fields", state_);
@@ -185,6 +192,13 @@ RunSummary RunLoop::run() {
     summary.max_divergence = std::max(summary.max_divergence, report.max_divergence);
     summary.max_poisson_iterations =
         std::max(summary.max_poisson_iterations, report.poisson.iterations);
+    // Boundary fluxes (outward, m^3/s) and their sum, the global mass imbalance.
+    double imbalance = 0;
+    if (boundary_) {
+      fluxes_ = boundary_->patch_fluxes(state_.velocity);
+      for (double f : fluxes_) imbalance += f;
+      summary.max_mass_imbalance = std::max(summary.max_mass_imbalance, std::abs(imbalance));
+    }
 
     const bool finished = t.end - state_.time <= eps || step_ == t.max_steps;
     if (step_ % out.log_every == 0 || finished) {
@@ -196,17 +210,27 @@ RunSummary RunLoop::run() {
       const double eta = per_step * std::max(0.0, t.end - state_.time) / dt;
       const double energy = kinetic_energy(local_, rho, state_.velocity);
       const double cfl = dt * rates_.convective, fourier = dt * rates_.viscous;
+      std::string flux_text, flux_csv;
+      if (boundary_) {
+        for (int p : boundary_->spec_patches()) {
+          flux_text += fmt::format(" {} {:.3e}", local_.patch_names[p], fluxes_[p]);
+          flux_csv += fmt::format(",{:.9e}", fluxes_[p]);
+        }
+        flux_text = " flux" + flux_text + fmt::format(" imbalance {:.1e} m3/s", imbalance);
+      }
       if (root && out.print)
         fmt::print(
             "step {:>7} t {:.6e} s dt {:.3e} s CFL {:.3f} Fo {:.3f} max|div| {:.2e} 1/s "
-            "KE {:.6e} J Poisson {} it {:.1e} wall/step {:.3e} s ETA {:.1f} s\n",
+            "KE {:.6e} J Poisson {} it {:.1e}{} wall/step {:.3e} s ETA {:.1f} s\n",
             step_, state_.time, dt, cfl, fourier, report.max_divergence, energy,
-            report.poisson.iterations, report.poisson.relative_residual, per_step, eta);
+            report.poisson.iterations, report.poisson.relative_residual, flux_text, per_step, eta);
       if (csv.is_open())
         csv << fmt::format(
-                   "{},{:.17g},{:.17g},{:.9g},{:.9g},{:.9g},{:.17g},{},{:.6g},{:.6g},{:.6g}\n",
+                   "{},{:.17g},{:.17g},{:.9g},{:.9g},{:.9g},{:.17g},{},{:.6g},{:.6g},{:.6g}{},{:."
+                   "6e}\n",
                    step_, state_.time, dt, cfl, fourier, report.max_divergence, energy,
-                   report.poisson.iterations, report.poisson.relative_residual, per_step, eta)
+                   report.poisson.iterations, report.poisson.relative_residual, per_step, eta,
+                   flux_csv, imbalance)
             << std::flush;
     }
     if (fields) {

@@ -3,8 +3,9 @@
 // and a CSV row (log.csv) every log_every steps, fields at the output interval, and a guard
 // that stops the run on NaN/Inf or a runaway velocity after writing the last good state.
 // Fields go through a FieldSink so that flow/ stays independent of io/ (app/ plugs in
-// io::FieldOutput). Periodic domains only until boundary conditions exist: a mesh with
-// non-periodic boundary patches is refused, naming them.
+// io::FieldOutput). Every non-periodic boundary patch needs a condition (RunOptions::boundary,
+// flow/boundary_conditions.hpp); the log gains the flux through each such patch and the global
+// mass imbalance (the sum of all boundary fluxes).
 #pragma once
 
 #include <cstdint>
@@ -15,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "flow/boundary_conditions.hpp"
 #include "flow/dual_metrics.hpp"
 #include "flow/initial_condition.hpp"
 #include "flow/local_mesh.hpp"
@@ -46,6 +48,7 @@ struct RunOptions {
   TimeOptions time;
   OutputOptions output;
   InitialCondition initial;
+  std::vector<BoundarySpec> boundary;  // one per non-periodic patch
   double velocity_limit = 50;  // m/s
   // Tests only: let a time step beyond the stability limit through to exercise the guard.
   bool enforce_stability_limit = true;
@@ -83,6 +86,7 @@ struct RunSummary {
   double wall_seconds = 0;
   double max_divergence = 0;  // over all steps, 1/s
   int max_poisson_iterations = 0;
+  double max_mass_imbalance = 0;  // max over steps of |sum of all boundary fluxes|, m^3/s
   std::optional<TaylorGreenError> taylor_green;
 };
 
@@ -96,6 +100,8 @@ class RunLoop {
   RunSummary run();
 
   const FlowState& state() const { return state_; }
+  // The boundary conditions, or null when every patch is periodic.
+  const BoundaryConditions* boundary() const { return boundary_.get(); }
   // Velocity error against the exact Taylor-Green solution at the current time (collective).
   TaylorGreenError taylor_green_error() const;
 
@@ -103,16 +109,18 @@ class RunLoop {
   double choose_dt(double remaining);
   void write_fields(const std::string& basename, const FlowState& state);
   [[noreturn]] void fail(const std::string& why);
+  ProjectionOptions& attach_boundary();
 
   const LocalMesh& local_;
   RunOptions options_;
   FieldSink sink_;
+  std::shared_ptr<BoundaryConditions> boundary_;
   ProjectionRK4 solver_;
   FlowState state_, last_good_;
   std::int64_t step_ = 0;
   TensorField grad_;
   VectorField omega_;
-  std::vector<double> scratch_;
+  std::vector<double> scratch_, fluxes_;
   StabilityRates rates_;
 };
 

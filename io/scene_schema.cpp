@@ -20,6 +20,7 @@ const Schema& scene_schema() {
     declare_mesh_keys(s);
     declare_partition_keys(s);
     declare_flow_keys(s);
+    declare_boundary_keys(s);
     declare_les_keys(s);
     s.check();
     return s;

@@ -1,6 +1,6 @@
 // The flow run loop: a small Taylor-Green run (error against the exact solution, np = 1 and 2
 // agree with a serial run to 1e-10), the refused time step beyond the RK4 stability limit, the
-// blow-up diagnosis with the last good state written, the periodicity requirement, and the
+// blow-up diagnosis with the last good state written, the boundary-condition requirement, and the
 // scene reader of the flow keys.
 #include <doctest/doctest.h>
 #include <fmt/format.h>
@@ -221,10 +221,16 @@ TEST_CASE("the state guard names the field and the position of a non-finite node
   (void)other;
 }
 
-TEST_CASE("a mesh with non-periodic patches is refused, naming them") {
+TEST_CASE("non-periodic patches without a boundary condition are refused, naming them") {
   Setup s(8, MPI_COMM_WORLD, /*periodic_z=*/false);
-  CHECK_THROWS_WITH_AS(flow::RunLoop(s.mesh, s.metrics, s.local, tgv_options(1.0)),
-                       doctest::Contains("'zmin', 'zmax' are not periodic"), flow::RunError);
+  try {
+    flow::RunLoop(s.mesh, s.metrics, s.local, tgv_options(1.0));
+    FAIL("a mesh with open patches and no conditions ran");
+  } catch (const flow::RunError& e) {
+    CHECK(std::string(e.what()).find("patches 'zmin', 'zmax' of the mesh have no boundary "
+                                     "condition") != std::string::npos);
+    CHECK(e.key() == "boundary");
+  }
 }
 
 TEST_CASE("scene keys become run options") {

@@ -1,0 +1,130 @@
+// Boundary conditions of the flow solver, one per non-periodic boundary patch (by name):
+//   wall               u = u_wall (no-slip; a moving lid has a nonzero u_wall)
+//   slip               u . n = 0 at the patch's nodes, n the node's area-weighted normal of the
+//                      patch (several slip patches at a node: all their normals are removed)
+//   inlet              u = profile(x, t) n_in, n_in the inward patch normal; profile flat,
+//                      Poiseuille or Womersley (circular section: centre = area-weighted centroid,
+//                      radius = the largest distance of a patch node from it), scaled by an
+//                      additive multiple of its base shape so that the discrete flux
+//                      -sum_j u_j . A_j equals Q(t) to round-off
+//   convective_outlet  du/dt + U_c du/dn = 0, U_c = inflow / outflow area unless given
+//   pressure_outlet    p = p_out (Dirichlet rows dp = 0 in the Poisson matrix); u from the
+//                      momentum equation (free)
+// Role exchange (pulse-duplicator inflow, see ../shared/design/architecture.md): an inlet with a
+// partner (swap_with, a convective outlet) imposes Q(t) while Q >= 0; while Q < 0 the partner
+// imposes |Q| inward with a flat profile and the inlet becomes a convective outlet.
+// Global mass: after the conditions are imposed, the velocity of the free outflow nodes (outlet
+// nodes not held by a wall, inlet or slip condition) is corrected along their outlet area
+// vector a_j by u_j += c a_j, c = -(sum of all boundary fluxes) / sum |a_j|^2, so that the net
+// boundary flux (the global mass imbalance, sum_j V_j div u_j) is zero to round-off.
+// A node on several patches takes the strongest condition: stationary wall > moving wall >
+// inflow > slip > outflow.
+//
+// How the conditions enter the projection + RK4 step (flow/projection_rk4.hpp):
+//   stage i (time t + alpha_i dt): interior nodes from the momentum equation; convective-outlet
+//   nodes w_i = u^n - alpha_i dt U_c (grad w_{i-1}) n; then impose() at t + alpha_i dt.
+//   Poisson: Neumann (no boundary flux) for dp at every velocity boundary, Dirichlet dp = 0 at
+//   pressure outlets; v* is mass-corrected first so that the singular all-Neumann problem is
+//   consistent. After the correction v = v* - dt grad(dp)/rho, impose() at t + dt again: the
+//   Dirichlet values are restored, convective-outlet nodes keep their predicted value.
+#pragma once
+
+#include <Eigen/Dense>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "flow/inflow_waveform.hpp"
+#include "flow/local_mesh.hpp"
+#include "flow/operators.hpp"
+#include "flow/womersley.hpp"
+
+namespace valsalva::flow {
+
+enum class BoundaryType { wall, slip, inlet, convective_outlet, pressure_outlet };
+enum class InletProfile { flat, poiseuille, womersley };
+
+inline constexpr const char* boundary_type_names =
+    "wall, slip, inlet, convective_outlet, pressure_outlet";
+
+struct BoundarySpec {
+  std::string patch;
+  BoundaryType type = BoundaryType::wall;
+  Eigen::Vector3d wall_velocity = Eigen::Vector3d::Zero();  // wall, m/s
+  InletProfile profile = InletProfile::flat;                // inlet
+  Waveform flow_rate;                                       // inlet, m^3/s
+  std::string swap_with;                                    // inlet: partner convective outlet
+  double pressure = 0;                                      // pressure_outlet, Pa
+  double convection_speed = 0;  // convective_outlet, m/s; 0 = inflow / outflow area
+};
+
+class BoundaryConditions {
+ public:
+  // Collective. `nu` is the kinematic viscosity (Womersley profile). Throws
+  // std::invalid_argument for a non-periodic patch without a condition (naming it and the
+  // accepted types), a condition for a patch the mesh lacks or that is periodic, a bad swap
+  // partner, or a Womersley profile without a sine waveform.
+  BoundaryConditions(const LocalMesh& mesh, std::vector<BoundarySpec> specs, double nu);
+
+  // Per local node: 1 where the pressure is fixed (pressure outlets).
+  std::vector<char> pressure_dirichlet() const;
+  bool has_pressure_outlet() const { return has_pressure_; }
+  // p = p_out at the pressure-outlet nodes (owned and ghosts).
+  void impose_pressure(ScalarField& p) const;
+
+  // Collective. Predicted convective-outlet values u^n - dt_stage U_c (grad w) n at time t,
+  // held for the next impose().
+  void advect_outlets(const VectorField& w, const VectorField& un, double t, double dt_stage);
+  // Holds the convective-outlet values of u (the predictor) for impose() after the projection.
+  void hold_outlets(const VectorField& u);
+  // Collective. Dirichlet values at time t, held outlet values, slip, and the mass correction
+  // (owned and ghost nodes).
+  void impose(VectorField& u, double t);
+
+  // Collective. Outward flux sum u . A through every patch of the mesh (index = patch index
+  // of LocalMesh::patch_names), m^3/s; periodic patches get 0.
+  std::vector<double> patch_fluxes(const VectorField& u) const;
+  const std::vector<BoundarySpec>& specs() const { return specs_; }
+  // Patch index of each spec.
+  const std::vector<int>& spec_patches() const { return spec_patch_; }
+  // Flow rate a patch imposes at time t (inlets and swapped partners; 0 otherwise), m^3/s.
+  double imposed_inflow(int patch, double t) const;
+
+ private:
+  enum class Role { none, fixed, inflow, slip, convective, pressure };
+  struct Patch {
+    int spec = -1;     // index into specs_, -1 = no condition (periodic)
+    int partner = -1;  // inlet: partner patch; convective outlet: the inlet naming it
+    Eigen::Vector3d area_vector = Eigen::Vector3d::Zero();  // sum A (outward)
+    double area = 0;                                        // sum |A|
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    Eigen::Vector3d inward = Eigen::Vector3d::Zero();  // -area_vector / |area_vector|
+    double radius = 0;
+    Womersley womersley;
+    Role role = Role::none;  // at the current time
+  };
+  void update_roles(double t);
+  double profile(const Patch& p, int patch, const Eigen::Vector3d& x, double q, double t,
+                 double& shape) const;
+
+  const LocalMesh& mesh_;
+  std::vector<BoundarySpec> specs_;
+  std::vector<int> spec_patch_;
+  std::vector<Patch> patches_;
+  bool has_pressure_ = false, has_convective_ = false;
+  // Boundary nodes (owned and ghosts) and their boundary entries, CSR.
+  std::vector<int> nodes_, entry_offsets_, entries_;
+  // Per boundary node, at the current time: role, the patch giving it, outlet area vector.
+  std::vector<Role> role_;
+  std::vector<int> role_patch_;
+  std::vector<char> slip_;  // slip projection after the value
+  bool free_outflow(std::size_t k) const {
+    return !slip_[k] && (role_[k] == Role::convective || role_[k] == Role::pressure);
+  }
+  std::vector<Eigen::Vector3d> outlet_area_;
+  VectorField held_;  // per boundary node: convective-outlet value
+  TensorField grad_;
+  std::vector<double> sums_;
+};
+
+}  // namespace valsalva::flow

@@ -1,0 +1,178 @@
+// Scene keys of the boundary conditions ([boundary.<patch>], flow/boundary_conditions.hpp) and
+// their reader.
+#include "io/scene_keys_boundary.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <set>
+
+#include "io/scene_keys.hpp"
+
+namespace valsalva::io {
+
+void declare_boundary_keys(Schema& s) {
+  const std::string b = "boundary.<patch>";
+  s.section(b,
+            "Boundary condition of one mesh patch (the table name is the patch name, e.g. "
+            "[boundary.inlet]); every non-periodic patch needs one, periodic patches take none.");
+  s.choice(b + ".type", {"wall", "slip", "inlet", "convective_outlet", "pressure_outlet"})
+      .required()
+      .unit_of("-")
+      .doc(
+          "wall: no-slip (u = velocity); slip: zero normal velocity; inlet: flow rate Q(t) with a "
+          "profile; convective_outlet: du/dt + U_c du/dn = 0, outflow = inflow; pressure_outlet: "
+          "fixed pressure");
+  s.real3(b + ".velocity")
+      .def(std::array{0.0, 0.0, 0.0})
+      .unit_of("m/s")
+      .doc("Wall velocity, e.g. a moving lid (tangential to the wall)");
+  s.when(b + ".velocity", b + ".type", {"wall"});
+  s.choice(b + ".profile", {"flat", "poiseuille", "womersley"})
+      .def("flat")
+      .unit_of("-")
+      .doc(
+          "Inlet velocity profile along the inward normal; poiseuille and womersley assume a "
+          "circular section (centre and radius from the patch); womersley needs waveform = sine");
+  s.when(b + ".profile", b + ".type", {"inlet"});
+  s.choice(b + ".waveform", {"constant", "sine", "table"})
+      .def("constant")
+      .unit_of("-")
+      .doc(
+          "Inlet flow rate Q(t): constant (flow_rate), sine (flow_rate + amplitude sin(2 pi t / "
+          "period + phase)) or a periodic CSV table (file)");
+  s.when(b + ".waveform", b + ".type", {"inlet"});
+  s.real(b + ".flow_rate")
+      .required()
+      .unit_of("m3/s")
+      .doc("Constant or mean inlet flow rate (the discrete patch flux equals Q(t) exactly)");
+  s.when(b + ".flow_rate", b + ".type", {"inlet"});
+  s.when(b + ".flow_rate", b + ".waveform", {"constant", "sine"});
+  s.real(b + ".amplitude").required().unit_of("m3/s").doc("Amplitude of the sine flow rate");
+  s.when(b + ".amplitude", b + ".type", {"inlet"});
+  s.when(b + ".amplitude", b + ".waveform", {"sine"});
+  s.real(b + ".period").required().above(0).unit_of("s").doc("Period of the sine flow rate");
+  s.when(b + ".period", b + ".type", {"inlet"});
+  s.when(b + ".period", b + ".waveform", {"sine"});
+  s.real(b + ".phase").def(0.0).unit_of("rad").doc("Phase of the sine flow rate");
+  s.when(b + ".phase", b + ".type", {"inlet"});
+  s.when(b + ".phase", b + ".waveform", {"sine"});
+  s.string(b + ".file")
+      .required()
+      .unit_of("-")
+      .doc(
+          "CSV table of rows 't, Q' (s, m3/s), relative to the scene file; one period from the "
+          "first to the last time, linearly interpolated, repeated");
+  s.when(b + ".file", b + ".type", {"inlet"});
+  s.when(b + ".file", b + ".waveform", {"table"});
+  s.string(b + ".swap_with")
+      .def("")
+      .unit_of("-")
+      .doc(
+          "A convective_outlet patch that imposes |Q| inward (flat profile) while Q(t) < 0, this "
+          "inlet becoming a convective outlet; empty = no exchange");
+  s.when(b + ".swap_with", b + ".type", {"inlet"});
+  s.real(b + ".pressure").def(0.0).unit_of("Pa").doc("Fixed pressure of the outlet");
+  s.when(b + ".pressure", b + ".type", {"pressure_outlet"});
+  s.real(b + ".convection_speed")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("m/s")
+      .doc("Convection speed U_c; 0 = total inflow / total outflow area at every stage");
+  s.when(b + ".convection_speed", b + ".type", {"convective_outlet"});
+}
+
+std::vector<flow::BoundarySpec> read_boundary_conditions(const Scene& scene,
+                                                         const flow::Mesh& mesh) {
+  std::set<std::string> periodic;
+  for (const auto& link : mesh.periodic) periodic.insert({link.master, link.slave});
+  const std::string patches = fmt::format("{}", fmt::join(mesh.patch_names, ", "));
+  std::vector<flow::BoundarySpec> specs;
+  const auto names = scene.names("boundary");
+  for (const auto& name : names) {
+    const std::string key = "boundary." + name;
+    if (mesh.patch_index(name) < 0)
+      throw scene.error(key, fmt::format("patch '{}' is not in the mesh", name), patches);
+    if (periodic.count(name))
+      throw scene.error(key, fmt::format("patch '{}' is periodic (paired by the mesh's periodic "
+                                         "links): it takes no boundary condition",
+                                         name));
+    flow::BoundarySpec spec;
+    spec.patch = name;
+    const auto type = scene.get<std::string>(key + ".type");
+    if (type == "wall") {
+      spec.type = flow::BoundaryType::wall;
+      const auto v = scene.get<std::array<double, 3>>(key + ".velocity");
+      spec.wall_velocity = Eigen::Vector3d(v[0], v[1], v[2]);
+    } else if (type == "slip") {
+      spec.type = flow::BoundaryType::slip;
+    } else if (type == "inlet") {
+      spec.type = flow::BoundaryType::inlet;
+      const auto profile = scene.get<std::string>(key + ".profile");
+      spec.profile = profile == "flat"         ? flow::InletProfile::flat
+                     : profile == "poiseuille" ? flow::InletProfile::poiseuille
+                                               : flow::InletProfile::womersley;
+      const auto waveform = scene.get<std::string>(key + ".waveform");
+      auto& q = spec.flow_rate;
+      if (waveform == "table") {
+        try {
+          q = flow::read_waveform_csv(scene.path(key + ".file"));
+        } catch (const flow::WaveformError& e) {
+          throw scene.error(key + ".file", e.what());
+        }
+      } else {
+        q.mean = scene.get<double>(key + ".flow_rate");
+        if (waveform == "sine") {
+          q.kind = flow::Waveform::Kind::sine;
+          q.amplitude = scene.get<double>(key + ".amplitude");
+          q.period = scene.get<double>(key + ".period");
+          q.phase = scene.get<double>(key + ".phase");
+        }
+      }
+      if (spec.profile == flow::InletProfile::womersley && waveform != "sine")
+        throw scene.error(key + ".profile",
+                          "the Womersley profile is the exact solution for a sine flow rate: "
+                          "set waveform = \"sine\"",
+                          "\"flat\", \"poiseuille\" for other waveforms");
+      spec.swap_with = scene.get<std::string>(key + ".swap_with");
+      if (!spec.swap_with.empty()) {
+        const auto partner = std::find(names.begin(), names.end(), spec.swap_with);
+        if (partner == names.end() ||
+            scene.get<std::string>("boundary." + spec.swap_with + ".type") != "convective_outlet")
+          throw scene.error(
+              key + ".swap_with",
+              fmt::format("'{}' is not a convective_outlet patch of the scene", spec.swap_with),
+              "the name of a [boundary.X] table with type = \"convective_outlet\"");
+      }
+    } else if (type == "convective_outlet") {
+      spec.type = flow::BoundaryType::convective_outlet;
+      spec.convection_speed = scene.get<double>(key + ".convection_speed");
+    } else {
+      spec.type = flow::BoundaryType::pressure_outlet;
+      spec.pressure = scene.get<double>(key + ".pressure");
+    }
+    specs.push_back(std::move(spec));
+  }
+  // Every non-periodic patch with faces needs a condition.
+  std::vector<char> has_faces(mesh.patch_names.size(), 0);
+  for (int p : mesh.face_patches) has_faces[p] = 1;
+  std::vector<std::string> missing;
+  for (std::size_t p = 0; p < mesh.patch_names.size(); ++p) {
+    const auto& name = mesh.patch_names[p];
+    if (has_faces[p] && !periodic.count(name) &&
+        std::find(names.begin(), names.end(), name) == names.end())
+      missing.push_back("'" + name + "'");
+  }
+  if (!missing.empty())
+    throw scene.error(
+        "boundary",
+        fmt::format("mesh patch{} {} {} no boundary condition: add a [boundary.<patch>] table "
+                    "with a type for each (or make the patch periodic)",
+                    missing.size() > 1 ? "es" : "", fmt::join(missing, ", "),
+                    missing.size() > 1 ? "have" : "has"),
+        flow::boundary_type_names);
+  return specs;
+}
+
+}  // namespace valsalva::io
