@@ -1,0 +1,5 @@
+# bench_les_cost: opt-in benchmark of the subgrid-viscosity cost per time step (not a test);
+# included from validation/CMakeLists.txt.
+add_executable(bench_les_cost ${CMAKE_CURRENT_LIST_DIR}/les_cost.cpp)
+target_link_libraries(bench_les_cost PRIVATE valsalva_validation fmt::fmt valsalva_warnings)
+target_compile_definitions(bench_les_cost PRIVATE VALSALVA_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
