@@ -29,6 +29,7 @@ meshes = sorted({int(r["n"]) for r in spectra})
 models = list(dict.fromkeys(r["model"] for r in spectra))
 colours = {"sigma": "C0", "wale": "C1", "smagorinsky": "C2", "none": "C3"}
 station_style = {42: ":", 98: "-", 171: "--"}
+exp_marker = {42: "^", 98: "o", 171: "s"}
 
 fig, axes = plt.subplots(1, len(meshes), figsize=(6 * len(meshes), 5), squeeze=False)
 for ax, n in zip(axes[0], meshes):
@@ -47,8 +48,8 @@ for ax, n in zip(axes[0], meshes):
             ax.loglog(k, e, station_style[station], color=colours.get(model, "k"),
                       label=f"{model} {station}" if station != 42 else "initial (42)")
             if station not in exp_done:
-                ax.loglog(k, ee, "ko", ms=3, mfc="none",
-                          label="experiment, filtered" if not exp_done else None)
+                ax.loglog(k, ee, "k" + exp_marker[station], ms=4, mfc="none",
+                          label=f"experiment {station}")
                 exp_done.add(station)
     ax.set_title(f"{n}^3 hexahedra, box 11 M")
     ax.set_xlabel("k [1/cm]")
@@ -63,7 +64,7 @@ for ax, n in zip(axes[0], meshes):
     for model in models:
         t = [float(r["t_u0_over_m"]) for r in decay if int(r["n"]) == n and r["model"] == model]
         e = [float(r["energy"]) * 1e4 for r in decay if int(r["n"]) == n and r["model"] == model]
-        ax.plot(t, e, color=colours.get(model, "k"), label=model)
+        ax.plot(t, e, color=colours.get(model, "k"), label=f"{model} (all modes)")
     pts = [(int(r["station"]), float(r["resolved_exp"]) * 1e4) for r in energy
            if int(r["n"]) == n and r["model"] == models[0]]
     ax.plot([p[0] for p in pts], [p[1] for p in pts], "ks", mfc="none",
