@@ -92,17 +92,23 @@ void run(const Context& ctx, Report& report) {
       // Per-term truncation orders on the exact fields. Convection: >= 3.5 for central4 on
       // the uniform meshes (the scheme's design order), >= 1.9 for central2; viscous and
       // pressure-gradient operators are 2nd order for both schemes (>= 1.9). On perturbed
-      // tetrahedra truncation errors converge slowly (~1 or less) and are only reported.
-      const double conv_min = kind.uniform ? (scheme == "central4" ? 3.5 : 1.9) : 0.0;
+      // tetrahedra truncation errors converge slowly (Diskin & Thomas, NASA 2011): measured
+      // orders ~1.0 for convection and pressure gradient (>= 0.8 asserted), and an O(1)
+      // viscous truncation error (9.7e-4 at n 64 and 128; bounded by 2e-3), while the velocity
+      // error still converges at order > 2.
+      const double conv_min = kind.uniform ? (scheme == "central4" ? 3.5 : 1.9) : 0.8;
       report.add(label + ": truncation order, convection",
                  order(ta.convection, tb.convection, a.h, b.h), conv_min, 0.0, Check::at_least);
       if (scheme == "central2") {
-        report.add(kind.name + ": truncation order, viscous",
-                   order(ta.viscous, tb.viscous, a.h, b.h), kind.uniform ? 1.9 : 0.0, 0.0,
-                   Check::at_least);
+        if (kind.uniform)
+          report.add(kind.name + ": truncation order, viscous",
+                     order(ta.viscous, tb.viscous, a.h, b.h), 1.9, 0.0, Check::at_least);
+        else
+          report.add(kind.name + fmt::format(": viscous truncation error (L2), n {}", b.n),
+                     tb.viscous, 2e-3, 0.0, Check::at_most);
         report.add(kind.name + ": truncation order, pressure gradient",
                    order(ta.pressure_gradient, tb.pressure_gradient, a.h, b.h),
-                   kind.uniform ? 1.9 : 0.0, 0.0, Check::at_least);
+                   kind.uniform ? 1.9 : 0.8, 0.0, Check::at_least);
       }
       // Finest-level error: bounded by the measured value (n 64 central2: 1.2e-5 hexa,
       // 3.9e-4 tetra, 9.0e-4 perturbed) with a factor 2 margin, so a regression shows.
