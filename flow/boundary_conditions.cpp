@@ -112,6 +112,26 @@ BoundaryConditions::BoundaryConditions(const LocalMesh& mesh, std::vector<Bounda
       const auto& w = spec.flow_rate;
       P.womersley = Womersley::from_sine(P.radius, nu, w.mean, w.amplitude, w.period, w.phase);
     }
+    if (spec.profile == InletProfile::plane_poiseuille) {
+      if (!(spec.across.norm() > 0))
+        throw std::invalid_argument(fmt::format(
+            "inlet '{}': the plane_poiseuille profile needs `across`, the direction from one "
+            "channel wall to the other",
+            spec.patch));
+      specs_[P.spec].across = spec.across.normalized();
+      double lo = 1e300, hi = -1e300;
+      for (const auto& b : mesh.boundary)
+        if (b.patch == p && b.node < mesh.num_owned) {
+          const double s = mesh.position[b.node].dot(specs_[P.spec].across);
+          lo = std::min(lo, s), hi = std::max(hi, s);
+        }
+      P.across_min = mesh.comm.min(lo);
+      P.across_max = mesh.comm.max(hi);
+      if (!(P.across_max > P.across_min))
+        throw std::invalid_argument(
+            fmt::format("inlet '{}': the patch has no extent along `across` = ({}, {}, {})",
+                        spec.patch, spec.across.x(), spec.across.y(), spec.across.z()));
+    }
     if (spec.swap_with.empty()) continue;
     const auto it = std::find(names.begin(), names.end(), spec.swap_with);
     const int q = it == names.end() ? -1 : static_cast<int>(it - names.begin());
@@ -243,6 +263,12 @@ double BoundaryConditions::profile(const Patch& P, int patch, const Eigen::Vecto
   if (kind == InletProfile::flat) {
     shape = 1;
     return q / P.area;
+  }
+  if (kind == InletProfile::plane_poiseuille) {
+    const double s =
+        std::clamp((x.dot(spec.across) - P.across_min) / (P.across_max - P.across_min), 0.0, 1.0);
+    shape = 4 * s * (1 - s);
+    return 1.5 * q / P.area * shape;  // mean of 4 s (1 - s) is 2/3
   }
   const double r = std::min(off_axis(x, P.centroid, P.inward).norm(), P.radius);
   const double s = r / P.radius;

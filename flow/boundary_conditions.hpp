@@ -42,7 +42,7 @@
 namespace valsalva::flow {
 
 enum class BoundaryType { wall, slip, inlet, convective_outlet, pressure_outlet };
-enum class InletProfile { flat, poiseuille, womersley };
+enum class InletProfile { flat, poiseuille, womersley, plane_poiseuille };
 
 inline constexpr const char* boundary_type_names =
     "wall, slip, inlet, convective_outlet, pressure_outlet";
@@ -54,7 +54,10 @@ struct BoundarySpec {
   InletProfile profile = InletProfile::flat;                // inlet
   Waveform flow_rate;                                       // inlet, m^3/s
   std::string swap_with;                                    // inlet: partner convective outlet
-  double pressure = 0;                                      // pressure_outlet, Pa
+  // plane_poiseuille: unit vector across the channel (between its two walls); the profile is
+  // 6 (Q/A) s (1 - s), s in [0, 1] the patch position along it (a slab or 2D channel inlet).
+  Eigen::Vector3d across = Eigen::Vector3d::Zero();
+  double pressure = 0;          // pressure_outlet, Pa
   double convection_speed = 0;  // convective_outlet, m/s; 0 = inflow / outflow area
 };
 
@@ -100,6 +103,7 @@ class BoundaryConditions {
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
     Eigen::Vector3d inward = Eigen::Vector3d::Zero();  // -area_vector / |area_vector|
     double radius = 0;
+    double across_min = 0, across_max = 0;  // plane_poiseuille: extent along `across`
     Womersley womersley;
     Role role = Role::none;  // at the current time
   };

@@ -29,13 +29,20 @@ void declare_boundary_keys(Schema& s) {
       .unit_of("m/s")
       .doc("Wall velocity, e.g. a moving lid (tangential to the wall)");
   s.when(b + ".velocity", b + ".type", {"wall"});
-  s.choice(b + ".profile", {"flat", "poiseuille", "womersley"})
+  s.choice(b + ".profile", {"flat", "poiseuille", "womersley", "plane_poiseuille"})
       .def("flat")
       .unit_of("-")
       .doc(
           "Inlet velocity profile along the inward normal; poiseuille and womersley assume a "
-          "circular section (centre and radius from the patch); womersley needs waveform = sine");
+          "circular section (centre and radius from the patch); womersley needs waveform = sine; "
+          "plane_poiseuille is the parabola between two parallel walls (a 2D or slab channel), "
+          "across the direction `across`");
   s.when(b + ".profile", b + ".type", {"inlet"});
+  s.real3(b + ".across")
+      .required()
+      .unit_of("-")
+      .doc("plane_poiseuille: direction from one channel wall to the other, e.g. [0, 1, 0]");
+  s.when(b + ".across", b + ".profile", {"plane_poiseuille"});
   s.choice(b + ".waveform", {"constant", "sine", "table"})
       .def("constant")
       .unit_of("-")
@@ -112,7 +119,14 @@ std::vector<flow::BoundarySpec> read_boundary_conditions(const Scene& scene,
       const auto profile = scene.get<std::string>(key + ".profile");
       spec.profile = profile == "flat"         ? flow::InletProfile::flat
                      : profile == "poiseuille" ? flow::InletProfile::poiseuille
-                                               : flow::InletProfile::womersley;
+                     : profile == "womersley"  ? flow::InletProfile::womersley
+                                               : flow::InletProfile::plane_poiseuille;
+      if (spec.profile == flow::InletProfile::plane_poiseuille) {
+        const auto a = scene.get<std::array<double, 3>>(key + ".across");
+        spec.across = Eigen::Vector3d(a[0], a[1], a[2]);
+        if (!(spec.across.norm() > 0))
+          throw scene.error(key + ".across", "must be a nonzero direction", "e.g. [0, 1, 0]");
+      }
       const auto waveform = scene.get<std::string>(key + ".waveform");
       auto& q = spec.flow_rate;
       if (waveform == "table") {
