@@ -28,11 +28,11 @@ struct Bad {
 // clang-format off
 const Bad bad_scenes[] = {
   {"unknown_key.toml", "6:1: key 'mesh.box.cels': unknown key; did you mean 'mesh.box.cells'? (accepted: keys origin, length, cells, cell_type, perturbation, seed, periodic)"},
-  {"unknown_section.toml", "5:2: key 'partiton': unknown table; did you mean 'partition'? (accepted: sections run, mesh, partition, flow, time, poisson, initial, output)"},
+  {"unknown_section.toml", "5:2: key 'partiton': unknown table; did you mean 'partition'? (accepted: sections run, mesh, partition, flow, time, poisson, initial, output, boundary, les)"},
   {"wrong_type.toml", "6:9: key 'mesh.box.cells': expected an array of 3 integers, got the string \"8 8 8\" (accepted: 3 values, each >= 1)"},
   {"out_of_range.toml", "6:16: key 'partition.ghost_layers': value 7 is out of range (accepted: [1, 4])"},
-  {"unknown_enum.toml", "3:10: key 'mesh.source': unknown value \"boks\"; did you mean \"box\"? (accepted: \"box\", \"gmsh\", \"pipe\")"},
-  {"missing_required.toml", "5:2: key 'mesh.source': required key is missing; expected a string (accepted: \"box\", \"gmsh\", \"pipe\")"},
+  {"unknown_enum.toml", "3:10: key 'mesh.source': unknown value \"boks\"; did you mean \"box\"? (accepted: \"box\", \"gmsh\", \"pipe\", \"cylinder_channel\")"},
+  {"missing_required.toml", "5:2: key 'mesh.source': required key is missing; expected a string (accepted: \"box\", \"gmsh\", \"pipe\", \"cylinder_channel\")"},
   {"float_for_int.toml", "6:13: key 'run.log_every': expected an integer, got the float 2.5 (accepted: >= 1)"},
   {"negative_length.toml", "6:16: key 'mesh.box.length': element 2 is -1, out of range (accepted: 3 values, each > 0)"},
   {"wrong_size.toml", "6:10: key 'mesh.box.origin': expected an array of 3 numbers, got 2 values (accepted: 3 values)"},
@@ -40,7 +40,7 @@ const Bad bad_scenes[] = {
   {"missing_pipe_size.toml", "5:7: key 'mesh.pipe.size': required key is missing; expected a number in m (accepted: > 0)"},
   {"bad_periodic_direction.toml", "6:18: key 'mesh.box.periodic': element 2: unknown value \"w\" (accepted: each of \"x\", \"y\", \"z\", no repeats)"},
   {"periodic_pair_incomplete.toml", "6:16: key 'mesh.periodic.inlet_outlet.slave': required key is missing; expected a string (accepted: any string)"},
-  {"misplaced_key.toml", "4:1: key 'mesh.ghost_layers': unknown key; did you mean 'partition.ghost_layers'? (accepted: keys source, file, scale, box, pipe, periodic)"},
+  {"misplaced_key.toml", "4:1: key 'mesh.ghost_layers': unknown key; did you mean 'partition.ghost_layers'? (accepted: keys source, file, scale, box, pipe, cylinder_channel, periodic)"},
   {"perturbation_too_large.toml", "7:16: key 'mesh.box.perturbation': value 0.5 is out of range (accepted: [0, 0.4])"},
   {"gmsh_without_file.toml", "2:2: key 'mesh.file': required key is missing; expected a string (accepted: any string)"},
   {"bool_as_string.toml", "6:13: key 'run.overwrite': expected true or false, got the string \"yes\" (accepted: true, false)"},

@@ -45,8 +45,8 @@ TEST_CASE("the docs show defaults, units, ranges and conditions") {
   CHECK(md.find("| `ghost_layers` | int | `2` | - | [1, 4] |") != std::string::npos);
   CHECK(md.find("| `length` | float[3] | `[1.0, 1.0, 1.0]` | m | 3 values, each > 0 |") !=
         std::string::npos);
-  CHECK(md.find("| `source` | enum | required | - | \"box\", \"gmsh\", \"pipe\" |") !=
-        std::string::npos);
+  CHECK(md.find("| `source` | enum | required | - | \"box\", \"gmsh\", \"pipe\", "
+                "\"cylinder_channel\" |") != std::string::npos);
   CHECK(md.find("Used only when `mesh.source` is `\"pipe\"`.") != std::string::npos);
   CHECK(md.find("| `output_dir` | string | `\"runs/<scene file stem>\"` |") != std::string::npos);
 }
