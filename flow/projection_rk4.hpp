@@ -85,8 +85,11 @@ class ProjectionRK4 {
   std::vector<double> weights_, poisson_weights_;
   std::unique_ptr<ConvectionScheme> convection_;
   PressurePoisson poisson_;
-  ScalarField dp_, div_;  // dp_ is kept between steps: warm start of the next solve
+  ScalarField dp_, div_;            // dp_ is kept between steps: warm start of the next solve
   ScalarField div_grad_p_, lap_p_;  // pressure damping with boundary conditions (step())
+  // Owned values of the Poisson matrix's operator applied to p (per unit volume), plus the
+  // boundary-face flux of grad p.
+  void matrix_laplacian(const ScalarField& p, const VectorField& grad_p, ScalarField& out) const;
   VectorField grad_p_, rhs_, conv_, stage_;
   TensorField grad_u_;
   ScalarField nu_sgs_, nu_eff_;  // LES only: subgrid and total viscosity
