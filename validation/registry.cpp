@@ -12,6 +12,7 @@ Case strip_bending_case();
 Case leaflet_closure_case();
 Case stability_case();
 Case cbc_decay_case();
+Case cavity_case();
 Case membrane_relaxation_case();
 Case tgv_inviscid_case();
 
@@ -25,6 +26,7 @@ const std::vector<Case>& all_cases() {
       leaflet_closure_case(),
       stability_case(),
       cbc_decay_case(),
+      cavity_case(),
       membrane_relaxation_case(),
       tgv_inviscid_case(),
   };
