@@ -10,11 +10,12 @@ Case taylor_green_case();
 Case turek_hron_csm_case();
 Case strip_bending_case();
 Case leaflet_closure_case();
-Case stability_case();
-Case cbc_decay_case();
-Case cavity_case();
 Case membrane_relaxation_case();
 Case tgv_inviscid_case();
+Case stability_case();
+Case dfg_cylinder_case();
+Case cbc_decay_case();
+Case cavity_case();
 
 const std::vector<Case>& all_cases() {
   // clang-format off
@@ -24,11 +25,12 @@ const std::vector<Case>& all_cases() {
       turek_hron_csm_case(),
       strip_bending_case(),
       leaflet_closure_case(),
-      stability_case(),
-      cbc_decay_case(),
-      cavity_case(),
       membrane_relaxation_case(),
       tgv_inviscid_case(),
+      stability_case(),
+      dfg_cylinder_case(),
+      cbc_decay_case(),
+      cavity_case(),
   };
   // clang-format on
   return cases;
