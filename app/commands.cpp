@@ -7,11 +7,13 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "flow/dual_metrics.hpp"
 #include "flow/local_mesh.hpp"
 #include "flow/mesh_check.hpp"
 #include "flow/run_loop.hpp"
+#include "io/checkpoint.hpp"
 #include "io/field_output.hpp"
 #include "io/gmsh_reader.hpp"
 #include "io/mesh_info.hpp"
@@ -22,6 +24,7 @@
 #include "io/scene_keys_boundary.hpp"
 #include "io/scene_keys_flow.hpp"
 #include "io/scene_keys_les.hpp"
+#include "io/stop_signal.hpp"
 #include "validation/case.hpp"
 
 namespace valsalva::app {
@@ -51,14 +54,40 @@ int check_scene(const std::filesystem::path& scene_file) {
   return 0;
 }
 
-int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std::string& out) {
+int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std::string& out,
+              const std::string& restart) {
+  namespace fs = std::filesystem;
   const auto t0 = std::chrono::steady_clock::now();
   const auto scene = io::load_scene(scene_file);
   const int rank = world_rank();
   if (rank == 0) fmt::print("# resolved scene {}\n{}\n", scene_file.string(), scene.resolved());
-  const auto dir = out.empty() ? io::default_run_path(scene) : std::filesystem::path(out);
-  const auto run_dir = io::RunDirectory::prepare(dir, overwrite || scene.get<bool>("run.overwrite"),
-                                                 scene, MPI_COMM_WORLD);
+  const auto dir = out.empty() ? io::default_run_path(scene) : fs::path(out);
+  const bool wipe = overwrite || scene.get<bool>("run.overwrite");
+  // A restart continues in the run directory of the checkpoint when it is that directory (or
+  // "latest"): nothing there is deleted, the log is appended to and the fields go to a new
+  // fields_restart_<step>.xmf. Otherwise (a checkpoint from elsewhere) the run directory is
+  // prepared as for a new run, with the same --overwrite promise.
+  std::optional<fs::path> checkpoint;
+  if (restart == "latest") {
+    checkpoint = io::latest_checkpoint(dir / "checkpoints");
+    if (!checkpoint)
+      throw std::runtime_error(
+          fmt::format("--restart latest: no checkpoint in {}", (dir / "checkpoints").string()));
+  } else if (!restart.empty()) {
+    checkpoint = fs::path(restart);
+    if (!fs::is_regular_file(*checkpoint))
+      throw std::runtime_error(fmt::format("--restart {}: no such file", restart));
+  }
+  const bool in_place =
+      checkpoint && fs::exists(dir / io::RunDirectory::resolved_scene_name) &&
+      fs::equivalent(fs::absolute(*checkpoint).parent_path(), fs::absolute(dir / "checkpoints"));
+  if (in_place && wipe)
+    throw std::runtime_error(fmt::format(
+        "--restart {} with --overwrite (or run.overwrite) would delete the checkpoint with the "
+        "run directory {}: drop --overwrite to continue there, or give another --out",
+        checkpoint->string(), dir.string()));
+  const fs::path run_path =
+      in_place ? dir : io::RunDirectory::prepare(dir, wipe, scene, MPI_COMM_WORLD).path();
 
   const auto mesh = io::build_mesh(scene);
   const auto metrics = flow::compute_dual_metrics(mesh);
@@ -72,9 +101,32 @@ int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std
   // calls the sink on every rank.
   const auto les = io::les_setup(scene, local);  // nu_sgs/nu joins the fields with a model
   std::map<std::string, std::unique_ptr<io::FieldOutput>> outputs;
-  auto sink = [&](const std::string& basename, double time, const flow::FieldSet& set) {
+  std::int64_t start_step = 0;
+  flow::FlowState start;
+  std::uint64_t hash = 0;
+  if (checkpoint || scene.get<int>("output.checkpoint_every_steps") > 0 ||
+      scene.get<double>("output.checkpoint_every_minutes") > 0 ||
+      scene.get<bool>("output.checkpoint_on_signal"))
+    hash = io::mesh_hash(mesh);
+  if (checkpoint) {
+    io::CheckpointReader in(local, hash, *checkpoint);  // throws on another mesh
+    in.read_state(start);
+    start_step = in.info().step;
+    if (rank == 0)
+      fmt::print("restart: {} (step {}, t = {:.9g} s)\n", checkpoint->string(), start_step,
+                 start.time);
+  }
+  // Continuing in place must not replace the earlier fields: they get a name of their own.
+  const std::string fields_name =
+      in_place ? fmt::format("fields_restart_{:09d}", start_step) : std::string("fields");
+  if (in_place && fs::exists(run_path / (fields_name + ".xmf")) && !wipe)
+    throw std::runtime_error(fmt::format(
+        "{} exists: this checkpoint was already restarted from in {}; give another --out",
+        (run_path / (fields_name + ".xmf")).string(), run_path.string()));
+  auto sink = [&](const std::string& stream, double time, const flow::FieldSet& set) {
+    const std::string basename = stream == "fields" ? fields_name : stream;
     auto& o = outputs[basename];
-    if (!o) o = std::make_unique<io::FieldOutput>(mesh, metrics, local, run_dir.path(), basename);
+    if (!o) o = std::make_unique<io::FieldOutput>(mesh, metrics, local, run_path, basename);
     std::vector<io::FieldOutput::Scalar> scalars;
     std::vector<io::FieldOutput::Vector> vectors;
     flow::FieldSet all = set;
@@ -83,7 +135,7 @@ int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std
     for (const auto& [name, f] : set.vectors) vectors.push_back({name, f});
     o->write(time, scalars, vectors);
   };
-  auto run_options = io::flow_run_options(scene, run_dir.path());
+  auto run_options = io::flow_run_options(scene, run_path);
   run_options.projection.subgrid_viscosity = les.subgrid_viscosity;
   if (rank == 0) {
     fmt::print(
@@ -100,6 +152,37 @@ int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std
   auto flow_options = run_options;  // and the boundary conditions, checked against the mesh
   flow_options.boundary = io::read_boundary_conditions(scene, mesh);
   flow::RunLoop loop(mesh, metrics, local, flow_options, sink);
+  if (checkpoint) loop.resume(std::move(start), start_step);
+
+  // Checkpoints every N steps, every M wall-clock minutes (rank 0's clock decides, so that all
+  // ranks agree) and on SIGINT/SIGTERM; the newest output.checkpoint_keep are kept.
+  const auto every_steps = static_cast<std::int64_t>(scene.get<int>("output.checkpoint_every_steps"));
+  const double every_seconds = 60 * scene.get<double>("output.checkpoint_every_minutes");
+  std::optional<io::CheckpointWriter> writer;
+  std::optional<io::StopSignal> stop;
+  fs::path last_checkpoint;
+  if (hash != 0 &&
+      (every_steps > 0 || every_seconds > 0 || scene.get<bool>("output.checkpoint_on_signal")))
+    writer.emplace(local, hash, run_path / "checkpoints", "checkpoint",
+                   scene.get<int>("output.checkpoint_keep"));
+  if (scene.get<bool>("output.checkpoint_on_signal")) stop.emplace();
+  auto last_write = std::chrono::steady_clock::now();
+  flow::RunHooks hooks;
+  if (writer)
+    hooks.checkpoint = [&](const flow::FlowState& state, std::int64_t step, double dt,
+                           bool stopping) {
+      bool due = stopping || (every_steps > 0 && step % every_steps == 0);
+      if (every_seconds > 0) {
+        int late = seconds_since(last_write) >= every_seconds ? 1 : 0;
+        MPI_Bcast(&late, 1, MPI_INT, 0, MPI_COMM_WORLD);
+        due = due || late != 0;
+      }
+      if (!due) return;
+      last_checkpoint = writer->write(state, step, dt);
+      last_write = std::chrono::steady_clock::now();
+    };
+  if (stop) hooks.stop_requested = [&] { return stop->requested(MPI_COMM_WORLD); };
+  loop.set_hooks(std::move(hooks));
   flow::RunSummary summary;
   try {
     summary = loop.run();
@@ -107,16 +190,25 @@ int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std
     if (e.key().empty()) throw;
     throw std::runtime_error(scene.location(e.key()).str() + ": " + e.what());
   }
+  if (summary.stopped) {
+    if (rank == 0)
+      fmt::print(
+          "stopped by signal {} at step {} (t = {:.9g} s); checkpoint {}\ncontinue with: "
+          "valsalva run {} --out {} --restart latest\n",
+          io::StopSignal::signal_number(), summary.steps, summary.time, last_checkpoint.string(),
+          scene_file.string(), run_path.string());
+    return 0;
+  }
   if (rank == 0) {
     fmt::print(
         "finished: {} steps to t = {:.6g} s, max |div v| {:.3e} 1/s, max Poisson "
         "iterations {}\n",
         summary.steps, summary.time, summary.max_divergence, summary.max_poisson_iterations);
-    if (outputs.count("fields"))
-      fmt::print("results: {} (open {} in ParaView)\n", run_dir.path().string(),
-                 outputs.at("fields")->xmf_file().string());
+    if (outputs.count(fields_name))
+      fmt::print("results: {} (open {} in ParaView)\n", run_path.string(),
+                 outputs.at(fields_name)->xmf_file().string());
     else
-      fmt::print("results: {} (no fields: output.interval = 0)\n", run_dir.path().string());
+      fmt::print("results: {} (no fields: output.interval = 0)\n", run_path.string());
     fmt::print("wall time: {:.2f} s\n", seconds_since(t0));
   }
   return 0;

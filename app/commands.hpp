@@ -6,7 +6,9 @@
 
 namespace valsalva::app {
 
-int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std::string& out);
+// `restart`: empty, a checkpoint file, or "latest" (newest in <run dir>/checkpoints).
+int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std::string& out,
+              const std::string& restart = {});
 int check_scene(const std::filesystem::path& scene_file);
 int mesh_info(const std::filesystem::path& mesh_file, double scale);
 int validate(const std::string& case_name, bool list, bool quick, const std::string& out);

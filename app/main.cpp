@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
   CLI::App cli{
       "valsalva: blood flow through heart valves (incompressible LES + immersed leaflets)"};
   cli.require_subcommand(1);
-  std::string scene, mesh_file, case_name, out;
+  std::string scene, mesh_file, case_name, out, restart;
   bool overwrite = false, list = false, quick = false;
   double scale = 1.0;
 
@@ -25,6 +25,8 @@ int main(int argc, char** argv) {
   run->add_option("scene", scene, "Scene file (TOML)")->required();
   run->add_flag("--overwrite", overwrite, "Replace the results of an earlier run of this scene");
   run->add_option("--out", out, "Run directory (default: run.output_dir, else runs/<scene>)");
+  run->add_option("--restart", restart,
+                  "Continue from a checkpoint FILE, or 'latest' in <run dir>/checkpoints");
 
   auto* check = cli.add_subcommand("check", "Validate a scene and its mesh without running");
   check->add_option("scene", scene, "Scene file (TOML)")->required();
@@ -53,7 +55,7 @@ int main(int argc, char** argv) {
     return code;
   }
   try {
-    if (*run) code = valsalva::app::run_scene(scene, overwrite, out);
+    if (*run) code = valsalva::app::run_scene(scene, overwrite, out, restart);
     if (*check) code = valsalva::app::check_scene(scene);
     if (*info) code = valsalva::app::mesh_info(mesh_file, scale);
     if (*val) code = valsalva::app::validate(case_name, list, quick, out);

@@ -52,6 +52,19 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
   last_good_ = state_;
 }
 
+void RunLoop::resume(FlowState state, std::int64_t step) {
+  const auto n = static_cast<std::size_t>(local_.num_local());
+  if (state.velocity.size() != n || state.pressure.size() != n)
+    throw RunError(
+        fmt::format("flow run: resumed state has {} velocity and {} pressure values, "
+                    "the local mesh {} nodes",
+                    state.velocity.size(), state.pressure.size(), n));
+  state_ = std::move(state);
+  last_good_ = state_;
+  step_ = step;
+  resumed_ = true;
+}
+
 // Boundary conditions when the mesh has non-periodic patches (or the options name some).
 ProjectionOptions& RunLoop::attach_boundary() {
   auto& p = options_.projection;
@@ -146,9 +159,17 @@ RunSummary RunLoop::run() {
   const double rho = options_.projection.density;
   const auto start = Clock::now();
   std::ofstream csv;
+  bool header = true;
   if (root && !out.dir.empty()) {
-    csv.open(out.dir / "log.csv");
+    // A resumed run continues an existing log (rows after the checkpoint's step may repeat when
+    // the earlier run went on past its last checkpoint).
+    std::error_code ec;
+    const bool append = resumed_ && std::filesystem::file_size(out.dir / "log.csv", ec) > 0 && !ec;
+    csv.open(out.dir / "log.csv", append ? std::ios::app : std::ios::trunc);
     if (!csv) throw RunError("flow run: cannot write " + (out.dir / "log.csv").string());
+    header = !append;
+  }
+  if (csv.is_open() && header) {
     csv << "step,time,dt,cfl,fourier,max_div,kinetic_energy,poisson_iterations,"
            "poisson_residual,wall_per_step,eta";
     if (boundary_)
@@ -159,14 +180,18 @@ RunSummary RunLoop::run() {
   if (fields) write_fields("fields", state_);
   const double eps = 1e-12 * std::max(t.end, std::numeric_limits<double>::min());
   double next_output = out.interval;  // in seconds when !interval_in_steps
-  std::int64_t last_written = 0, last_logged = 0;
+  // Resumed: the same sequence of output times as an uninterrupted run (same additions).
+  if (fields && !out.interval_in_steps)
+    while (next_output <= state_.time + eps) next_output += out.interval;
+  std::int64_t last_written = step_, last_logged = step_;
   auto last_log_time = Clock::now();
   RunSummary summary;
   StepReport report;
   double dt = 0;
   const double energy0 = kinetic_energy(local_, rho, state_.velocity);  // collective
   if (root && out.print)
-    fmt::print("flow: t = 0 s, kinetic energy {:.6e} J, running to t = {:.6g} s\n", energy0, t.end);
+    fmt::print("flow: t = {:.9g} s (step {}), kinetic energy {:.6e} J, running to t = {:.6g} s\n",
+               state_.time, step_, energy0, t.end);
 
   while (t.end - state_.time > eps && (t.max_steps == 0 || step_ < t.max_steps)) {
     double remaining = t.end - state_.time;
@@ -244,13 +269,19 @@ RunSummary RunLoop::run() {
           while (next_output <= state_.time + eps) next_output += out.interval;
       }
     }
+    const bool stopping = hooks_.stop_requested && hooks_.stop_requested();
+    if (hooks_.checkpoint) hooks_.checkpoint(state_, step_, dt, stopping);
+    if (stopping) {
+      summary.stopped = true;
+      break;
+    }
   }
-  if (fields && last_written != step_) write_fields("fields", state_);
+  if (fields && last_written != step_ && !summary.stopped) write_fields("fields", state_);
 
   summary.steps = step_;
   summary.time = state_.time;
   summary.wall_seconds = local_.comm.max(seconds(start, Clock::now()));
-  if (options_.initial.type == "taylor_green") {
+  if (options_.initial.type == "taylor_green" && !summary.stopped) {
     const auto e = taylor_green_error();
     summary.taylor_green = e;
     if (root && !out.dir.empty()) {

@@ -49,7 +49,7 @@ struct RunOptions {
   OutputOptions output;
   InitialCondition initial;
   std::vector<BoundarySpec> boundary;  // one per non-periodic patch
-  double velocity_limit = 50;  // m/s
+  double velocity_limit = 50;          // m/s
   // Tests only: let a time step beyond the stability limit through to exercise the guard.
   bool enforce_stability_limit = true;
 };
@@ -60,6 +60,16 @@ struct FieldSet {
   std::vector<std::pair<std::string, const VectorField*>> vectors;
 };
 using FieldSink = std::function<void(const std::string& basename, double time, const FieldSet&)>;
+
+// Checkpoint/restart hooks (app/ plugs in io::CheckpointWriter and io::StopSignal, so flow/ stays
+// independent of io/). Both are called on every rank after every step and must be collective.
+struct RunHooks {
+  // After each step: the state, the step count, the step's dt and whether the run stops here on
+  // a stop request (the hook then must write; otherwise it decides, e.g. every N steps).
+  std::function<void(const FlowState&, std::int64_t step, double dt, bool stopping)> checkpoint;
+  // True on every rank when the run should stop now (e.g. SIGTERM on any rank).
+  std::function<bool()> stop_requested;
+};
 
 // A time step the scheme cannot take, a blown-up state or a failed Poisson solve.
 // `key` names the scene key at fault, when there is one, so that the front end can point at
@@ -88,6 +98,7 @@ struct RunSummary {
   int max_poisson_iterations = 0;
   double max_mass_imbalance = 0;  // max over steps of |sum of all boundary fluxes|, m^3/s
   std::optional<TaylorGreenError> taylor_green;
+  bool stopped = false;  // ended early on a stop request (after the checkpoint hook)
 };
 
 class RunLoop {
@@ -96,7 +107,15 @@ class RunLoop {
   RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& local, RunOptions options,
           FieldSink sink = {});
 
-  // Runs from the initial condition to time.end (or max_steps). Throws RunError.
+  void set_hooks(RunHooks hooks) { hooks_ = std::move(hooks); }
+  // Continue from a checkpointed state (velocity and pressure of every local node, time) after
+  // `step` steps instead of the initial condition; log.csv is appended to when it exists. Not
+  // restored: the Poisson warm start (the previous pressure increment, private to
+  // ProjectionRK4) and the previous step's nu_sgs (LES) used by the first time-step choice.
+  void resume(FlowState state, std::int64_t step);
+
+  // Runs from the initial condition (or the resumed state) to time.end (or max_steps), or until
+  // hooks.stop_requested(). Throws RunError.
   RunSummary run();
 
   const FlowState& state() const { return state_; }
@@ -118,6 +137,8 @@ class RunLoop {
   ProjectionRK4 solver_;
   FlowState state_, last_good_;
   std::int64_t step_ = 0;
+  bool resumed_ = false;
+  RunHooks hooks_;
   TensorField grad_;
   VectorField omega_;
   std::vector<double> scratch_, fluxes_;

@@ -149,6 +149,29 @@ void declare_flow_keys(Schema& s) {
       .values({"velocity", "pressure", "vorticity"})
       .unit_of("-")
       .doc("Fields to write; vorticity is the curl of the nodal velocity gradient");
+  // Checkpoints for `valsalva run --restart`: HDF5 files in <run dir>/checkpoints (see
+  // io/checkpoint.hpp), also written on SIGINT/SIGTERM.
+  s.integer("output.checkpoint_every_steps")
+      .def(0)
+      .at_least(0)
+      .unit_of("-")
+      .doc(
+          "Write a checkpoint (<run dir>/checkpoints, for `valsalva run --restart`) every this "
+          "many time steps; 0 = not by step count");
+  s.real("output.checkpoint_every_minutes")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("min")
+      .doc("Write a checkpoint every this many wall-clock minutes; 0 = not by wall clock");
+  s.integer("output.checkpoint_keep")
+      .def(2)
+      .at_least(1)
+      .unit_of("-")
+      .doc("Number of newest checkpoints kept; older ones are deleted");
+  s.boolean("output.checkpoint_on_signal")
+      .def(true)
+      .unit_of("-")
+      .doc("On SIGINT/SIGTERM write a checkpoint and stop cleanly at the end of the current step");
 }
 
 flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::path& run_dir) {
