@@ -103,6 +103,7 @@ int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std
   std::map<std::string, std::unique_ptr<io::FieldOutput>> outputs;
   std::int64_t start_step = 0;
   flow::FlowState start;
+  flow::ScalarField start_dp;
   std::uint64_t hash = 0;
   if (checkpoint || scene.get<int>("output.checkpoint_every_steps") > 0 ||
       scene.get<double>("output.checkpoint_every_minutes") > 0 ||
@@ -112,6 +113,10 @@ int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std
     io::CheckpointReader in(local, hash, *checkpoint);  // throws on another mesh
     in.read_state(start);
     start_step = in.info().step;
+    if (in.has("pressure_increment")) {  // the Poisson warm start (bitwise restarts)
+      std::vector<std::int64_t> rows(local.dual_node.begin(), local.dual_node.end());
+      start_dp = in.read_array("pressure_increment", rows);
+    }
     if (rank == 0)
       fmt::print("restart: {} (step {}, t = {:.9g} s)\n", checkpoint->string(), start_step,
                  start.time);
@@ -152,11 +157,12 @@ int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std
   auto flow_options = run_options;  // and the boundary conditions, checked against the mesh
   flow_options.boundary = io::read_boundary_conditions(scene, mesh);
   flow::RunLoop loop(mesh, metrics, local, flow_options, sink);
-  if (checkpoint) loop.resume(std::move(start), start_step);
+  if (checkpoint) loop.resume(std::move(start), start_step, start_dp);
 
   // Checkpoints every N steps, every M wall-clock minutes (rank 0's clock decides, so that all
   // ranks agree) and on SIGINT/SIGTERM; the newest output.checkpoint_keep are kept.
-  const auto every_steps = static_cast<std::int64_t>(scene.get<int>("output.checkpoint_every_steps"));
+  const auto every_steps =
+      static_cast<std::int64_t>(scene.get<int>("output.checkpoint_every_steps"));
   const double every_seconds = 60 * scene.get<double>("output.checkpoint_every_minutes");
   std::optional<io::CheckpointWriter> writer;
   std::optional<io::StopSignal> stop;
@@ -178,7 +184,13 @@ int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std
         due = due || late != 0;
       }
       if (!due) return;
-      last_checkpoint = writer->write(state, step, dt);
+      io::CheckpointArray dp{"pressure_increment", local.global_nodes, 0, {}, {}};
+      const auto& increment = loop.pressure_increment();
+      for (int i = 0; i < local.num_owned; ++i) {
+        dp.rows.push_back(local.dual_node[i]);
+        dp.data.push_back(increment[i]);
+      }
+      last_checkpoint = writer->write(state, step, dt, std::span(&dp, 1));
       last_write = std::chrono::steady_clock::now();
     };
   if (stop) hooks.stop_requested = [&] { return stop->requested(MPI_COMM_WORLD); };

@@ -45,6 +45,14 @@ void ProjectionRK4::momentum_rhs(const VectorField& u, VectorField& rhs) {
   for (int i = 0; i < mesh_.num_local(); ++i) rhs[i] -= conv_[i];
 }
 
+void ProjectionRK4::set_pressure_increment(const ScalarField& dp) {
+  if (dp.size() != dp_.size())
+    throw std::invalid_argument(
+        "flow::ProjectionRK4::set_pressure_increment: " + std::to_string(dp.size()) +
+        " values for " + std::to_string(dp_.size()) + " local nodes");
+  dp_ = dp;
+}
+
 void ProjectionRK4::matrix_laplacian(const ScalarField& p, const VectorField& grad_p,
                                      ScalarField& out) const {
   // (1/V_j) [sum_k w_jk (p_k - p_j) + sum_faces grad p_j . A_j]: the hypre matrix's operator plus

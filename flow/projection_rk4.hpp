@@ -70,6 +70,11 @@ class ProjectionRK4 {
 
   const std::vector<double>& laplacian_weights() const { return weights_; }
 
+  // The last pressure increment dp (the warm start of the next Poisson solve): saved in
+  // checkpoints so that a restarted run repeats the uninterrupted one bit for bit.
+  const ScalarField& pressure_increment() const { return dp_; }
+  void set_pressure_increment(const ScalarField& dp);
+
   // nu_sgs of the last RK stage evaluated (owned + ghosts; empty without a subgrid model).
   const ScalarField& subgrid_viscosity() const { return nu_sgs_; }
   // Collective: max over owned nodes of that nu_sgs (0 without a subgrid model), m^2/s.

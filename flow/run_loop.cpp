@@ -52,7 +52,7 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
   last_good_ = state_;
 }
 
-void RunLoop::resume(FlowState state, std::int64_t step) {
+void RunLoop::resume(FlowState state, std::int64_t step, const ScalarField& pressure_increment) {
   const auto n = static_cast<std::size_t>(local_.num_local());
   if (state.velocity.size() != n || state.pressure.size() != n)
     throw RunError(
@@ -62,6 +62,7 @@ void RunLoop::resume(FlowState state, std::int64_t step) {
   state_ = std::move(state);
   last_good_ = state_;
   step_ = step;
+  if (!pressure_increment.empty()) solver_.set_pressure_increment(pressure_increment);
   resumed_ = true;
 }
 

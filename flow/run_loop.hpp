@@ -110,9 +110,11 @@ class RunLoop {
   void set_hooks(RunHooks hooks) { hooks_ = std::move(hooks); }
   // Continue from a checkpointed state (velocity and pressure of every local node, time) after
   // `step` steps instead of the initial condition; log.csv is appended to when it exists. Not
-  // restored: the Poisson warm start (the previous pressure increment, private to
-  // ProjectionRK4) and the previous step's nu_sgs (LES) used by the first time-step choice.
-  void resume(FlowState state, std::int64_t step);
+  // restored: the previous step's nu_sgs (LES) used by the first time-step choice.
+  // `pressure_increment` (all local nodes; empty = zero) restores the Poisson warm start.
+  void resume(FlowState state, std::int64_t step, const ScalarField& pressure_increment = {});
+  // The last pressure increment (for checkpoints).
+  const ScalarField& pressure_increment() const { return solver_.pressure_increment(); }
 
   // Runs from the initial condition (or the resumed state) to time.end (or max_steps), or until
   // hooks.stop_requested(). Throws RunError.
