@@ -117,13 +117,7 @@ flow::Mesh generate_cylinder_channel_mesh(const CylinderChannelSpec& s) {
     gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {volume}), "fluid");
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
     gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
-    gmsh::option::setNumber("Mesh.RandomSeed", 1);
-    gmsh::option::setNumber("Mesh.MaxNumThreads1D", 1);
-    gmsh::option::setNumber("Mesh.MaxNumThreads2D", 1);
-    gmsh::option::setNumber("Mesh.MaxNumThreads3D", 1);
-    gmsh::option::setNumber("Mesh.ElementOrder", 1);
-    gmsh::model::mesh::generate(3);
+    generate_deterministic_mesh(3);
   });
   return split_prisms_to_tetrahedra(mesh_from_gmsh_model(source));
 }

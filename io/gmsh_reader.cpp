@@ -251,4 +251,14 @@ flow::Mesh read_gmsh(const std::filesystem::path& path) {
   return mesh_from_gmsh_model(source);
 }
 
+void generate_deterministic_mesh(int dimension) {
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  gmsh::option::setNumber("Mesh.RandomSeed", 1);
+  gmsh::option::setNumber("Mesh.MaxNumThreads1D", 1);
+  gmsh::option::setNumber("Mesh.MaxNumThreads2D", 1);
+  gmsh::option::setNumber("Mesh.MaxNumThreads3D", 1);
+  gmsh::option::setNumber("Mesh.ElementOrder", 1);
+  gmsh::model::mesh::generate(dimension);
+}
+
 }  // namespace valsalva::io

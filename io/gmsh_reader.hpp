@@ -49,6 +49,10 @@ decltype(auto) gmsh_call(const std::string& context, F&& f) {
   }
 }
 
+// Meshes the current model up to `dimension` with linear elements, single-threaded, a fixed
+// random seed and no curvature-driven sizes, so that the same model gives the same mesh.
+void generate_deterministic_mesh(int dimension);
+
 // Converts the mesh of the current Gmsh model (inside a GmshSession) into a flow::Mesh;
 // `source` names the file or generator in error messages and in Mesh::source.
 flow::Mesh mesh_from_gmsh_model(const std::string& source);

@@ -46,13 +46,7 @@ flow::Mesh generate_pipe_mesh(double radius, double length, double target_size) 
     gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {volume}), "fluid");
     gmsh::option::setNumber("Mesh.MeshSizeMax", target_size);
     gmsh::option::setNumber("Mesh.MeshSizeMin", 0.0);
-    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
-    gmsh::option::setNumber("Mesh.RandomSeed", 1);
-    gmsh::option::setNumber("Mesh.MaxNumThreads1D", 1);
-    gmsh::option::setNumber("Mesh.MaxNumThreads2D", 1);
-    gmsh::option::setNumber("Mesh.MaxNumThreads3D", 1);
-    gmsh::option::setNumber("Mesh.ElementOrder", 1);
-    gmsh::model::mesh::generate(3);
+    generate_deterministic_mesh(3);
   });
   return mesh_from_gmsh_model(source);
 }
