@@ -47,7 +47,6 @@ TEST_CASE("the coupling's time-step bound is safe and close to the measured limi
     double G;
     int cells;
   };
-  double per_stage_ratio[2] = {0, 0};
   for (const Row& row :
        {Row{ibm::CouplingMode::per_stage, 1.0, 12}, Row{ibm::CouplingMode::per_stage, 4.0, 12},
         Row{ibm::CouplingMode::per_stage, 4.0, 16}, Row{ibm::CouplingMode::per_step, 4.0, 12}}) {
