@@ -205,11 +205,10 @@ PressurePoisson::PressurePoisson(const LocalMesh& mesh, const std::vector<double
   HYPRE_PCGSetLogging(h.pcg, 1);
   HYPRE_PCGSetPrintLevel(h.pcg, options.print_level);
   h.precond.amg = h.amg;
-  HYPRE_PCGSetPrecond(h.pcg,
-                      reinterpret_cast<HYPRE_PtrToSolverFcn>(singular_ ? precondition
-                                                                       : precondition_plain),
-                      reinterpret_cast<HYPRE_PtrToSolverFcn>(precondition_setup),
-                      reinterpret_cast<HYPRE_Solver>(&h.precond));
+  HYPRE_PCGSetPrecond(
+      h.pcg, reinterpret_cast<HYPRE_PtrToSolverFcn>(singular_ ? precondition : precondition_plain),
+      reinterpret_cast<HYPRE_PtrToSolverFcn>(precondition_setup),
+      reinterpret_cast<HYPRE_Solver>(&h.precond));
   // Set up once (AMG hierarchy included); solve() reuses it.
   VALSALVA_HYPRE(HYPRE_ParCSRPCGSetup(h.pcg, h.parA, h.parb, h.parx));
 }
