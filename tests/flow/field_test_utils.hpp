@@ -33,6 +33,12 @@ inline io::BoxSpec periodic_box(const std::string& type, int n, double perturbat
   return spec;
 }
 
+// The box `spec` distributed over `comm` with 2 ghost layers (the mesh is not kept).
+inline flow::LocalMesh local_box(const io::BoxSpec& spec, MPI_Comm comm = MPI_COMM_WORLD) {
+  const auto mesh = io::generate_box(spec);
+  return flow::distribute(mesh, flow::compute_dual_metrics(mesh), comm, {2, "metis"});
+}
+
 // Owned values of `component`-wide nodal data, summed over ranks into dual-node order.
 inline std::vector<double> gather_by_dual_node(const flow::LocalMesh& mesh,
                                                const std::vector<double>& values, int components,

@@ -79,10 +79,7 @@ Errors operator_errors(const flow::LocalMesh& mesh) {
   return e;
 }
 
-flow::LocalMesh local_box(const io::BoxSpec& spec, MPI_Comm comm) {
-  const auto mesh = io::generate_box(spec);
-  return flow::distribute(mesh, flow::compute_dual_metrics(mesh), comm, {2, "metis"});
-}
+using test::local_box;
 
 }  // namespace
 

@@ -28,10 +28,7 @@ namespace {
 
 constexpr double k = 2 * std::numbers::pi;
 
-flow::LocalMesh local_box(const io::BoxSpec& spec, MPI_Comm comm = MPI_COMM_WORLD) {
-  const auto mesh = io::generate_box(spec);
-  return flow::distribute(mesh, flow::compute_dual_metrics(mesh), comm, {2, "metis"});
-}
+using test::local_box;
 
 // Each component independent of its own coordinate: div u = 0, and the discrete divergence
 // vanishes too on hexahedra (d/dx of a function of y, z is exactly zero there).
