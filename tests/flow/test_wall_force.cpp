@@ -12,46 +12,58 @@ using namespace valsalva;
 
 namespace {
 
-struct Setup {
+// Plane Poiseuille flow u = f/(2 mu) y (H - y) e_x with p = 0 and body force f e_x on a
+// [0, 2] x [0, 1] x [0, 0.5] box, walls ymin/ymax, periodic in x and z; everything the wall-force
+// functions need, kept alive together.
+struct PoiseuilleChannel {
+  static constexpr double mu = 3.6e-3, rho = 1100, f = 2.0, height = 1.0;
   flow::Mesh mesh;
   flow::DualMetrics metrics;
   flow::LocalMesh local;
+  flow::VectorField u, body;
+  flow::ScalarField p;
+  flow::TensorField g;
+  std::vector<double> weights;
+  flow::WallForceInput in;
+
+  PoiseuilleChannel(const std::string& type, double perturbation, int n) {
+    io::BoxSpec spec;
+    spec.cell_type = type;
+    spec.cells = {n, n, n};
+    spec.length = Eigen::Vector3d(2.0, height, 0.5);
+    spec.perturbation = perturbation;
+    spec.periodic = {true, false, true};
+    mesh = io::generate_box(spec);
+    metrics = flow::compute_dual_metrics(mesh);
+    local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
+    u.resize(local.num_local());
+    body.assign(local.num_local(), Eigen::Vector3d(f, 0, 0));
+    for (int i = 0; i < local.num_local(); ++i) {
+      const double y = local.position[i].y();
+      u[i] = Eigen::Vector3d(f / (2 * mu) * y * (height - y), 0, 0);
+    }
+    p.assign(local.num_local(), 0.0);
+    flow::gradient(local, u, g);
+    const bool tets = type == "tetra";
+    weights = tets ? flow::poisson_weights(mesh, metrics, local) : flow::laplacian_weights(local);
+    in.density = rho;
+    in.dynamic_viscosity = mu;
+    in.velocity = &u;
+    in.pressure = &p;
+    in.velocity_gradient = &g;
+    in.laplacian_weights = &weights;
+    in.stiffness_weights = tets;
+    in.body_force = &body;
+  }
+  // Exact shear force on one wall: mu du/dy|wall * area = f H / 2 * Lx * Lz.
+  static double exact_force() { return f * height / 2 * 2.0 * 0.5; }
 };
 
 Eigen::Vector3d poiseuille_wall_force(const std::string& type, double perturbation, int n,
                                       flow::WallForceMethod method, double& exact) {
-  io::BoxSpec spec;
-  spec.cell_type = type;
-  spec.cells = {n, n, n};
-  spec.length = Eigen::Vector3d(2.0, 1.0, 0.5);
-  spec.perturbation = perturbation;
-  spec.periodic = {true, false, true};
-  const auto mesh = io::generate_box(spec);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
-  const double mu = 3.6e-3, rho = 1100, f = 2.0, height = 1.0;
-  flow::VectorField u(local.num_local()), body(local.num_local(), Eigen::Vector3d(f, 0, 0));
-  for (int i = 0; i < local.num_local(); ++i) {
-    const double y = local.position[i].y();
-    u[i] = Eigen::Vector3d(f / (2 * mu) * y * (height - y), 0, 0);
-  }
-  flow::ScalarField p(local.num_local(), 0.0);
-  flow::TensorField g;
-  flow::gradient(local, u, g);
-  const bool tets = type == "tetra";
-  const auto weights =
-      tets ? flow::poisson_weights(mesh, metrics, local) : flow::laplacian_weights(local);
-  flow::WallForceInput in;
-  in.density = rho;
-  in.dynamic_viscosity = mu;
-  in.velocity = &u;
-  in.pressure = &p;
-  in.velocity_gradient = &g;
-  in.laplacian_weights = &weights;
-  in.stiffness_weights = tets;
-  in.body_force = &body;
-  exact = f * height / 2 * spec.length.x() * spec.length.z();
-  return flow::wall_force(local, "ymin", in, method);
+  const PoiseuilleChannel c(type, perturbation, n);
+  exact = PoiseuilleChannel::exact_force();
+  return flow::wall_force(c.local, "ymin", c.in, method);
 }
 
 }  // namespace
@@ -106,31 +118,9 @@ TEST_CASE("wall force: unknown patch is refused with the mesh's patch names") {
 }
 
 TEST_CASE("wall shear stress: plane Poiseuille wall nodes carry f H / 2 along x") {
-  io::BoxSpec spec;
-  spec.cells = {6, 6, 6};
-  spec.periodic = {true, false, true};
-  const auto mesh = io::generate_box(spec);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
-  const double mu = 1e-3, f = 3.0;
-  flow::VectorField u(local.num_local()), body(local.num_local(), Eigen::Vector3d(f, 0, 0));
-  for (int i = 0; i < local.num_local(); ++i) {
-    const double y = local.position[i].y();
-    u[i] = Eigen::Vector3d(f / (2 * mu) * y * (1 - y), 0, 0);
-  }
-  flow::ScalarField p(local.num_local(), 0.0);
-  flow::TensorField g;
-  flow::gradient(local, u, g);
-  const auto weights = flow::laplacian_weights(local);
-  flow::WallForceInput in;
-  in.density = 1000;
-  in.dynamic_viscosity = mu;
-  in.velocity = &u;
-  in.pressure = &p;
-  in.velocity_gradient = &g;
-  in.laplacian_weights = &weights;
-  in.body_force = &body;
-  const auto tau = flow::wall_shear_stress(flow::wall_loads(local, "ymin", in));
+  const PoiseuilleChannel c("hexa", 0.0, 6);
+  const double f = PoiseuilleChannel::f;
+  const auto tau = flow::wall_shear_stress(flow::wall_loads(c.local, "ymin", c.in));
   double worst = 0;
   for (const auto& t : tau) worst = std::max(worst, (t - Eigen::Vector3d(f / 2, 0, 0)).norm());
   MESSAGE(tau.size(), " wall nodes, max |tau - f H/2 e_x| = ", worst);
