@@ -6,9 +6,10 @@
 
 namespace valsalva::app {
 
-// `restart`: empty, a checkpoint file, or "latest" (newest in <run dir>/checkpoints).
+// `restart`: empty, a checkpoint file, or "latest" (newest in <run dir>/checkpoints);
+// `quiet`: no resolved scene and no progress lines (app/command_run.cpp).
 int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std::string& out,
-              const std::string& restart = {});
+              const std::string& restart = {}, bool quiet = false);
 int check_scene(const std::filesystem::path& scene_file);
 int mesh_info(const std::filesystem::path& mesh_file, double scale);
 int validate(const std::string& case_name, bool list, bool quick, const std::string& out);

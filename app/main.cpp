@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
       "valsalva: blood flow through heart valves (incompressible LES + immersed leaflets)"};
   cli.require_subcommand(1);
   std::string scene, mesh_file, case_name, out, restart;
-  bool overwrite = false, list = false, quick = false;
+  bool overwrite = false, list = false, quick = false, quiet = false;
   double scale = 1.0;
 
   auto* run = cli.add_subcommand("run", "Run a scene; results go to its run directory");
@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   run->add_option("--out", out, "Run directory (default: run.output_dir, else runs/<scene>)");
   run->add_option("--restart", restart,
                   "Continue from a checkpoint FILE, or 'latest' in <run dir>/checkpoints");
+  run->add_flag("--quiet", quiet, "Print only the start and the end of the run (run.progress)");
 
   auto* check = cli.add_subcommand("check", "Validate a scene and its mesh without running");
   check->add_option("scene", scene, "Scene file (TOML)")->required();
@@ -55,7 +56,7 @@ int main(int argc, char** argv) {
     return code;
   }
   try {
-    if (*run) code = valsalva::app::run_scene(scene, overwrite, out, restart);
+    if (*run) code = valsalva::app::run_scene(scene, overwrite, out, restart, quiet);
     if (*check) code = valsalva::app::check_scene(scene);
     if (*info) code = valsalva::app::mesh_info(mesh_file, scale);
     if (*val) code = valsalva::app::validate(case_name, list, quick, out);

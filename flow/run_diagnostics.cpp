@@ -51,6 +51,15 @@ void vorticity(const TensorField& grad, VectorField& omega) {
   }
 }
 
+void q_criterion(const TensorField& grad, ScalarField& q) {
+  q.resize(grad.size());
+  for (std::size_t j = 0; j < grad.size(); ++j) {
+    const Eigen::Matrix3d s = 0.5 * (grad[j] + grad[j].transpose());
+    const Eigen::Matrix3d w = 0.5 * (grad[j] - grad[j].transpose());
+    q[j] = 0.5 * (w.squaredNorm() - s.squaredNorm());
+  }
+}
+
 std::string find_bad_state(const LocalMesh& mesh, const VectorField& u, const ScalarField& p,
                            double velocity_limit) {
   // The first bad owned node of this rank, then the one with the lowest dual-node number.

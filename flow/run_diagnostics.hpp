@@ -40,6 +40,10 @@ double kinetic_energy(const LocalMesh& mesh, double rho, const VectorField& u);
 // Vorticity = curl u from the velocity gradient (i, j) = d u_i / d x_j.
 void vorticity(const TensorField& grad, VectorField& omega);
 
+// Q-criterion Q = 1/2 (|W|^2 - |S|^2) with S, W the symmetric and antisymmetric parts of the
+// velocity gradient (Hunt, Wray & Moin, CTR Summer Program 1988): Q > 0 marks vortex cores, 1/s^2.
+void q_criterion(const TensorField& grad, ScalarField& q);
+
 // Collective. Empty when every owned velocity and pressure is finite and |u| <= velocity_limit;
 // otherwise a diagnosis of the bad node with the lowest dual-node number (the same for every
 // partition): the field, the value, the node number and position.

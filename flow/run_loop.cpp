@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <utility>
@@ -139,7 +140,39 @@ void RunLoop::write_fields(const std::string& basename, const FlowState& state) 
     vorticity(grad_, omega_);
     set.vectors.emplace_back("vorticity", &omega_);
   }
+  if (out.q_criterion) {
+    if (!out.vorticity) gradient(local_, state.velocity, grad_);
+    q_criterion(grad_, q_);
+    set.scalars.emplace_back("q_criterion", &q_);
+  }
   sink_(basename, state.time, set);
+}
+
+void RunLoop::print_progress(const StepReport& report, double dt, double energy, double per_step,
+                             double eta, const std::string& flux_text) const {
+  const auto& out = options_.output;
+  const double cfl = dt * rates_.convective, fourier = dt * rates_.viscous;
+  if (out.progress == Progress::lines) {
+    fmt::print(
+        "step {:>7} t {:.6e} s dt {:.3e} s CFL {:.3f} Fo {:.3f} max|div| {:.2e} 1/s "
+        "KE {:.6e} J Poisson {} it {:.1e}{} wall/step {:.3e} s ETA {:.1f} s\n",
+        step_, state_.time, dt, cfl, fourier, report.max_divergence, energy,
+        report.poisson.iterations, report.poisson.relative_residual, flux_text, per_step, eta);
+  } else if (out.progress == Progress::status) {
+    std::string cycle;
+    if (out.cycle_period > 0) {
+      const double c = state_.time / out.cycle_period;
+      cycle = fmt::format("cycle {} phase {:.3f} ", static_cast<std::int64_t>(std::floor(c)),
+                          c - std::floor(c));
+    }
+    // Node-steps per second over all ranks: the throughput a user compares between runs.
+    const double rate = per_step > 0 ? double(local_.global_nodes) / per_step : 0.0;
+    fmt::print(
+        "\r\x1b[K{}t {:.6g} s step {} CFL {:.2f} Poisson {} it | {:.3g} node-steps/s | "
+        "ETA {:.0f} s",
+        cycle, state_.time, step_, cfl, report.poisson.iterations, rate, eta);
+    std::fflush(stdout);
+  }
 }
 
 void RunLoop::fail(const std::string& why) {
@@ -244,12 +277,7 @@ RunSummary RunLoop::run() {
         }
         flux_text = " flux" + flux_text + fmt::format(" imbalance {:.1e} m3/s", imbalance);
       }
-      if (root && out.print)
-        fmt::print(
-            "step {:>7} t {:.6e} s dt {:.3e} s CFL {:.3f} Fo {:.3f} max|div| {:.2e} 1/s "
-            "KE {:.6e} J Poisson {} it {:.1e}{} wall/step {:.3e} s ETA {:.1f} s\n",
-            step_, state_.time, dt, cfl, fourier, report.max_divergence, energy,
-            report.poisson.iterations, report.poisson.relative_residual, flux_text, per_step, eta);
+      if (root && out.print) print_progress(report, dt, energy, per_step, eta, flux_text);
       if (csv.is_open())
         csv << fmt::format(
                    "{},{:.17g},{:.17g},{:.9g},{:.9g},{:.9g},{:.17g},{},{:.6g},{:.6g},{:.6g}{},{:."
@@ -270,6 +298,7 @@ RunSummary RunLoop::run() {
           while (next_output <= state_.time + eps) next_output += out.interval;
       }
     }
+    if (hooks_.after_step) hooks_.after_step(state_, step_);
     const bool stopping = hooks_.stop_requested && hooks_.stop_requested();
     if (hooks_.checkpoint) hooks_.checkpoint(state_, step_, dt, stopping);
     if (stopping) {
@@ -278,6 +307,7 @@ RunSummary RunLoop::run() {
     }
   }
   if (fields && last_written != step_ && !summary.stopped) write_fields("fields", state_);
+  if (root && out.print && out.progress == Progress::status) fmt::print("\n");
 
   summary.steps = step_;
   summary.time = state_.time;

@@ -34,13 +34,21 @@ struct TimeOptions {
   std::int64_t max_steps = 0;  // 0 = no cap
 };
 
+// How progress reaches the terminal (rank 0's stdout): `lines`, one line per log_every steps
+// (for log files and pipes); `status`, one line rewritten in place (for a terminal) with the
+// cycle and phase when cycle_period > 0, the ETA and the throughput; `quiet`, nothing but the
+// start and end lines. log.csv gets its rows in every mode.
+enum class Progress { lines, status, quiet };
+
 struct OutputOptions {
   std::filesystem::path dir;  // run directory: log.csv and the Taylor-Green error go there
   double interval = 0;        // 0 = no field output
   bool interval_in_steps = false;
-  bool velocity = true, pressure = true, vorticity = true;
+  bool velocity = true, pressure = true, vorticity = true, q_criterion = false;
   int log_every = 10;
-  bool print = true;  // progress lines on stdout (rank 0)
+  bool print = true;  // anything on stdout (rank 0); false = tests
+  Progress progress = Progress::lines;
+  double cycle_period = 0;  // s; > 0 shows cycle and phase in the status line
 };
 
 struct RunOptions {
@@ -64,6 +72,8 @@ using FieldSink = std::function<void(const std::string& basename, double time, c
 // Checkpoint/restart hooks (app/ plugs in io::CheckpointWriter and io::StopSignal, so flow/ stays
 // independent of io/). Both are called on every rank after every step and must be collective.
 struct RunHooks {
+  // After each step, before the checkpoint hook: measurements (app/ plugs in io::RunAnalysis).
+  std::function<void(const FlowState&, std::int64_t step)> after_step;
   // After each step: the state, the step count, the step's dt and whether the run stops here on
   // a stop request (the hook then must write; otherwise it decides, e.g. every N steps).
   std::function<void(const FlowState&, std::int64_t step, double dt, bool stopping)> checkpoint;
@@ -129,6 +139,8 @@ class RunLoop {
  private:
   double choose_dt(double remaining);
   void write_fields(const std::string& basename, const FlowState& state);
+  void print_progress(const StepReport& report, double dt, double energy, double per_step,
+                      double eta, const std::string& flux_text) const;
   [[noreturn]] void fail(const std::string& why);
   ProjectionOptions& attach_boundary();
 
@@ -143,6 +155,7 @@ class RunLoop {
   RunHooks hooks_;
   TensorField grad_;
   VectorField omega_;
+  ScalarField q_;
   std::vector<double> scratch_, fluxes_;
   StabilityRates rates_;
 };

@@ -12,5 +12,6 @@ void declare_partition_keys(Schema& schema);  // io/scene_keys_partition.cpp
 void declare_flow_keys(Schema& schema);       // io/scene_keys_flow.cpp
 void declare_boundary_keys(Schema& schema);   // io/scene_keys_boundary.cpp
 void declare_les_keys(Schema& schema);        // io/scene_keys_les.cpp
+void declare_analysis_keys(Schema& schema);   // io/scene_keys_analysis.cpp
 
 }  // namespace valsalva::io

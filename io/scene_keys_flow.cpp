@@ -146,9 +146,11 @@ void declare_flow_keys(Schema& s) {
       .doc("Whether output.interval is simulated time or a whole number of time steps");
   s.string_list("output.fields")
       .def(std::vector<std::string>{"velocity", "pressure", "vorticity"})
-      .values({"velocity", "pressure", "vorticity"})
+      .values({"velocity", "pressure", "vorticity", "q_criterion"})
       .unit_of("-")
-      .doc("Fields to write; vorticity is the curl of the nodal velocity gradient");
+      .doc(
+          "Fields to write; vorticity is the curl of the nodal velocity gradient, q_criterion "
+          "1/2 (|W|^2 - |S|^2) of it (vortex cores where > 0); with [les] a model, nu_sgs/nu too");
   // Checkpoints for `valsalva run --restart`: HDF5 files in <run dir>/checkpoints (see
   // io/checkpoint.hpp), also written on SIGINT/SIGTERM.
   s.integer("output.checkpoint_every_steps")
@@ -219,6 +221,7 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   out.velocity = wants("velocity");
   out.pressure = wants("pressure");
   out.vorticity = wants("vorticity");
+  out.q_criterion = wants("q_criterion");
   return o;
 }
 

@@ -22,7 +22,14 @@ void declare_run_keys(Schema& s) {
       .def(10)
       .at_least(1)
       .unit_of("-")
-      .doc("Print a progress line every this many time steps");
+      .doc("Print a progress line (and write a log.csv row) every this many time steps");
+  s.choice("run.progress", {"auto", "status", "lines", "quiet"})
+      .def("auto")
+      .unit_of("-")
+      .doc(
+          "status: one line updated in place (cycle, phase, time, ETA, node-steps/s); lines: one "
+          "line per log_every steps; quiet: start and end only (`valsalva run --quiet`); auto: "
+          "status on a terminal, lines otherwise and under mpiexec");
 }
 
 }  // namespace valsalva::io

@@ -22,6 +22,7 @@ const Schema& scene_schema() {
     declare_flow_keys(s);
     declare_boundary_keys(s);
     declare_les_keys(s);
+    declare_analysis_keys(s);
     s.check();
     return s;
   }();

@@ -1,15 +1,16 @@
 #!/usr/bin/python3
-# Compares the velocity and pressure datasets of two field files (valsalva FieldOutput HDF5):
-# tolerance 0 asks for bitwise equality, otherwise max |a - b| <= tol * max(1, max |a|).
-# Usage: compare_fields.py A.h5 B.h5 TOL
+# Compares datasets (default velocity and pressure) of two field files (valsalva FieldOutput
+# HDF5): tolerance 0 asks for bitwise equality, otherwise max |a - b| <= tol * max(1, max |a|).
+# Usage: compare_fields.py A.h5 B.h5 TOL [DATASET ...]
 import sys
 
 import h5py
 import numpy as np
 
 a_path, b_path, tol = sys.argv[1], sys.argv[2], float(sys.argv[3])
+names = sys.argv[4:] or ["velocity", "pressure"]
 with h5py.File(a_path, "r") as a, h5py.File(b_path, "r") as b:
-    for name in ("velocity", "pressure"):
+    for name in names:
         x, y = np.asarray(a[name]), np.asarray(b[name])
         if x.shape != y.shape:
             sys.exit(f"{name}: shapes {x.shape} and {y.shape} differ")

@@ -23,3 +23,12 @@ grep -q 'already restarted' again.out
 full_last=$(ls full/fields_0*.h5 | sort | tail -1)
 part_last=$(ls part/fields_restart_000000008_0*.h5 | sort | tail -1)
 /usr/bin/python3 "$here/compare_fields.py" "$full_last" "$part_last" "$tol"
+# The analysis continued across the restart: the probe and pressure-drop series (appended) and
+# the phase statistics (restored from the checkpoint) equal the uninterrupted run's.
+/usr/bin/python3 "$here/compare_csv.py" full/probes.csv part/probes.csv "$tol"
+/usr/bin/python3 "$here/compare_csv.py" full/pressure_drop.csv part/pressure_drop.csv "$tol"
+for bin in 000000 000003; do
+  /usr/bin/python3 "$here/compare_fields.py" full/statistics/phase_$bin.h5 part/statistics/phase_$bin.h5 "$tol" \
+    mean_velocity rms_velocity mean_pressure k
+done
+cmp full/statistics/phase_phases.csv part/statistics/phase_phases.csv

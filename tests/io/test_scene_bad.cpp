@@ -28,7 +28,7 @@ struct Bad {
 // clang-format off
 const Bad bad_scenes[] = {
   {"unknown_key.toml", "6:1: key 'mesh.box.cels': unknown key; did you mean 'mesh.box.cells'? (accepted: keys origin, length, cells, cell_type, perturbation, seed, periodic)"},
-  {"unknown_section.toml", "5:2: key 'partiton': unknown table; did you mean 'partition'? (accepted: sections run, mesh, partition, flow, time, poisson, initial, output, boundary, les)"},
+  {"unknown_section.toml", "5:2: key 'partiton': unknown table; did you mean 'partition'? (accepted: sections run, mesh, partition, flow, time, poisson, initial, output, boundary, les, probe, probes, sample, statistics, wall_shear, pressure_drop)"},
   {"wrong_type.toml", "6:9: key 'mesh.box.cells': expected an array of 3 integers, got the string \"8 8 8\" (accepted: 3 values, each >= 1)"},
   {"out_of_range.toml", "6:16: key 'partition.ghost_layers': value 7 is out of range (accepted: [1, 4])"},
   {"unknown_enum.toml", "3:10: key 'mesh.source': unknown value \"boks\"; did you mean \"box\"? (accepted: \"box\", \"gmsh\", \"pipe\", \"cylinder_channel\")"},
@@ -44,6 +44,7 @@ const Bad bad_scenes[] = {
   {"perturbation_too_large.toml", "7:16: key 'mesh.box.perturbation': value 0.5 is out of range (accepted: [0, 0.4])"},
   {"gmsh_without_file.toml", "2:2: key 'mesh.file': required key is missing; expected a string (accepted: any string)"},
   {"bool_as_string.toml", "6:13: key 'run.overwrite': expected true or false, got the string \"yes\" (accepted: true, false)"},
+  {"statistics_plane_without_normal.toml", "8:13: key 'statistics.mid.normal': required key is missing; expected an array of 3 numbers (accepted: 3 values)"},
   {"section_as_value.toml", "2:13: key 'partition': expected a table, got the integer 2 (accepted: keys ghost_layers, method)"},
 };
 // clang-format on
@@ -95,7 +96,7 @@ TEST_CASE("all problems of a scene are reported at once, in file order") {
           f + ":7:8: key 'mesh.box.seed': value -1 is out of range (accepted: >= 0)");
     CHECK(e.problems()[2] ==
           f + ":10:1: key 'run.log_evry': unknown key; did you mean 'run.log_every'? (accepted: "
-              "keys output_dir, overwrite, log_every)");
+              "keys output_dir, overwrite, log_every, progress)");
     CHECK(std::string(e.what()) ==
           e.problems()[0] + "\n" + e.problems()[1] + "\n" + e.problems()[2]);
   }

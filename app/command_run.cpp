@@ -1,0 +1,263 @@
+// `valsalva run`: a scene from its mesh to its results — run directory, restart, fields,
+// checkpoints, the analysis the scene asks for (io/run_analysis.hpp) and the progress display.
+#include <fmt/format.h>
+#include <mpi.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include "app/commands.hpp"
+#include "flow/dual_metrics.hpp"
+#include "flow/local_mesh.hpp"
+#include "flow/run_loop.hpp"
+#include "io/checkpoint.hpp"
+#include "io/field_output.hpp"
+#include "io/mesh_source.hpp"
+#include "io/run_analysis.hpp"
+#include "io/run_directory.hpp"
+#include "io/scene.hpp"
+#include "io/scene_keys_analysis.hpp"
+#include "io/scene_keys_boundary.hpp"
+#include "io/scene_keys_flow.hpp"
+#include "io/scene_keys_les.hpp"
+#include "io/stop_signal.hpp"
+
+namespace valsalva::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The checkpoint to restart from: a file, or the newest in <dir>/checkpoints for "latest".
+std::optional<fs::path> restart_checkpoint(const std::string& restart, const fs::path& dir) {
+  if (restart.empty()) return std::nullopt;
+  if (restart == "latest") {
+    auto latest = io::latest_checkpoint(dir / "checkpoints");
+    if (!latest)
+      throw std::runtime_error(
+          fmt::format("--restart latest: no checkpoint in {}", (dir / "checkpoints").string()));
+    return latest;
+  }
+  if (!fs::is_regular_file(restart))
+    throw std::runtime_error(fmt::format("--restart {}: no such file", restart));
+  return fs::path(restart);
+}
+
+// The period shown as cycle and phase: the first phase-averaged statistics, else the first
+// periodic inlet waveform; 0 when the run has none.
+double cycle_period(const io::AnalysisOptions& analysis,
+                    const std::vector<flow::BoundarySpec>& boundary) {
+  for (const auto& s : analysis.statistics)
+    if (s.phase.period > 0) return s.phase.period;
+  for (const auto& b : boundary)
+    if (b.type == flow::BoundaryType::inlet && b.flow_rate.kind != flow::Waveform::Kind::constant)
+      return b.flow_rate.period;
+  return 0;
+}
+
+flow::Progress progress_mode(const io::Scene& scene, bool quiet) {
+  const auto mode = scene.get<std::string>("run.progress");
+  if (quiet || mode == "quiet") return flow::Progress::quiet;
+  if (mode == "lines") return flow::Progress::lines;
+  if (mode == "status") return flow::Progress::status;
+  // Open MPI hands its processes a pseudo-terminal even when mpiexec's own output goes to a
+  // file, so under mpiexec (OMPI_COMM_WORLD_SIZE, PMI_SIZE) "auto" keeps plain lines.
+  const bool mpiexec = std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE");
+  return isatty(fileno(stdout)) && !mpiexec ? flow::Progress::status : flow::Progress::lines;
+}
+
+}  // namespace
+
+int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out,
+              const std::string& restart, bool quiet) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto scene = io::load_scene(scene_file);
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank == 0 && !quiet)
+    fmt::print("# resolved scene {}\n{}\n", scene_file.string(), scene.resolved());
+  const auto dir = out.empty() ? io::default_run_path(scene) : fs::path(out);
+  const bool wipe = overwrite || scene.get<bool>("run.overwrite");
+  // A restart continues in the run directory of the checkpoint when it is that directory (or
+  // "latest"): nothing there is deleted, the logs are appended to and the fields go to a new
+  // fields_restart_<step>.xmf. Otherwise (a checkpoint from elsewhere) the run directory is
+  // prepared as for a new run, with the same --overwrite promise.
+  const auto checkpoint = restart_checkpoint(restart, dir);
+  const bool in_place =
+      checkpoint && fs::exists(dir / io::RunDirectory::resolved_scene_name) &&
+      fs::equivalent(fs::absolute(*checkpoint).parent_path(), fs::absolute(dir / "checkpoints"));
+  if (in_place && wipe)
+    throw std::runtime_error(fmt::format(
+        "--restart {} with --overwrite (or run.overwrite) would delete the checkpoint with the "
+        "run directory {}: drop --overwrite to continue there, or give another --out",
+        checkpoint->string(), dir.string()));
+
+  // Everything the scene can get wrong is checked before the run directory is touched.
+  const auto mesh = io::build_mesh(scene);
+  const auto metrics = flow::compute_dual_metrics(mesh);
+  auto boundary = io::read_boundary_conditions(scene, mesh);
+  const auto analysis_options = io::read_analysis_options(scene, mesh);
+  const fs::path run_path =
+      in_place ? dir : io::RunDirectory::prepare(dir, wipe, scene, MPI_COMM_WORLD).path();
+
+  flow::PartitionOptions options;
+  options.ghost_layers = scene.get<int>("partition.ghost_layers");
+  options.method = scene.get<std::string>("partition.method");
+  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, options);
+
+  auto run_options = io::flow_run_options(scene, run_path);
+  const auto les = io::les_setup(scene, local);  // nu_sgs/nu joins the fields with a model
+  run_options.projection.subgrid_viscosity = les.subgrid_viscosity;
+  run_options.output.progress = progress_mode(scene, quiet);
+  run_options.output.cycle_period = cycle_period(analysis_options, boundary);
+  const double rho = run_options.projection.density;
+  std::optional<io::RunAnalysis> analysis;
+  if (!analysis_options.empty())
+    analysis.emplace(mesh, metrics, local, analysis_options, rho,
+                     rho * run_options.projection.viscosity, run_path, in_place);
+
+  std::int64_t start_step = 0;
+  flow::FlowState start;
+  flow::ScalarField start_dp;
+  std::uint64_t hash = 0;
+  const auto every_steps =
+      static_cast<std::int64_t>(scene.get<int>("output.checkpoint_every_steps"));
+  const double every_seconds = 60 * scene.get<double>("output.checkpoint_every_minutes");
+  const bool on_signal = scene.get<bool>("output.checkpoint_on_signal");
+  if (checkpoint || every_steps > 0 || every_seconds > 0 || on_signal) hash = io::mesh_hash(mesh);
+  if (checkpoint) {
+    io::CheckpointReader in(local, hash, *checkpoint);  // throws on another mesh
+    in.read_state(start);
+    start_step = in.info().step;
+    if (in.has("pressure_increment")) {  // the Poisson warm start (bitwise restarts)
+      std::vector<std::int64_t> rows(local.dual_node.begin(), local.dual_node.end());
+      start_dp = in.read_array("pressure_increment", rows);
+    }
+    if (analysis) analysis->restore(in);
+    if (rank == 0)
+      fmt::print("restart: {} (step {}, t = {:.9g} s)\n", checkpoint->string(), start_step,
+                 start.time);
+  }
+
+  // Fields go to <basename>.xmf/.h5 in the run directory: "fields" at the output interval,
+  // "last_good" when the run stops on a bad state. FieldOutput is collective; the run loop
+  // calls the sink on every rank. Continuing in place must not replace the earlier fields:
+  // they get a name of their own.
+  std::map<std::string, std::unique_ptr<io::FieldOutput>> outputs;
+  const std::string fields_name =
+      in_place ? fmt::format("fields_restart_{:09d}", start_step) : std::string("fields");
+  if (in_place && fs::exists(run_path / (fields_name + ".xmf")) && !wipe)
+    throw std::runtime_error(fmt::format(
+        "{} exists: this checkpoint was already restarted from in {}; give another --out",
+        (run_path / (fields_name + ".xmf")).string(), run_path.string()));
+  auto sink = [&](const std::string& stream, double time, const flow::FieldSet& set) {
+    const std::string basename = stream == "fields" ? fields_name : stream;
+    auto& o = outputs[basename];
+    if (!o) o = std::make_unique<io::FieldOutput>(mesh, metrics, local, run_path, basename);
+    std::vector<io::FieldOutput::Scalar> scalars;
+    std::vector<io::FieldOutput::Vector> vectors;
+    flow::FieldSet all = set;
+    les.add_fields(all);
+    for (const auto& [name, f] : all.scalars) scalars.push_back({name, f});
+    for (const auto& [name, f] : set.vectors) vectors.push_back({name, f});
+    o->write(time, scalars, vectors);
+  };
+  if (rank == 0) {
+    fmt::print(
+        "mesh: {} nodes ({} dual nodes), {} cells; partition: {} ranks, {} ghost layers, "
+        "method {}\n",
+        mesh.num_nodes(), metrics.num_nodes(), mesh.num_cells(), local.comm.size(),
+        options.ghost_layers, options.method);
+    fmt::print("flow: rho {:.6g} kg/m3, nu {:.6g} m2/s, scheme {}, initial state {}\n", rho,
+               run_options.projection.viscosity, scene.get<std::string>("flow.scheme"),
+               run_options.initial.type);
+  }
+  if (rank == 0 && les.subgrid_viscosity)
+    fmt::print("les: model {}, constant {:.4g}\n", les.model, les.constant);
+  run_options.boundary = std::move(boundary);
+  flow::RunLoop loop(mesh, metrics, local, run_options, sink);
+  if (checkpoint) loop.resume(std::move(start), start_step, start_dp);
+  if (analysis && !checkpoint) analysis->sample(loop.state(), 0);
+
+  // Checkpoints every N steps, every M wall-clock minutes (rank 0's clock decides, so that all
+  // ranks agree) and on SIGINT/SIGTERM; the newest output.checkpoint_keep are kept. They carry
+  // the Poisson warm start and the analysis accumulators.
+  std::optional<io::CheckpointWriter> writer;
+  std::optional<io::StopSignal> stop;
+  fs::path last_checkpoint;
+  if (hash != 0 && (every_steps > 0 || every_seconds > 0 || on_signal))
+    writer.emplace(local, hash, run_path / "checkpoints", "checkpoint",
+                   scene.get<int>("output.checkpoint_keep"));
+  if (on_signal) stop.emplace();
+  auto last_write = std::chrono::steady_clock::now();
+  flow::RunHooks hooks;
+  if (analysis)
+    hooks.after_step = [&](const flow::FlowState& state, std::int64_t step) {
+      analysis->sample(state, step);
+    };
+  if (writer)
+    hooks.checkpoint = [&](const flow::FlowState& state, std::int64_t step, double dt,
+                           bool stopping) {
+      bool due = stopping || (every_steps > 0 && step % every_steps == 0);
+      if (every_seconds > 0) {
+        int late = seconds_since(last_write) >= every_seconds ? 1 : 0;
+        MPI_Bcast(&late, 1, MPI_INT, 0, MPI_COMM_WORLD);
+        due = due || late != 0;
+      }
+      if (!due) return;
+      std::vector<io::CheckpointArray> extras;
+      if (analysis) extras = analysis->checkpoint_arrays();
+      auto& dp = extras.emplace_back(
+          io::CheckpointArray{"pressure_increment", local.global_nodes, 0, {}, {}});
+      const auto& increment = loop.pressure_increment();
+      for (int i = 0; i < local.num_owned; ++i) {
+        dp.rows.push_back(local.dual_node[i]);
+        dp.data.push_back(increment[i]);
+      }
+      last_checkpoint = writer->write(state, step, dt, extras);
+      last_write = std::chrono::steady_clock::now();
+    };
+  if (stop) hooks.stop_requested = [&] { return stop->requested(MPI_COMM_WORLD); };
+  loop.set_hooks(std::move(hooks));
+  flow::RunSummary summary;
+  try {
+    summary = loop.run();
+  } catch (const flow::RunError& e) {
+    if (e.key().empty()) throw;
+    throw std::runtime_error(scene.location(e.key()).str() + ": " + e.what());
+  }
+  if (analysis) analysis->finish(mesh, metrics);
+  if (summary.stopped) {
+    if (rank == 0)
+      fmt::print(
+          "stopped by signal {} at step {} (t = {:.9g} s); checkpoint {}\ncontinue with: "
+          "valsalva run {} --out {} --restart latest\n",
+          io::StopSignal::signal_number(), summary.steps, summary.time, last_checkpoint.string(),
+          scene_file.string(), run_path.string());
+    return 0;
+  }
+  if (rank == 0) {
+    fmt::print(
+        "finished: {} steps to t = {:.6g} s, max |div v| {:.3e} 1/s, max Poisson "
+        "iterations {}\n",
+        summary.steps, summary.time, summary.max_divergence, summary.max_poisson_iterations);
+    if (outputs.count(fields_name))
+      fmt::print("results: {} (open {} in ParaView)\n", run_path.string(),
+                 outputs.at(fields_name)->xmf_file().string());
+    else
+      fmt::print("results: {} (no fields: output.interval = 0)\n", run_path.string());
+    fmt::print("wall time: {:.2f} s\n", seconds_since(t0));
+  }
+  return 0;
+}
+
+}  // namespace valsalva::app

@@ -1,0 +1,118 @@
+#include "io/run_analysis.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+namespace valsalva::io {
+
+namespace {
+
+std::vector<int> covered_nodes(const flow::LocalMesh& local, const StatisticsOptions& s) {
+  switch (s.region) {
+    case StatisticsOptions::Region::plane:
+      return nodes_near_plane(local, s.a, s.b.normalized(), s.half_thickness);
+    case StatisticsOptions::Region::box:
+      return nodes_in_box(local, s.a, s.b);
+    case StatisticsOptions::Region::all:
+      break;
+  }
+  return all_owned_nodes(local);
+}
+
+bool every(std::int64_t step, int n) {
+  return step % n == 0;
+}
+
+}  // namespace
+
+RunAnalysis::RunAnalysis(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
+                         const flow::LocalMesh& local, AnalysisOptions options, double density,
+                         double dynamic_viscosity, std::filesystem::path run_dir, bool append)
+    : local_(&local), options_(std::move(options)), dir_(std::move(run_dir)) {
+  const bool root = local.comm.root();
+  if (!options_.probes.points.empty()) {
+    probes_ = std::make_unique<Probes>(mesh, metrics, local, options_.probes.points);
+    probe_csv_.emplace(dir_ / "probes.csv", *probes_, std::vector<std::string>{"u", "v", "w", "p"},
+                       append);
+  }
+  if (!options_.samples.empty() && root) std::filesystem::create_directories(dir_ / "samples");
+  for (const auto& s : options_.samples) samples_.emplace_back(mesh, metrics, local, s);
+  for (const auto& s : options_.statistics) {
+    auto nodes = covered_nodes(local, s);
+    const auto covered = local.comm.sum(static_cast<std::int64_t>(nodes.size()));
+    if (covered == 0)
+      throw std::runtime_error(
+          fmt::format("statistics.{}: the region covers no mesh node", s.phase.name));
+    statistics_.emplace_back(local, s.phase, std::move(nodes));
+  }
+  if (!options_.wall_shear.patches.empty())
+    wall_shear_.emplace(local, options_.wall_shear, density, dynamic_viscosity, dir_, append);
+  for (const auto& d : options_.pressure_drops)
+    drops_.push_back(
+        {d, RegionMean(local, d.upstream, d.radius, "pressure_drop." + d.name + ".upstream"),
+         RegionMean(local, d.downstream, d.radius, "pressure_drop." + d.name + ".downstream")});
+  if (!drops_.empty() && root) {
+    const auto path = dir_ / "pressure_drop.csv";
+    drop_csv_.open(path, append ? std::ios::app : std::ios::trunc);
+    if (!drop_csv_) throw std::runtime_error("pressure_drop: cannot write " + path.string());
+    if (!append) {
+      drop_csv_ << "time";
+      for (const auto& d : drops_)
+        drop_csv_ << fmt::format(",{0}_upstream,{0}_downstream,{0}_mmHg", d.options.name);
+      drop_csv_ << '\n';
+    }
+  }
+}
+
+void RunAnalysis::sample(const flow::FlowState& state, std::int64_t step) {
+  if (probes_ && every(step, options_.probes.every_steps))
+    probe_csv_->append(state.time, probes_->sample(state));
+  for (auto& s : samples_)
+    if (s.due(state.time)) s.write(state, step, dir_ / "samples");
+  // The initial state is no sample of the statistics (it is not a solution of the flow yet).
+  for (std::size_t i = 0; i < statistics_.size(); ++i)
+    if (step > 0 && every(step, options_.statistics[i].every_steps))
+      statistics_[i].add(state.time, state.velocity, state.pressure);
+  if (wall_shear_ && every(step, options_.wall_shear.every_steps)) wall_shear_->sample(state);
+  bool any = false;
+  std::vector<PressureDrop> values;
+  for (const auto& d : drops_) {
+    const bool due = every(step, d.options.every_steps);
+    any = any || due;
+    values.push_back(due ? PressureDrop{d.upstream(state.pressure), d.downstream(state.pressure)}
+                         : PressureDrop{});
+  }
+  if (any && drop_csv_.is_open()) {
+    drop_csv_ << fmt::format("{:.17g}", state.time);
+    for (std::size_t i = 0; i < drops_.size(); ++i) {
+      if (every(step, drops_[i].options.every_steps))
+        drop_csv_ << fmt::format(",{:.9e},{:.9e},{:.9e}", values[i].upstream, values[i].downstream,
+                                 values[i].mmhg());
+      else
+        drop_csv_ << ",,,";
+    }
+    drop_csv_ << '\n' << std::flush;
+  }
+}
+
+std::vector<CheckpointArray> RunAnalysis::checkpoint_arrays() const {
+  std::vector<CheckpointArray> out;
+  for (const auto& s : statistics_)
+    for (auto& a : s.checkpoint_arrays()) out.push_back(std::move(a));
+  if (wall_shear_)
+    for (auto& a : wall_shear_->checkpoint_arrays()) out.push_back(std::move(a));
+  return out;
+}
+
+void RunAnalysis::restore(const CheckpointReader& reader) {
+  for (auto& s : statistics_) s.restore(reader);
+  if (wall_shear_) wall_shear_->restore(reader);
+}
+
+void RunAnalysis::finish(const flow::Mesh& mesh, const flow::DualMetrics& metrics) const {
+  for (const auto& s : statistics_) s.write(mesh, metrics, dir_ / "statistics");
+  if (wall_shear_) wall_shear_->write(dir_);
+}
+
+}  // namespace valsalva::io

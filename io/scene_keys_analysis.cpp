@@ -1,0 +1,235 @@
+// Scene keys of what a run measures while it runs ([probe.<name>], [probes], [sample.<name>],
+// [statistics.<name>], [wall_shear], [pressure_drop.<name>]) and their reader. Each section is
+// optional: a scene that has none of them computes none of it (io/run_analysis.hpp).
+#include "io/scene_keys_analysis.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <regex>
+#include <set>
+
+#include "io/scene_keys.hpp"
+
+namespace valsalva::io {
+
+namespace {
+
+void declare_every_steps(Schema& s, const std::string& table, const std::string& what) {
+  s.integer(table + ".every_steps")
+      .def(1)
+      .at_least(1)
+      .unit_of("-")
+      .doc("Sample " + what + " every this many time steps");
+}
+
+}  // namespace
+
+void declare_analysis_keys(Schema& s) {
+  s.section("probe.<name>",
+            "A point where u, v, w and p are recorded (probes.csv in the run directory, one "
+            "column per component, named <name>_u ...); a point outside the mesh is an error.");
+  s.real3("probe.<name>.position").required().unit_of("m").doc("Position of the probe");
+
+  s.section("probes", "When the probe points are sampled.");
+  declare_every_steps(s, "probes", "the probes");
+
+  const std::string m = "sample.<name>";
+  s.section(m,
+            "Instantaneous u, v, w, p on a line or a plane of points, one small CSV file per "
+            "sample (samples/<name>_<step>.csv); points outside the mesh are left out.");
+  s.choice(m + ".type", {"line", "plane"}).required().unit_of("-").doc("Line or plane of points");
+  s.real3(m + ".origin").required().unit_of("m").doc("First point (line) or corner (plane)");
+  s.real3(m + ".end").required().unit_of("m").doc("Last point of the line");
+  s.when(m + ".end", m + ".type", {"line"});
+  s.real3(m + ".u").required().unit_of("m").doc("Plane: first edge vector from the origin");
+  s.when(m + ".u", m + ".type", {"plane"});
+  s.real3(m + ".v").required().unit_of("m").doc("Plane: second edge vector from the origin");
+  s.when(m + ".v", m + ".type", {"plane"});
+  s.int3(m + ".points")
+      .def(std::array{50, 1, 1})
+      .at_least(1)
+      .unit_of("-")
+      .doc("Points along the line (first entry) or along u and v (first two entries)");
+  s.real(m + ".interval")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("s")
+      .doc(
+          "Sample every this much simulated time (at the first step at or after it); 0 = every "
+          "step");
+  s.real(m + ".start_time").def(0.0).at_least(0).unit_of("s").doc("No samples before this time");
+
+  const std::string st = "statistics.<name>";
+  s.section(st,
+            "Phase-averaged (or plain time-averaged) mean and RMS of u, v, w, p, Reynolds "
+            "stresses and k = rho/2 (u'^2 + v'^2 + w'^2), accumulated on the fly, saved in "
+            "checkpoints and written at the end (statistics/<name>.xmf, one step per phase bin, "
+            "and <name>_phases.csv). Memory: 88 bytes per covered node and bin.");
+  s.real(st + ".period")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("s")
+      .doc("Cycle period; 0 = plain time average (bins must be 1)");
+  s.integer(st + ".bins").def(1).at_least(1).unit_of("-").doc("Phase bins per period");
+  s.real(st + ".start_time")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("s")
+      .doc("Samples before this time are ignored; it is phase 0 of cycle 0");
+  declare_every_steps(s, st, "the statistics");
+  s.choice(st + ".region", {"all", "plane", "box"})
+      .def("all")
+      .unit_of("-")
+      .doc("Nodes covered: the whole mesh, a slab around a plane, or an axis-aligned box");
+  s.real3(st + ".point").required().unit_of("m").doc("A point of the plane");
+  s.when(st + ".point", st + ".region", {"plane"});
+  s.real3(st + ".normal").required().unit_of("-").doc("Normal of the plane");
+  s.when(st + ".normal", st + ".region", {"plane"});
+  s.real(st + ".half_thickness")
+      .required()
+      .above(0)
+      .unit_of("m")
+      .doc("Nodes within this distance of the plane are covered (about half a cell)");
+  s.when(st + ".half_thickness", st + ".region", {"plane"});
+  s.real3(st + ".lo").required().unit_of("m").doc("Lower corner of the box");
+  s.when(st + ".lo", st + ".region", {"box"});
+  s.real3(st + ".hi").required().unit_of("m").doc("Upper corner of the box");
+  s.when(st + ".hi", st + ".region", {"box"});
+
+  s.section("wall_shear",
+            "Wall shear stress tau_w on wall patches (residual-force method, flow/wall_force.hpp), "
+            "its time integrals TAWSS and OSI (wall_shear.csv per wall node at the end, saved in "
+            "checkpoints) and the area-weighted mean |tau_w| per patch (wall_shear_history.csv).");
+  s.string_list("wall_shear.patches")
+      .def(std::vector<std::string>{})
+      .unit_of("-")
+      .doc("Wall patches (type = \"wall\") to evaluate; empty = no wall shear stress");
+  s.real("wall_shear.start_time")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("s")
+      .doc("TAWSS and OSI integrate from this time (e.g. after the first cycles)");
+  declare_every_steps(s, "wall_shear", "the wall shear stress");
+
+  const std::string pd = "pressure_drop.<name>";
+  s.section(pd,
+            "Pressure difference between two spherical regions (volume-weighted mean pressure of "
+            "the nodes inside each), e.g. the transvalvular pressure gradient, in Pa and mmHg "
+            "(pressure_drop.csv: <name>_upstream, <name>_downstream, <name>_mmHg).");
+  s.real3(pd + ".upstream").required().unit_of("m").doc("Centre of the upstream region");
+  s.real3(pd + ".downstream").required().unit_of("m").doc("Centre of the downstream region");
+  s.real(pd + ".radius").required().above(0).unit_of("m").doc("Radius of both regions");
+  declare_every_steps(s, pd, "the pressure difference");
+}
+
+namespace {
+
+Eigen::Vector3d vec(const Scene& scene, const std::string& key) {
+  const auto a = scene.get<std::array<double, 3>>(key);
+  return {a[0], a[1], a[2]};
+}
+
+// Names become file names and CSV columns: keep them plain.
+void check_name(const Scene& scene, const std::string& table, const std::string& name) {
+  static const std::regex plain("[A-Za-z0-9_]+");
+  if (!std::regex_match(name, plain))
+    throw scene.error(
+        table + "." + name,
+        fmt::format("name '{}' has characters other than letters, digits and _", name),
+        "[A-Za-z0-9_]+");
+}
+
+}  // namespace
+
+AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh) {
+  AnalysisOptions o;
+  for (const auto& name : scene.names("probe")) {
+    check_name(scene, "probe", name);
+    o.probes.points.push_back({name, vec(scene, "probe." + name + ".position")});
+  }
+  o.probes.every_steps = scene.get<int>("probes.every_steps");
+
+  for (const auto& name : scene.names("sample")) {
+    check_name(scene, "sample", name);
+    const std::string k = "sample." + name;
+    SampleOptions s;
+    s.name = name;
+    s.plane = scene.get<std::string>(k + ".type") == "plane";
+    s.origin = vec(scene, k + ".origin");
+    const auto n = scene.get<std::array<int, 3>>(k + ".points");
+    s.points = {n[0], s.plane ? n[1] : 1};
+    if (s.plane) {
+      s.u = vec(scene, k + ".u");
+      s.v = vec(scene, k + ".v");
+      if (!(s.u.cross(s.v).norm() > 0))
+        throw scene.error(k + ".v", "the plane's edge vectors u and v are parallel or zero");
+    } else {
+      s.u = vec(scene, k + ".end") - s.origin;
+      if (!(s.u.norm() > 0)) throw scene.error(k + ".end", "the line has zero length");
+    }
+    s.interval = scene.get<double>(k + ".interval");
+    s.start_time = scene.get<double>(k + ".start_time");
+    o.samples.push_back(s);
+  }
+
+  const double rho = scene.get<double>("flow.density");
+  for (const auto& name : scene.names("statistics")) {
+    check_name(scene, "statistics", name);
+    const std::string k = "statistics." + name;
+    StatisticsOptions s;
+    s.phase.period = scene.get<double>(k + ".period");
+    s.phase.bins = scene.get<int>(k + ".bins");
+    if (s.phase.period == 0 && s.phase.bins != 1)
+      throw scene.error(k + ".bins", "a plain time average (period = 0) has one bin", "1");
+    s.phase.start_time = scene.get<double>(k + ".start_time");
+    s.phase.density = rho;
+    s.phase.name = name;
+    s.every_steps = scene.get<int>(k + ".every_steps");
+    const auto region = scene.get<std::string>(k + ".region");
+    s.region = region == "all"     ? StatisticsOptions::Region::all
+               : region == "plane" ? StatisticsOptions::Region::plane
+                                   : StatisticsOptions::Region::box;
+    if (s.region == StatisticsOptions::Region::plane) {
+      s.a = vec(scene, k + ".point");
+      s.b = vec(scene, k + ".normal");
+      if (!(s.b.norm() > 0)) throw scene.error(k + ".normal", "the normal is zero");
+      s.half_thickness = scene.get<double>(k + ".half_thickness");
+    } else if (s.region == StatisticsOptions::Region::box) {
+      s.a = vec(scene, k + ".lo");
+      s.b = vec(scene, k + ".hi");
+      if (!(s.a.array() < s.b.array()).all())
+        throw scene.error(k + ".hi",
+                          "the box's upper corner must exceed its lower corner in x, "
+                          "y and z");
+    }
+    o.statistics.push_back(s);
+  }
+
+  const auto patches = scene.get<std::vector<std::string>>("wall_shear.patches");
+  if (!patches.empty()) {
+    for (const auto& p : patches) {
+      const bool is_wall = scene.has("boundary." + p + ".type") &&
+                           scene.get<std::string>("boundary." + p + ".type") == "wall";
+      if (mesh.patch_index(p) < 0 || !is_wall)
+        throw scene.error("wall_shear.patches",
+                          fmt::format("'{}' is not a wall patch of the scene", p),
+                          "patches with a [boundary.<patch>] table of type = \"wall\"");
+    }
+    o.wall_shear.patches = patches;
+    o.wall_shear.start_time = scene.get<double>("wall_shear.start_time");
+    o.wall_shear.every_steps = scene.get<int>("wall_shear.every_steps");
+  }
+
+  for (const auto& name : scene.names("pressure_drop")) {
+    check_name(scene, "pressure_drop", name);
+    const std::string k = "pressure_drop." + name;
+    o.pressure_drops.push_back({name, vec(scene, k + ".upstream"), vec(scene, k + ".downstream"),
+                                scene.get<double>(k + ".radius"),
+                                scene.get<int>(k + ".every_steps")});
+  }
+  return o;
+}
+
+}  // namespace valsalva::io

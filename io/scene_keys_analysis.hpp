@@ -1,0 +1,16 @@
+// The analysis sections of a scene ([probe.<name>], [probes], [sample.<name>],
+// [statistics.<name>], [wall_shear], [pressure_drop.<name>]): the reader that goes with
+// declare_analysis_keys (io/scene_keys_analysis.cpp).
+#pragma once
+
+#include "flow/mesh.hpp"
+#include "io/analysis_options.hpp"
+#include "io/scene.hpp"
+
+namespace valsalva::io {
+
+// Throws SceneError naming the key for names that are not [A-Za-z0-9_]+, wall_shear patches
+// that are not walls of the scene, degenerate lines, planes and boxes.
+AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh);
+
+}  // namespace valsalva::io
