@@ -16,6 +16,8 @@ Case stability_case();
 Case dfg_cylinder_case();
 Case cbc_decay_case();
 Case cavity_case();
+Case womersley_statistics_case();
+Case poiseuille_wss_case();
 
 const std::vector<Case>& all_cases() {
   // clang-format off
@@ -31,6 +33,8 @@ const std::vector<Case>& all_cases() {
       dfg_cylinder_case(),
       cbc_decay_case(),
       cavity_case(),
+      womersley_statistics_case(),
+      poiseuille_wss_case(),
   };
   // clang-format on
   return cases;
