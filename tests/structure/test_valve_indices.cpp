@@ -35,6 +35,10 @@ SolidMesh quad_plate(const std::array<Vec2, 4>& c, double z, double t) {
   });
 }
 
+double cross2(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+
 Vec2 polar(double r, double deg) {
   return {r * std::cos(deg * M_PI / 180), r * std::sin(deg * M_PI / 180)};
 }
@@ -140,6 +144,32 @@ TEST_CASE("orifice area: a plate tilted by theta projects cos(theta) smaller") {
     const auto [tilted, e] = covered(th);
     CHECK(std::abs(tilted / flat - (std::cos(th) + t / s * std::sin(th))) <=
           (e + e0 * std::cos(th)) / flat);
+  }
+}
+
+TEST_CASE("orifice area: no bias for an outline in general position to the grid") {
+  // A cell is classified by its centre, so along an outline that crosses the polar grid at
+  // generic angles the misclassified parts of cells on either side cancel: the error grows like
+  // the square root of the number of outline cells, not like their number, and stays a small
+  // fraction of raster_error (which is the no-cancellation bound): measured 0.004 .. 0.019 here.
+  // A biased classification shifts the whole outline: sampling cells 0.2 of a cell off-centre
+  // radially gives 0.07, which the 0.04 bound below rejects.
+  // Irregular quadrilateral, straight edges: exact area by the shoelace formula.
+  const std::array<Vec2, 4> c = {polar(0.3 * R, 10), polar(0.9 * R, 40), polar(0.8 * R, 80),
+                                 polar(0.2 * R, 70)};
+  double exact = 0;
+  for (int k = 0; k < 4; ++k) exact += 0.5 * cross2(c[k], c[(k + 1) % 4]);
+  Leaflets l;
+  l.add(quad_plate(c, 0, 1e-5));
+  for (int rings : {128, 256, 512, 1024}) {
+    CAPTURE(rings);
+    OrificeOptions o;
+    o.rings = rings;
+    const OrificeArea a = area_of(l, z_valve(), o);
+    const double err = std::abs((a.disc_area - a.area) - exact);
+    MESSAGE("irregular quad, rings " << rings
+                                     << ": |error| / raster_error = " << err / a.raster_error);
+    CHECK(err <= 0.04 * a.raster_error);
   }
 }
 
