@@ -135,7 +135,9 @@ CLI::App* add_psd(CLI::App& cli, std::function<int()>& action) {
   auto o = std::make_shared<Options>();
   auto* c = cli.add_subcommand("psd", "Power spectral density of probe time series (Welch)");
   c->add_option("probes", o->file, "Probe CSV written by a run (time,<probe>_u,...)")->required();
-  c->add_option("--column", o->columns, "Column to analyse (repeat for several)")->required();
+  c->add_option("--column", o->columns, "Column to analyse (repeat for several)")
+      ->required()
+      ->allow_extra_args(false);  // one name per --column, so a trailing file is not a column
   auto* seg = c->add_option("--segments", o->segments, "Number of Welch segments (default 8)")
                   ->check(CLI::PositiveNumber);
   c->add_option("--segment-length", o->segment_length, "Samples per segment")

@@ -43,7 +43,7 @@ check awk '/psd: a_u:/ { v = $0; sub(/.*variance /, "", v); split(v, a, " "); s 
   END { exit !ok }' "$dir/u.out"
 if grep -q resampled "$dir/u.out"; then echo "FAILED: uniform series reported as resampled"; status=1; fi
 
-"$app" psd "$dir/jitter.csv" --column a_u --out "$dir/j" --no-plot > "$dir/j.out"
+"$app" psd --column a_u --out "$dir/j" --no-plot "$dir/jitter.csv" > "$dir/j.out"  # file last
 cat "$dir/j.out"
 check grep -q "not uniform.*resampled" "$dir/j.out"
 read -r f df < <(peak "$dir/j/psd_a_u.csv")
