@@ -2,7 +2,8 @@
 // reads the statistics written by io::PhaseStatistics::write (mesh, one HDF5 file per phase bin,
 // <name>_phases.csv), reads the PIV file, matches every PIV frame to the bin whose phase time is
 // nearest to the frame's phase/time value (or to --bin), and writes metrics.csv, frame_<i>.csv,
-// profile_<line>_<i>.csv and frame_<i>.png (io/plot_piv.py) into --out. Runs on rank 0.
+// profile_<line>_<i>.csv and frame_<i>.png (io/plot_piv.py) into --out. PIV files in other
+// units than m and m/s take --length-scale / --velocity-scale (io::PivUnits). Runs on rank 0.
 #include "app/command_compare_piv.hpp"
 
 #include <fmt/format.h>
@@ -33,6 +34,7 @@ struct Options {
   std::vector<std::string> lines;
   int bin = -1;
   int line_points = 60;
+  io::PivUnits units;  // file units -> m, m/s
   bool plot = true;
 };
 
@@ -134,7 +136,7 @@ int run(const Options& o) {
   const std::string name = stats.stem().string();
   const auto mesh = read_xdmf_mesh(dir / (name + "_mesh.h5"));
   const auto phase_times = read_phase_times(dir / (name + "_phases.csv"));
-  const auto piv = io::read_piv(o.piv);
+  const auto piv = io::read_piv(o.piv, o.units);
   const io::PivPlane plane(Eigen::Vector3d(o.origin.data()), Eigen::Vector3d(o.ex.data()),
                            Eigen::Vector3d(o.ey.data()));
   std::vector<io::ProfileLine> lines;
@@ -210,7 +212,7 @@ CLI::App* add_compare_piv(CLI::App& cli, std::function<int()>& action) {
   c->add_option("stats", o->stats, "Statistics .xmf written by a run (PhaseStatistics)")
       ->required()
       ->check(CLI::ExistingFile);
-  c->add_option("piv", o->piv, "PIV file: CSV or Tecplot ASCII (m, m/s)")
+  c->add_option("piv", o->piv, "PIV file: CSV or Tecplot ASCII (m, m/s unless scaled)")
       ->required()
       ->check(CLI::ExistingFile);
   c->add_option("--origin", o->origin, "PIV origin in the simulation frame, m (x,y,z)")
@@ -229,6 +231,12 @@ CLI::App* add_compare_piv(CLI::App& cli, std::function<int()>& action) {
   c->add_option("--line-points", o->line_points, "Points per profile line");
   c->add_option("--bin", o->bin, "Statistics bin for every frame (default: nearest phase)");
   c->add_option("--out", o->out, "Output folder");
+  c->add_option("--length-scale", o->units.length,
+                "Metres per PIV length unit, applied on reading (0.001 for mm)")
+      ->check(CLI::PositiveNumber);
+  c->add_option("--velocity-scale", o->units.velocity,
+                "m/s per PIV velocity unit, applied on reading (0.001 for mm/s)")
+      ->check(CLI::PositiveNumber);
   c->add_flag("!--no-plot", o->plot, "Do not make PNG plots");
   action = [o] { return run(*o); };
   return c;

@@ -6,6 +6,7 @@
 #include <exception>
 
 #include "app/command_compare_piv.hpp"
+#include "app/command_psd.hpp"
 #include "app/commands.hpp"
 
 int main(int argc, char** argv) {
@@ -46,6 +47,8 @@ int main(int argc, char** argv) {
 
   std::function<int()> compare_piv;
   auto* piv = valsalva::app::add_compare_piv(cli, compare_piv);
+  std::function<int()> psd;
+  auto* psd_cmd = valsalva::app::add_psd(cli, psd);
 
   int code = 0;
   try {
@@ -62,6 +65,7 @@ int main(int argc, char** argv) {
     if (*val) code = valsalva::app::validate(case_name, list, quick, out);
     if (*docs) code = valsalva::app::docs_scenes();
     if (*piv) code = compare_piv();
+    if (*psd_cmd) code = psd();
   } catch (const std::exception& e) {
     // Inputs are read on every rank, so every rank fails alike; with several ranks a failure on
     // one rank alone must not leave the others waiting in a collective.

@@ -294,14 +294,34 @@ PivData read_piv_tecplot(const std::filesystem::path& path) {
   return data;
 }
 
-PivData read_piv(const std::filesystem::path& path) {
+void scale_piv(PivData& data, const PivUnits& units) {
+  for (double f : {units.length, units.velocity})
+    if (!(f > 0) || !std::isfinite(f))
+      throw std::invalid_argument(
+          fmt::format("PIV file '{}': length scale {} and velocity scale {} must be positive",
+                      data.source, units.length, units.velocity));
+  for (PivFrame& f : data.frames) {
+    for (auto* v : {&f.x, &f.y})
+      for (double& a : *v) a *= units.length;
+    for (auto* v : {&f.u, &f.v, &f.u_rms, &f.v_rms})
+      for (double& a : *v) a *= units.velocity;
+  }
+}
+
+PivData read_piv(const std::filesystem::path& path, const PivUnits& units) {
   const std::string ext = lower(path.extension().string());
-  if (ext == ".csv") return read_piv_csv(path);
-  if (ext == ".dat" || ext == ".tec" || ext == ".plt" || ext == ".txt")
-    return read_piv_tecplot(path);
-  throw std::runtime_error(fmt::format(
-      "PIV file '{}': extension '{}' is neither .csv nor Tecplot ASCII (.dat, .tec, .plt, .txt)",
-      path.string(), ext));
+  PivData data;
+  if (ext == ".csv") {
+    data = read_piv_csv(path);
+  } else if (ext == ".dat" || ext == ".tec" || ext == ".plt" || ext == ".txt") {
+    data = read_piv_tecplot(path);
+  } else {
+    throw std::runtime_error(fmt::format(
+        "PIV file '{}': extension '{}' is neither .csv nor Tecplot ASCII (.dat, .tec, .plt, .txt)",
+        path.string(), ext));
+  }
+  scale_piv(data, units);
+  return data;
 }
 
 }  // namespace valsalva::io

@@ -1,7 +1,8 @@
 // Planar PIV data: points (x, y) in the PIV plane's own frame with in-plane velocity (u, v),
 // optionally the RMS (u_rms, v_rms), a validity flag, and a phase or time per frame. SI units
-// (m, m/s): convert millimetre exports before reading. A point whose u or v is NaN, or whose
-// `valid` flag is 0, is masked (kept, but skipped by comparisons).
+// (m, m/s) after reading: files in other units (e.g. mm, mm/s) are read with PivUnits scale
+// factors. A point whose u or v is NaN, or whose `valid` flag is 0, is masked (kept, but skipped
+// by comparisons).
 //
 // CSV: '#' comments and blank lines skipped; the first line names the columns (any order,
 //   case-insensitive): x, y, u, v [, u_rms, v_rms] [, valid] [, phase | time]. Rows with the same
@@ -40,7 +41,15 @@ struct PivData {
 
 PivData read_piv_csv(const std::filesystem::path& path);
 PivData read_piv_tecplot(const std::filesystem::path& path);
-// By extension: .csv -> CSV; .dat, .tec, .plt, .txt -> Tecplot ASCII.
-PivData read_piv(const std::filesystem::path& path);
+// Factors that turn the file's numbers into SI: x, y times `length` [m per file unit]; u, v,
+// u_rms, v_rms times `velocity` [m/s per file unit]. Phase/time values are not scaled.
+struct PivUnits {
+  double length = 1, velocity = 1;  // 0.001 and 0.001 for mm and mm/s
+};
+// Multiplies in place; throws std::invalid_argument unless both factors are finite and > 0.
+void scale_piv(PivData& data, const PivUnits& units);
+
+// By extension: .csv -> CSV; .dat, .tec, .plt, .txt -> Tecplot ASCII; then scale_piv.
+PivData read_piv(const std::filesystem::path& path, const PivUnits& units = {});
 
 }  // namespace valsalva::io

@@ -149,3 +149,70 @@ TEST_CASE("PIV comparison on a tilted plane: round-off without noise, sigma with
   CHECK_THROWS_WITH(io::PivPlane({0, 0, 0}, {1, 0, 0}, {0.1, 1, 0}),
                     doctest::Contains("must be orthogonal unit vectors"));
 }
+
+namespace {
+
+// The metrics that must not depend on the file's units.
+std::vector<double> metrics(const io::FrameComparison& c) {
+  std::vector<double> m;
+  for (const auto* q : {&c.u, &c.v})
+    m.insert(m.end(), {q->rmse, q->normalised_error, q->correlation, double(q->points)});
+  m.insert(m.end(), {double(c.masked), double(c.outside)});
+  return m;
+}
+
+void check_same_metrics(const io::FrameComparison& a, const io::FrameComparison& b) {
+  const auto ma = metrics(a), mb = metrics(b);
+  for (std::size_t i = 0; i < ma.size(); ++i) {
+    CAPTURE(i);
+    // x 1000 and x 0.001 round to within 2 ulp; metrics are sums of a few hundred terms.
+    CHECK(mb[i] == doctest::Approx(ma[i]).epsilon(1e-12));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("PIV files in mm and mm/s read with scale factors give the metrics of the file in m") {
+  const auto s = setup("hexa");
+  const io::PointLocator locator(s.mesh);
+  const auto plane = tilted_plane();
+  // 1. The stored Tecplot test file and its copy in mm (tests/data/piv/good_mm.dat).
+  const std::filesystem::path data = std::filesystem::path(VALSALVA_SOURCE_DIR) / "tests/data/piv";
+  const auto m = io::read_piv(data / "good.dat");
+  const auto mm = io::read_piv(data / "good_mm.dat", {1e-3, 1e-3});
+  REQUIRE(mm.frames.size() == m.frames.size());
+  for (std::size_t f = 0; f < m.frames.size(); ++f) {
+    const auto& a = m.frames[f];
+    const auto& b = mm.frames[f];
+    CHECK(b.phase == a.phase);  // times are not scaled
+    check_same_metrics(io::compare_frame(a, io::PivSampler(locator, plane, a), s.sim),
+                       io::compare_frame(b, io::PivSampler(locator, plane, b), s.sim));
+  }
+  // 2. A noisy synthetic frame written as CSV in m and in mm (with RMS columns).
+  const auto frame = synthetic(plane, 0.01, 5, 0.3);
+  const std::filesystem::path out = "test_output/piv_units";
+  std::filesystem::create_directories(out);
+  for (const auto& [name, k] : {std::pair{"m.csv", 1.0}, std::pair{"mm.csv", 1000.0}}) {
+    std::ofstream f(out / name);
+    f.precision(17);
+    f << "x,y,u,v,u_rms,v_rms,valid\n";
+    for (std::size_t i = 0; i < frame.size(); ++i)
+      f << k * frame.x[i] << ',' << k * frame.y[i] << ',' << k * frame.u[i] << ',' << k * frame.v[i]
+        << ',' << k * frame.u_rms[i] << ',' << k * frame.v_rms[i] << ',' << int(frame.valid[i])
+        << '\n';
+  }
+  const auto a = io::read_piv(out / "m.csv").frames.at(0);
+  const auto b = io::read_piv(out / "mm.csv", {1e-3, 1e-3}).frames.at(0);
+  const auto ca = io::compare_frame(a, io::PivSampler(locator, plane, a), s.sim);
+  const auto cb = io::compare_frame(b, io::PivSampler(locator, plane, b), s.sim);
+  CHECK(ca.u.points > 300);
+  check_same_metrics(ca, cb);
+  CHECK(cb.u_rms.rmse == doctest::Approx(ca.u_rms.rmse).epsilon(1e-12));
+  // Without the scale factors the mm file is far off (the check can fail).
+  const auto raw = io::read_piv(out / "mm.csv").frames.at(0);
+  CHECK(io::compare_frame(raw, io::PivSampler(locator, plane, raw), s.sim).outside > 300);
+
+  CHECK_THROWS_WITH_AS(io::read_piv(data / "good.dat", {0.0, 1.0}),
+                       doctest::Contains("length scale 0 and velocity scale 1 must be positive"),
+                       std::invalid_argument);
+}
