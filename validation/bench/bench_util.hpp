@@ -3,6 +3,7 @@
 #pragma once
 
 #include <sched.h>
+#include <unistd.h>
 
 #include <ctime>
 #include <fstream>
@@ -40,10 +41,12 @@ inline double cpu_seconds() {
   return c.tv_sec + 1e-9 * c.tv_nsec;
 }
 
-// "<n> CPUs available, <model name>" from the affinity mask and /proc/cpuinfo.
+// "<n> CPUs online (<m> in this process's affinity mask), <model name>": mpiexec binds ranks, so
+// the mask alone would hide the machine's size.
 inline std::string machine() {
   cpu_set_t set;
-  const int cpus = sched_getaffinity(0, sizeof(set), &set) == 0 ? CPU_COUNT(&set) : 0;
+  const int bound = sched_getaffinity(0, sizeof(set), &set) == 0 ? CPU_COUNT(&set) : 0;
+  const long online = sysconf(_SC_NPROCESSORS_ONLN);
   std::ifstream in("/proc/cpuinfo");
   std::string line, model = "unknown CPU";
   while (std::getline(in, line))
@@ -51,7 +54,8 @@ inline std::string machine() {
       model = line.substr(line.find(':') + 2);
       break;
     }
-  return std::to_string(cpus) + " CPUs available, " + model;
+  return std::to_string(online) + " CPUs online (" + std::to_string(bound) +
+         " in this process's affinity mask), " + model;
 }
 
 }  // namespace valsalva::bench
