@@ -73,6 +73,8 @@ struct BlockLayout {
 
 // MPI_Alltoallv of consecutive slices of `send` (send_counts[r] elements to rank r, `width`
 // values each); returns what arrives, ordered by source rank, and the per-source counts.
+// Counts are in rows of one MPI datatype each, not in bytes, so that a rank may send more than
+// 2^31 bytes (a checkpoint with whole-mesh statistics: 88 B per node and bin).
 template <class U>
 std::vector<U> exchange(const flow::Comm& comm, std::span<const U> send,
                         std::span<const int> send_counts, std::size_t width,
@@ -81,25 +83,28 @@ std::vector<U> exchange(const flow::Comm& comm, std::span<const U> send,
   recv_counts.assign(p, 0);
   VALSALVA_MPI(
       MPI_Alltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT, comm.get()));
-  auto bytes = [&](std::span<const int> counts, std::vector<int>& n, std::vector<int>& displ) {
-    n.resize(p);
-    displ.resize(p);
+  auto displacements = [&](std::span<const int> counts, std::vector<int>& displ) {
+    displ.assign(p, 0);
     std::int64_t total = 0;
     for (int r = 0; r < p; ++r) {
-      n[r] = static_cast<int>(counts[r] * width * sizeof(U));
       displ[r] = static_cast<int>(total);
-      total += static_cast<std::int64_t>(counts[r]) * width * sizeof(U);
+      total += counts[r];
     }
     if (total > std::numeric_limits<int>::max())
       throw std::runtime_error(
-          fmt::format("HDF5 row exchange: {} bytes exceed MPI's int counts", total));
-    return static_cast<std::size_t>(total / sizeof(U));
+          fmt::format("HDF5 row exchange: {} rows exceed MPI's int counts", total));
+    return static_cast<std::size_t>(total);
   };
-  std::vector<int> sn, sd, rn, rd;
-  bytes(send_counts, sn, sd);
-  std::vector<U> recv(bytes(recv_counts, rn, rd));
-  VALSALVA_MPI(MPI_Alltoallv(send.data(), sn.data(), sd.data(), MPI_BYTE, recv.data(), rn.data(),
-                             rd.data(), MPI_BYTE, comm.get()));
+  std::vector<int> sd, rd;
+  displacements(send_counts, sd);
+  std::vector<U> recv(displacements(recv_counts, rd) * width);
+  MPI_Datatype row;
+  VALSALVA_MPI(MPI_Type_contiguous(static_cast<int>(width * sizeof(U)), MPI_BYTE, &row));
+  VALSALVA_MPI(MPI_Type_commit(&row));
+  const int status = MPI_Alltoallv(send.data(), send_counts.data(), sd.data(), row, recv.data(),
+                                   recv_counts.data(), rd.data(), row, comm.get());
+  MPI_Type_free(&row);
+  VALSALVA_MPI(status);
   return recv;
 }
 
