@@ -73,6 +73,8 @@ struct BlockLayout {
 
 // MPI_Alltoallv of consecutive slices of `send` (send_counts[r] elements to rank r, `width`
 // values each); returns what arrives, ordered by source rank, and the per-source counts.
+// Counts are in rows of one MPI datatype each, not in bytes, so that a rank may send more than
+// 2^31 bytes (a checkpoint with whole-mesh statistics: 88 B per node and bin).
 template <class U>
 std::vector<U> exchange(const flow::Comm& comm, std::span<const U> send,
                         std::span<const int> send_counts, std::size_t width,
@@ -81,25 +83,28 @@ std::vector<U> exchange(const flow::Comm& comm, std::span<const U> send,
   recv_counts.assign(p, 0);
   VALSALVA_MPI(
       MPI_Alltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT, comm.get()));
-  auto bytes = [&](std::span<const int> counts, std::vector<int>& n, std::vector<int>& displ) {
-    n.resize(p);
-    displ.resize(p);
+  auto displacements = [&](std::span<const int> counts, std::vector<int>& displ) {
+    displ.assign(p, 0);
     std::int64_t total = 0;
     for (int r = 0; r < p; ++r) {
-      n[r] = static_cast<int>(counts[r] * width * sizeof(U));
       displ[r] = static_cast<int>(total);
-      total += static_cast<std::int64_t>(counts[r]) * width * sizeof(U);
+      total += counts[r];
     }
     if (total > std::numeric_limits<int>::max())
       throw std::runtime_error(
-          fmt::format("HDF5 row exchange: {} bytes exceed MPI's int counts", total));
-    return static_cast<std::size_t>(total / sizeof(U));
+          fmt::format("HDF5 row exchange: {} rows exceed MPI's int counts", total));
+    return static_cast<std::size_t>(total);
   };
-  std::vector<int> sn, sd, rn, rd;
-  bytes(send_counts, sn, sd);
-  std::vector<U> recv(bytes(recv_counts, rn, rd));
-  VALSALVA_MPI(MPI_Alltoallv(send.data(), sn.data(), sd.data(), MPI_BYTE, recv.data(), rn.data(),
-                             rd.data(), MPI_BYTE, comm.get()));
+  std::vector<int> sd, rd;
+  displacements(send_counts, sd);
+  std::vector<U> recv(displacements(recv_counts, rd) * width);
+  MPI_Datatype row;
+  VALSALVA_MPI(MPI_Type_contiguous(static_cast<int>(width * sizeof(U)), MPI_BYTE, &row));
+  VALSALVA_MPI(MPI_Type_commit(&row));
+  const int status = MPI_Alltoallv(send.data(), send_counts.data(), sd.data(), row, recv.data(),
+                                   recv_counts.data(), rd.data(), row, comm.get());
+  MPI_Type_free(&row);
+  VALSALVA_MPI(status);
   return recv;
 }
 
@@ -294,52 +299,71 @@ void File::write_rows(const std::string& name, std::int64_t global_rows, int col
   if (error.empty() && data.size() != row_ids.size() * width)
     error = fmt::format("{} values given for {} rows of {} columns", data.size(), row_ids.size(),
                         width);
-  // Sort the rows (hyperslabs are transferred in file order) and permute the data alike.
-  std::vector<std::size_t> order(row_ids.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t a, std::size_t b) { return row_ids[a] < row_ids[b]; });
-  std::vector<std::int64_t> sorted(row_ids.size());
-  std::vector<T> buffer(error.empty() ? data.size() : 0);
-  for (std::size_t i = 0; i < order.size() && error.empty(); ++i) {
-    sorted[i] = row_ids[order[i]];
+  // Rows in increasing order (hyperslabs are transferred in file order). Callers mostly pass
+  // them so (field output, checkpoints): then the data are used in place, since every copy of a
+  // checkpoint with whole-mesh statistics costs gigabytes; otherwise sorted, data permuted alike.
+  std::span<const std::int64_t> sorted = row_ids;
+  std::span<const T> values = data;
+  std::vector<std::int64_t> sorted_rows;
+  std::vector<T> permuted;
+  if (error.empty() && !std::is_sorted(row_ids.begin(), row_ids.end())) {
+    std::vector<std::size_t> order(row_ids.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return row_ids[a] < row_ids[b]; });
+    sorted_rows.resize(order.size());
+    permuted.resize(data.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      sorted_rows[i] = row_ids[order[i]];
+      std::copy_n(data.begin() + order[i] * width, width, permuted.begin() + i * width);
+    }
+    sorted = sorted_rows, values = permuted;
+  }
+  for (std::size_t i = 0; i < sorted.size() && error.empty(); ++i) {
     if (sorted[i] < 0 || sorted[i] >= global_rows)
       error = fmt::format("row id {} outside [0, {})", sorted[i], global_rows);
     else if (i > 0 && sorted[i] == sorted[i - 1])
       error = fmt::format("row id {} given twice", sorted[i]);
-    else
-      std::copy_n(data.begin() + order[i] * width, width, buffer.begin() + i * width);
   }
   if (parallel_) settle(comm_, error.empty() ? error : where(error));
   if (!error.empty()) throw std::runtime_error(where(error));
 
-  if (!parallel_) {  // one covering hyperslab, gaps at the fill value
-    const Run run = cover(sorted);
+  Run run = cover(sorted);
+  if (parallel_) {
+    const flow::Comm world(comm_);
+    const BlockLayout layout{global_rows, world.size()};
+    run = {static_cast<hsize_t>(layout.start(world.rank())),
+           static_cast<hsize_t>(layout.start(world.rank() + 1) - layout.start(world.rank()))};
+    if (world.size() > 1) {  // one rank keeps its rows: nothing to send
+      const std::vector<int> counts = layout.counts(sorted);
+      std::vector<int> recv_counts;
+      auto ids = exchange<std::int64_t>(world, sorted, counts, 1, recv_counts);
+      auto received = exchange<T>(world, values, counts, width, recv_counts);
+      std::vector<T>().swap(permuted);  // free before the block is filled
+      sorted_rows = std::move(ids), permuted = std::move(received);
+      sorted = sorted_rows, values = permuted;
+    }
+  }
+  // Rows that are exactly the run, in order, are written as they are; otherwise gaps (rows
+  // nobody writes) take the fill value 0 in a block.
+  bool whole = sorted.size() == run.count;
+  for (std::size_t i = 0; i < sorted.size() && whole; ++i)
+    whole = static_cast<hsize_t>(sorted[i]) == run.start + i;
+  if (!whole) {
     std::vector<T> block(run.count * width, T{});
-    for (std::size_t i = 0; i < sorted.size(); ++i)
-      std::copy_n(buffer.begin() + i * width, width,
-                  block.begin() + (sorted[i] - run.start) * width);
-    write_run<T>(file_.get(), false, path_, name, global_rows, cols, run, block);
-    return;
+    std::vector<char> seen(run.count, 0);
+    for (std::size_t i = 0; i < sorted.size(); ++i) {
+      const std::size_t row = sorted[i] - run.start;
+      if (seen[row]++ != 0 && error.empty())
+        error = where(fmt::format("row id {} given by two ranks", sorted[i]));
+      std::copy_n(values.begin() + i * width, width, block.begin() + row * width);
+    }
+    std::vector<T>().swap(permuted);
+    permuted = std::move(block);
+    values = permuted;
   }
-  const flow::Comm world(comm_);
-  const BlockLayout layout{global_rows, world.size()};
-  const std::vector<int> counts = layout.counts(sorted);
-  std::vector<int> recv_counts;
-  const auto ids = exchange<std::int64_t>(world, sorted, counts, 1, recv_counts);
-  const auto values = exchange<T>(world, buffer, counts, width, recv_counts);
-  const Run run{static_cast<hsize_t>(layout.start(world.rank())),
-                static_cast<hsize_t>(layout.start(world.rank() + 1) - layout.start(world.rank()))};
-  std::vector<T> block(run.count * width, T{});
-  std::vector<char> seen(run.count, 0);
-  for (std::size_t i = 0; i < ids.size(); ++i) {
-    const std::size_t local = ids[i] - run.start;
-    if (seen[local]++ != 0 && error.empty())
-      error = where(fmt::format("row id {} given by two ranks", ids[i]));
-    std::copy_n(values.begin() + i * width, width, block.begin() + local * width);
-  }
-  settle(comm_, error);
-  write_run<T>(file_.get(), true, path_, name, global_rows, cols, run, block);
+  if (parallel_) settle(comm_, error);
+  write_run<T>(file_.get(), parallel_, path_, name, global_rows, cols, run, values);
 }
 
 template <class T>

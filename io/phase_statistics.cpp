@@ -198,7 +198,10 @@ std::vector<CheckpointArray> PhaseStatistics::checkpoint_arrays() const {
     meta.data = {options_.period,      double(options_.bins), options_.start_time,
                  double(first_cycle_), double(last_cycle_),   double(global_rows_)};
   }
-  return {moments, nodes, counts, meta};
+  // Moved, not copied: an initializer list would copy the moments (gigabytes on a whole mesh).
+  std::vector<CheckpointArray> arrays;
+  for (auto* a : {&moments, &nodes, &counts, &meta}) arrays.push_back(std::move(*a));
+  return arrays;
 }
 
 void PhaseStatistics::restore(const CheckpointReader& reader) {

@@ -10,7 +10,8 @@
 // <u_i' u_j'> = M2_ij / n in m^2/s^2, fluctuating kinetic energy k = rho/2 (u'^2+v'^2+w'^2) in
 // J/m^3. period = 0 gives the plain time average (one bin).
 // Memory: 11 doubles = 88 bytes per node and bin (a 1 M-node mesh, 20 bins: 1.76 GB over all
-// ranks); restrict `nodes` to planes or regions to save it.
+// ranks) plus 44 bytes per covered node; checkpoint_arrays() copies the moments once more while
+// a checkpoint is written. Restrict `nodes` to planes or regions to save it (docs/analysis.md).
 //
 // How the run loop uses it:
 //   io::PhaseStatistics stats(local, {period, bins, t_start, rho, "stats"},

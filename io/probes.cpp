@@ -45,12 +45,27 @@ Probes::Probes(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
 }
 
 std::vector<double> Probes::sample(std::span<const double> values, int components) const {
-  // Exactly one rank owns each needed node; x + 0 is exact, so the sum is the owner's value.
   buffer_.assign(needed_.size() * components, 0.0);
   for (std::size_t j = 0; j < needed_.size(); ++j)
     if (needed_local_[j] >= 0)
       for (int c = 0; c < components; ++c)
         buffer_[j * components + c] = values[std::size_t(needed_local_[j]) * components + c];
+  return gather_and_interpolate(components);
+}
+
+// Reads only the nodes the probes need (packing every owned node cost O(mesh) per sample).
+std::vector<double> Probes::sample(const flow::FlowState& state) const {
+  buffer_.assign(needed_.size() * 4, 0.0);
+  for (std::size_t j = 0; j < needed_.size(); ++j)
+    if (const int n = needed_local_[j]; n >= 0) {
+      for (int c = 0; c < 3; ++c) buffer_[4 * j + c] = state.velocity[n][c];
+      buffer_[4 * j + 3] = state.pressure[n];
+    }
+  return gather_and_interpolate(4);
+}
+
+std::vector<double> Probes::gather_and_interpolate(int components) const {
+  // Exactly one rank owns each needed node; x + 0 is exact, so the sum is the owner's value.
   gathered_.resize(buffer_.size());
   VALSALVA_MPI(MPI_Allreduce(buffer_.data(), gathered_.data(), static_cast<int>(buffer_.size()),
                              MPI_DOUBLE, MPI_SUM, local_->comm.get()));
@@ -63,15 +78,6 @@ std::vector<double> Probes::sample(std::span<const double> values, int component
       out[p * components + c] = s;
     }
   return out;
-}
-
-std::vector<double> Probes::sample(const flow::FlowState& state) const {
-  std::vector<double> packed(std::size_t(local_->num_owned) * 4);
-  for (int i = 0; i < local_->num_owned; ++i) {
-    for (int c = 0; c < 3; ++c) packed[4 * i + c] = state.velocity[i][c];
-    packed[4 * i + 3] = state.pressure[i];
-  }
-  return sample(packed, 4);
 }
 
 ProbeCsv::ProbeCsv(const std::filesystem::path& path, const Probes& probes,

@@ -45,6 +45,9 @@ class Probes {
   std::vector<double> sample(const flow::FlowState& state) const;
 
  private:
+  // Sums buffer_ (the needed nodes' values, zero where not owned) over ranks and interpolates.
+  std::vector<double> gather_and_interpolate(int components) const;
+
   const flow::LocalMesh* local_;
   std::vector<ProbePoint> points_;
   std::vector<PointLocation> locations_;

@@ -31,6 +31,7 @@
 #include "flow/poisson_weights.hpp"
 #include "flow/projection_rk4.hpp"
 #include "io/box_generator.hpp"
+#include "validation/bench/bench_util.hpp"
 
 using namespace valsalva;
 
@@ -45,24 +46,12 @@ struct Args {
 
 Args parse(int argc, char** argv) {
   Args a;
-  for (int i = 1; i < argc; ++i) {
-    const std::string key = argv[i];
-    if (i + 1 >= argc) throw std::invalid_argument("missing value after " + key);
-    const std::string value = argv[++i];
-    if (key == "--n")
-      a.n = std::stoi(value);
-    else if (key == "--scheme")
-      a.scheme = value;
-    else if (key == "--cfl")
-      a.cfl = std::stod(value);
-    else if (key == "--t-end")
-      a.t_end = std::stod(value);
-    else if (key == "--out")
-      a.out = value;
-    else
-      throw std::invalid_argument("unknown option " + key +
-                                  " (accepted: --n --scheme --cfl --t-end --out)");
-  }
+  const auto o = bench::parse_options(argc, argv, {"n", "scheme", "cfl", "t-end", "out"});
+  if (o.contains("n")) a.n = std::stoi(o.at("n"));
+  if (o.contains("scheme")) a.scheme = o.at("scheme");
+  if (o.contains("cfl")) a.cfl = std::stod(o.at("cfl"));
+  if (o.contains("t-end")) a.t_end = std::stod(o.at("t-end"));
+  if (o.contains("out")) a.out = o.at("out");
   return a;
 }
 
@@ -86,12 +75,6 @@ double interpolate(const std::vector<std::array<double, 3>>& ref, double t, int 
   while (i + 1 < ref.size() && ref[i][0] < t) ++i;
   const double w = (t - ref[i - 1][0]) / (ref[i][0] - ref[i - 1][0]);
   return (1 - w) * ref[i - 1][column] + w * ref[i][column];
-}
-
-double cpu_seconds() {
-  timespec c;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c);
-  return c.tv_sec + 1e-9 * c.tv_nsec;
 }
 
 }  // namespace
@@ -146,7 +129,7 @@ int main(int argc, char** argv) {
     int max_its = 0;
     long total_its = 0;
     MPI_Barrier(MPI_COMM_WORLD);
-    const double cpu0 = cpu_seconds();
+    const double cpu0 = bench::cpu_seconds();
     const auto t0 = std::chrono::steady_clock::now();
     for (int s = 0; s < steps; ++s) {
       const auto report = solver.step(state, dt);
@@ -159,7 +142,7 @@ int main(int argc, char** argv) {
     }
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const double cpu = local.comm.sum(cpu_seconds() - cpu0);  // all ranks
+    const double cpu = local.comm.sum(bench::cpu_seconds() - cpu0);  // all ranks
 
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
