@@ -215,7 +215,7 @@ TEST_CASE("ProjectionRK4 subgrid hook: stage gradients in, nu + nu_sgs in the st
   les.viscosity = nu0;
   int calls = 0;
   double first_grad_error = -1;
-  les.subgrid_viscosity = [&](const TensorField& grad, ScalarField& nu_sgs) {
+  les.subgrid_viscosity = [&](int, const TensorField& grad, ScalarField& nu_sgs) {
     if (calls++ == 0) {  // the first stage sees the gradient of v^n
       TensorField expected;
       flow::gradient(mesh, initial.velocity, expected);
