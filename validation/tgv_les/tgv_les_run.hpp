@@ -52,6 +52,9 @@ struct TgvLesResult {
   double dt = 0;
   double cpu_seconds = 0;  // summed over ranks
   double wall_seconds = 0;
+  // Max over the steps of dt (rc/2.83 + rv/2.79) with nu + max nu_sgs (flow/run_diagnostics.hpp,
+  // derived for central2; central4's convective spectral radius is ~1.37x larger).
+  double max_stability_number = 0;
   int poisson_iterations_max = 0;
   double poisson_iterations_mean = 0;
   // > 0: the run stopped at this time because the energy was no longer finite or exceeded its
