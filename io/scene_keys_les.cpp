@@ -32,7 +32,7 @@ void declare_les_keys(Schema& s) {
       .unit_of("-")
       .doc(
           "When nu_sgs is computed: step = once per time step from v^n, held over the 4 RK "
-          "stages (4x cheaper: 6 % of a step instead of 22 % at 48^3; the TGV Re 1600 peak "
+          "stages (4x cheaper: 6-7 % of a step instead of 20-23 % at 48^3; the TGV Re 1600 peak "
           "-dE/dt at 64^3 moves by 0.65 % and the CBC resolved energy by 0.2-0.4 %, "
           "validation/tgv_les and bench_les_cost); stage = at every RK stage");
 }
