@@ -26,13 +26,13 @@ ProjectionRK4::ProjectionRK4(const LocalMesh& mesh, ProjectionOptions options,
                                 std::to_string(options.viscosity) + ")");
 }
 
-void ProjectionRK4::momentum_rhs(const VectorField& u, VectorField& rhs) {
+void ProjectionRK4::momentum_rhs(const VectorField& u, VectorField& rhs, int stage) {
   convection_->apply(u, conv_);
   if (options_.subgrid_viscosity) {
     // The gradient's ghosts are valid, so nu_sgs is computed on ghosts too: no exchange.
     gradient(mesh_, u, grad_u_);
     nu_sgs_.resize(grad_u_.size());
-    options_.subgrid_viscosity(grad_u_, nu_sgs_);
+    options_.subgrid_viscosity(stage, grad_u_, nu_sgs_);
     nu_eff_.resize(nu_sgs_.size());
     for (std::size_t i = 0; i < nu_sgs_.size(); ++i) nu_eff_[i] = options_.viscosity + nu_sgs_[i];
     viscous_stress(mesh_, weights_, nu_eff_, u, grad_u_, rhs);
@@ -93,13 +93,14 @@ StepReport ProjectionRK4::step(FlowState& state, double dt) {
   int stage = 0;
   for (double alpha : std::array{1.0 / 4, 1.0 / 3, 1.0 / 2, 1.0}) {
     if (bc) bc->advect_outlets(stage_, state.velocity, state.time + alpha * dt, alpha * dt);
-    momentum_rhs(stage_, rhs_);
+    momentum_rhs(stage_, rhs_, stage);
     if (body_force_) {
       force_.resize(static_cast<std::size_t>(n));
-      body_force_(stage++, state.time + alpha_prev * dt, stage_, force_);
+      body_force_(stage, state.time + alpha_prev * dt, stage_, force_);
       for (int i = 0; i < n; ++i) rhs_[i] += force_[i] / rho;
-      alpha_prev = alpha;
     }
+    alpha_prev = alpha;
+    ++stage;
     for (int i = 0; i < n; ++i)
       stage_[i] = state.velocity[i] + alpha * dt * (rhs_[i] - grad_p_[i] / rho);
     if (bc) bc->impose(stage_, state.time + alpha * dt);  // v* is mass-corrected too

@@ -36,11 +36,13 @@ struct ProjectionOptions {
   double viscosity = 0.0;           // kinematic, m^2/s
   std::string scheme = "central2";  // convective scheme (flow::make_convection_scheme)
   PoissonOptions poisson;
-  // LES: fills nu_sgs [m^2/s] at owned and ghost nodes from the stage's velocity gradient
-  // (owned + ghosts valid; nu_sgs is sized by the solver). Empty = laminar: the constant-nu
-  // Laplacian runs and nothing else is computed or allocated. When set, the viscous term is the
-  // full stress div((nu + nu_sgs)(grad u + grad u^T)) (flow/viscous_stress.hpp).
-  std::function<void(const TensorField& grad_u, ScalarField& nu_sgs)> subgrid_viscosity;
+  // LES: fills nu_sgs [m^2/s] at owned and ghost nodes from the velocity gradient of RK stage
+  // `stage` = 0..3 (owned + ghosts valid; nu_sgs is sized by the solver and holds the values of
+  // the previous call, so a hook may leave it unchanged at stages 1-3 to freeze nu_sgs over the
+  // step, les::SgsUpdate). Empty = laminar: the constant-nu Laplacian runs and nothing else is
+  // computed or allocated. When set, the viscous term is the full stress
+  // div((nu + nu_sgs)(grad u + grad u^T)) (flow/viscous_stress.hpp).
+  std::function<void(int stage, const TensorField& grad_u, ScalarField& nu_sgs)> subgrid_viscosity;
   std::shared_ptr<BoundaryConditions> boundary;  // null: every patch periodic
 };
 
@@ -65,8 +67,9 @@ class ProjectionRK4 {
   // Advances `state` by dt; ghosts of the state are valid on return.
   StepReport step(FlowState& state, double dt);
 
-  // Momentum right-hand side without the pressure gradient: -div(u u) + nu lap(u).
-  void momentum_rhs(const VectorField& u, VectorField& rhs);
+  // Momentum right-hand side without the pressure gradient: -div(u u) + nu lap(u); `stage` is
+  // handed to the subgrid hook.
+  void momentum_rhs(const VectorField& u, VectorField& rhs, int stage = 0);
 
   const std::vector<double>& laplacian_weights() const { return weights_; }
 

@@ -17,7 +17,7 @@ struct LesSetup {
   std::string model = "none";
   double constant = 0;  // the constant in use (the model's default when les.constant = 0)
   // For flow::ProjectionOptions::subgrid_viscosity; empty for les.model = "none".
-  std::function<void(const flow::TensorField&, flow::ScalarField&)> subgrid_viscosity;
+  std::function<void(int, const flow::TensorField&, flow::ScalarField&)> subgrid_viscosity;
   // Appends nu_sgs / nu (or nu_sgs when nu = 0) of the last RK stage to `set`; a no-op for
   // "none" or before the first stage. The pointers stay valid until the next call.
   void add_fields(flow::FieldSet& set) const;

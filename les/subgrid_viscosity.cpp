@@ -7,11 +7,23 @@
 
 namespace valsalva::les {
 
+SgsUpdate parse_sgs_update(std::string_view name) {
+  if (name == "stage") return SgsUpdate::stage;
+  if (name == "step") return SgsUpdate::step;
+  throw std::invalid_argument(
+      fmt::format("unknown subgrid update '{}'; accepted: stage, step", name));
+}
+
+const char* name(SgsUpdate update) {
+  return update == SgsUpdate::stage ? "stage" : "step";
+}
+
 SubgridViscosity::SubgridViscosity(std::string_view model_name, std::optional<double> constant,
-                                   std::vector<double> filter_width)
+                                   std::vector<double> filter_width, SgsUpdate update)
     : model_(make_sgs_model(model_name,
                             constant && *constant > 0.0 ? constant : std::optional<double>{})),
-      delta_(std::move(filter_width)) {
+      delta_(std::move(filter_width)),
+      update_(update) {
   for (std::size_t i = 0; i < delta_.size(); ++i)
     if (!(std::isfinite(delta_[i]) && delta_[i] > 0.0))
       throw std::invalid_argument(fmt::format(
@@ -27,6 +39,13 @@ void SubgridViscosity::operator()(std::span<const Eigen::Matrix3d> grad,
 void SubgridViscosity::operator()(std::span<const double> grad_flat,
                                   std::span<double> nu_sgs) const {
   compute_nu_sgs(model_, grad_flat, delta_, nu_sgs);
+}
+
+bool SubgridViscosity::operator()(int stage, std::span<const Eigen::Matrix3d> grad,
+                                  std::span<double> nu_sgs) const {
+  if (!updates_at(stage)) return false;
+  compute_nu_sgs(model_, grad, delta_, nu_sgs);
+  return true;
 }
 
 }  // namespace valsalva::les

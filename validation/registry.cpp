@@ -18,6 +18,7 @@ Case cbc_decay_case();
 Case cavity_case();
 Case womersley_statistics_case();
 Case poiseuille_wss_case();
+Case tgv_les_case();
 
 const std::vector<Case>& all_cases() {
   // clang-format off
@@ -35,6 +36,7 @@ const std::vector<Case>& all_cases() {
       cavity_case(),
       womersley_statistics_case(),
       poiseuille_wss_case(),
+      tgv_les_case(),
   };
   // clang-format on
   return cases;

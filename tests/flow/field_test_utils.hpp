@@ -9,6 +9,7 @@
 
 #include "flow/dual_metrics.hpp"
 #include "flow/local_mesh.hpp"
+#include "flow/operators.hpp"
 #include "io/box_generator.hpp"
 
 namespace valsalva::test {
@@ -49,6 +50,13 @@ inline std::vector<double> gather_by_dual_node(const flow::LocalMesh& mesh,
       out[mesh.dual_node[i] * components + c] = values[i * components + c];
   MPI_Allreduce(MPI_IN_PLACE, out.data(), static_cast<int>(out.size()), MPI_DOUBLE, MPI_SUM,
                 mesh.comm.get());
+  return out;
+}
+
+// x, y, z of every vector in turn (for gather_by_dual_node with 3 components).
+inline std::vector<double> flatten(const flow::VectorField& u) {
+  std::vector<double> out;
+  for (const auto& v : u) out.insert(out.end(), {v.x(), v.y(), v.z()});
   return out;
 }
 

@@ -60,12 +60,6 @@ struct Recorder {
   }
 };
 
-std::vector<double> flatten(const flow::VectorField& u) {
-  std::vector<double> out;
-  for (const auto& v : u) out.insert(out.end(), {v.x(), v.y(), v.z()});
-  return out;
-}
-
 }  // namespace
 
 TEST_CASE("Taylor-Green run: exact-solution error, output times, rank independence") {
@@ -105,8 +99,9 @@ TEST_CASE("Taylor-Green run: exact-solution error, output times, rank independen
   flow::RunLoop alone(serial.mesh, serial.metrics, serial.local, options);
   alone.run();
   const auto n = static_cast<flow::GlobalIndex>(s.metrics.num_nodes());
-  const auto a = test::gather_by_dual_node(s.local, flatten(loop.state().velocity), 3, n);
-  const auto b = test::gather_by_dual_node(serial.local, flatten(alone.state().velocity), 3, n);
+  const auto a = test::gather_by_dual_node(s.local, test::flatten(loop.state().velocity), 3, n);
+  const auto b =
+      test::gather_by_dual_node(serial.local, test::flatten(alone.state().velocity), 3, n);
   const double diff = test::max_abs_difference(a, b);
   MESSAGE("np " << s.local.comm.size() << " vs serial: max |du| " << diff);
   CHECK(diff < 1e-10);

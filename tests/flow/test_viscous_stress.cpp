@@ -214,8 +214,10 @@ TEST_CASE("ProjectionRK4 subgrid hook: stage gradients in, nu + nu_sgs in the st
   flow::ProjectionOptions les = laminar;
   les.viscosity = nu0;
   int calls = 0;
+  bool stages_in_order = true;  // the hook sees stage = 0, 1, 2, 3 in every step
   double first_grad_error = -1;
-  les.subgrid_viscosity = [&](const TensorField& grad, ScalarField& nu_sgs) {
+  les.subgrid_viscosity = [&](int stage, const TensorField& grad, ScalarField& nu_sgs) {
+    stages_in_order = stages_in_order && stage == calls % 4;
     if (calls++ == 0) {  // the first stage sees the gradient of v^n
       TensorField expected;
       flow::gradient(mesh, initial.velocity, expected);
@@ -244,6 +246,7 @@ TEST_CASE("ProjectionRK4 subgrid hook: stage gradients in, nu + nu_sgs in the st
   MESSAGE("laminar nu + c vs hook nu_sgs = c after 3 steps: max |du| = " << diff << ", max change "
                                                                          << change);
   CHECK(calls == 12);  // 4 stages x 3 steps
+  CHECK(stages_in_order);
   CHECK(first_grad_error == 0.0);
   CHECK(b.subgrid_viscosity().size() == static_cast<std::size_t>(mesh.num_local()));
   CHECK(b.max_subgrid_viscosity() == c);

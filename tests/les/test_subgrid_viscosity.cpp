@@ -1,5 +1,5 @@
 // The flow solver's adaptor les::SubgridViscosity: per-node filter widths, default constants,
-// both gradient layouts, and clear errors.
+// both gradient layouts, the update policy (per step or per RK stage), and clear errors.
 #include <doctest/doctest.h>
 
 #include <Eigen/Dense>
@@ -64,4 +64,31 @@ TEST_CASE("SubgridViscosity rejects bad input with a message") {
   const std::vector<Eigen::Matrix3d> grad(3, Eigen::Matrix3d::Identity());
   std::vector<double> nu(3);
   CHECK_THROWS_AS(wale(grad, nu), std::invalid_argument);
+}
+
+TEST_CASE("update policy: per step computes at stage 0 only and leaves nu_sgs alone after") {
+  using valsalva::les::SgsUpdate;
+  Eigen::Matrix3d g;
+  g << 1.0, -2.0, 0.5, 3.0, 0.2, -1.1, 0.7, 1.9, -1.2;
+  const std::vector<Eigen::Matrix3d> grad(2, g), other(2, 2.0 * g);
+  const std::vector<double> delta = {1e-3, 2e-3};
+  SubgridViscosity per_step("sigma", {}, delta, SgsUpdate::step);
+  SubgridViscosity per_stage("sigma", {}, delta);  // the literal model is the class default
+  CHECK(per_stage.update() == SgsUpdate::stage);
+  std::vector<double> a(2), b(2);
+  CHECK(per_step(0, grad, a));
+  CHECK(per_stage(0, grad, b));
+  CHECK(a == b);
+  const std::vector<double> first = a;
+  for (int stage = 1; stage < 4; ++stage) {
+    CHECK_FALSE(per_step(stage, other, a));  // held: still the stage-0 values
+    CHECK(a == first);
+    CHECK(per_stage(stage, other, b));
+  }
+  // Sigma is homogeneous of degree 1 in g: the per-stage policy did recompute.
+  CHECK(b[0] == doctest::Approx(2.0 * a[0]).epsilon(1e-14));
+  CHECK(valsalva::les::parse_sgs_update("step") == SgsUpdate::step);
+  CHECK(valsalva::les::parse_sgs_update("stage") == SgsUpdate::stage);
+  CHECK_THROWS_WITH_AS(valsalva::les::parse_sgs_update("substep"),
+                       doctest::Contains("accepted: stage, step"), std::invalid_argument);
 }

@@ -3,3 +3,6 @@
 add_executable(bench_les_cost ${CMAKE_CURRENT_LIST_DIR}/les_cost.cpp)
 target_link_libraries(bench_les_cost PRIVATE valsalva_validation fmt::fmt valsalva_warnings)
 target_compile_definitions(bench_les_cost PRIVATE VALSALVA_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+# bench_sgs_kernel: one pointwise subgrid kernel call (time, or instructions under callgrind).
+add_executable(bench_sgs_kernel ${CMAKE_CURRENT_LIST_DIR}/sgs_kernel.cpp)
+target_link_libraries(bench_sgs_kernel PRIVATE valsalva_les fmt::fmt valsalva_warnings)

@@ -1,6 +1,6 @@
 # bench_tgv_re1600: opt-in benchmark of the flow solver (not a test); included from
 # validation/CMakeLists.txt.
 add_executable(bench_tgv_re1600 ${CMAKE_CURRENT_LIST_DIR}/tgv_re1600.cpp)
-target_link_libraries(bench_tgv_re1600 PRIVATE valsalva_io valsalva_flow MPI::MPI_CXX fmt::fmt
+target_link_libraries(bench_tgv_re1600 PRIVATE valsalva_validation MPI::MPI_CXX fmt::fmt
   valsalva_warnings)
 target_compile_definitions(bench_tgv_re1600 PRIVATE VALSALVA_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

@@ -32,6 +32,7 @@
 #include "flow/projection_rk4.hpp"
 #include "io/box_generator.hpp"
 #include "validation/bench/bench_util.hpp"
+#include "validation/tgv_les/tgv_les_run.hpp"
 
 using namespace valsalva;
 
@@ -53,28 +54,6 @@ Args parse(int argc, char** argv) {
   if (o.contains("t-end")) a.t_end = std::stod(o.at("t-end"));
   if (o.contains("out")) a.out = o.at("out");
   return a;
-}
-
-// Columns t, E, -dE/dt of the reference file (2 comment lines).
-std::vector<std::array<double, 3>> read_reference(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error("cannot open " + file.string());
-  std::vector<std::array<double, 3>> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream s(line);
-    std::array<double, 3> r{};
-    if (s >> r[0] >> r[1] >> r[2]) rows.push_back(r);
-  }
-  return rows;
-}
-
-double interpolate(const std::vector<std::array<double, 3>>& ref, double t, int column) {
-  std::size_t i = 1;
-  while (i + 1 < ref.size() && ref[i][0] < t) ++i;
-  const double w = (t - ref[i - 1][0]) / (ref[i][0] - ref[i - 1][0]);
-  return (1 - w) * ref[i - 1][column] + w * ref[i][column];
 }
 
 }  // namespace
@@ -104,23 +83,8 @@ int main(int argc, char** argv) {
     options.poisson.tolerance = 1e-8;
     flow::ProjectionRK4 solver(local, options, flow::poisson_weights(mesh, metrics, local));
 
-    flow::FlowState state;
-    state.velocity.resize(local.num_local());
-    state.pressure.resize(local.num_local());
-    for (int i = 0; i < local.num_local(); ++i) {
-      const auto& x = local.position[i];
-      state.velocity[i] = {std::sin(x.x()) * std::cos(x.y()) * std::cos(x.z()),
-                           -std::cos(x.x()) * std::sin(x.y()) * std::cos(x.z()), 0.0};
-      state.pressure[i] =
-          (std::cos(2 * x.x()) + std::cos(2 * x.y())) * (std::cos(2 * x.z()) + 2) / 16;
-    }
-    const double total_volume = std::pow(two_pi, 3);
-    auto energy = [&] {
-      double e = 0;
-      for (int i = 0; i < local.num_owned; ++i)
-        e += 0.5 * local.volume[i] * state.velocity[i].squaredNorm();
-      return local.comm.sum(e) / total_volume;
-    };
+    auto state = validation::tgv_re1600_initial_state(local);
+    auto energy = [&] { return validation::tgv_mean_energy(local, state.velocity); };
     const double h = two_pi / args.n;
     const int steps = static_cast<int>(std::ceil(args.t_end / (args.cfl * h)));
     const double dt = args.t_end / steps;
@@ -151,8 +115,9 @@ int main(int argc, char** argv) {
     const double bytes_per_node = local.comm.max(1024.0 * usage.ru_maxrss / owned);
 
     if (rank == 0) {
-      const auto ref = read_reference(std::filesystem::path(VALSALVA_SOURCE_DIR) /
-                                      "validation/refdata/tgv_re1600/spectral_Re1600_512.gdiag");
+      const auto ref =
+          validation::read_tgv_reference(std::filesystem::path(VALSALVA_SOURCE_DIR) /
+                                         "validation/refdata/tgv_re1600/spectral_Re1600_512.gdiag");
       double ref_peak = 0, peak = 0, peak_t = 0, worst = 0;
       for (const auto& r : ref)
         if (r[0] <= args.t_end) ref_peak = std::max(ref_peak, r[2]);
@@ -162,7 +127,7 @@ int main(int argc, char** argv) {
       out << "t,E,dissipation,dissipation_reference\n";
       for (std::size_t i = 1; i + 1 < times.size(); ++i) {
         const double eps = -(energies[i + 1] - energies[i - 1]) / (times[i + 1] - times[i - 1]);
-        const double eps_ref = interpolate(ref, times[i], 2);
+        const double eps_ref = validation::interpolate_tgv_reference(ref, times[i], 2);
         worst = std::max(worst, std::abs(eps - eps_ref));
         if (eps > peak) peak = eps, peak_t = times[i];
         out << fmt::format("{:.6f},{:.10e},{:.10e},{:.10e}\n", times[i], energies[i], eps, eps_ref);

@@ -31,6 +31,7 @@ struct CbcSpec {
   int n = 32;                       // nodes (cells) per side
   std::string model = "sigma";      // les::SubgridViscosity names; "none" = no model
   double constant = 0;              // 0 = the model's default
+  std::string update = "step";      // les.update: nu_sgs per "step" or per RK "stage"
   std::string scheme = "central2";  // flow::make_convection_scheme
   double stability = 0.7;           // dt = stability / (RK4 Gershgorin rate), see run_diagnostics
   std::vector<int> stations = {98, 171};  // tU0/M after the initial 42
@@ -51,7 +52,8 @@ struct CbcResult {
   std::vector<CbcStation> stations;            // spec.stations
   std::vector<double> time_u0_over_m, energy;  // every step: 1/2 <u.u> [m^2/s^2]
   int steps = 0, spinup_steps = 0;
-  double wall_seconds = 0, step_seconds = 0, sgs_seconds = 0;  // sgs: inside the subgrid hook
+  double wall_seconds = 0;
+  double step_seconds = 0, sgs_seconds = 0;  // thread CPU time: steps, inside the subgrid hook
   std::int64_t nodes = 0;
 };
 

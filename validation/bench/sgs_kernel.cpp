@@ -1,0 +1,56 @@
+// Benchmark (not a test): cost of one pointwise subgrid kernel call (les/sgs_kernels.hpp) on
+// Gaussian velocity gradients (entries N(0, 100^2) 1/s), without the array loop or the flow
+// solver around it. For instruction counts, run it under callgrind and subtract a 0-repeat run:
+//   valgrind --tool=callgrind bench_sgs_kernel sigma 20000 10   (minus ... sigma 20000 0)
+//   bench_sgs_kernel [model = sigma|wale|smagorinsky] [gradients = 100000] [repeats = 10]
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <ctime>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "les/sgs_kernels.hpp"
+#include "les/sgs_model.hpp"
+
+namespace {
+double thread_cpu() {
+  timespec c;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c);
+  return static_cast<double>(c.tv_sec) + 1e-9 * static_cast<double>(c.tv_nsec);
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace valsalva::les;
+  const std::string model = argc > 1 ? argv[1] : "sigma";
+  const int n = argc > 2 ? std::atoi(argv[2]) : 100000;
+  const int repeats = argc > 3 ? std::atoi(argv[3]) : 10;
+  if (model != "sigma" && model != "wale" && model != "smagorinsky") {
+    fmt::print(stderr, "bench_sgs_kernel: unknown model '{}' (sigma, wale, smagorinsky)\n", model);
+    return 1;
+  }
+  std::mt19937_64 rng(1);
+  std::normal_distribution<double> normal(0.0, 100.0);
+  std::vector<Eigen::Matrix3d> grad(static_cast<std::size_t>(n));
+  for (auto& g : grad)
+    for (int i = 0; i < 9; ++i) g.data()[i] = normal(rng);
+  const double delta = 1e-3;
+  double sum = 0;                // printed, so that the calls cannot be optimised away
+  auto run = [&](auto kernel) {  // one loop per model: no dispatch inside
+    for (int r = 0; r < repeats; ++r)
+      for (const auto& g : grad) sum += kernel(g);
+  };
+  const double t0 = thread_cpu();
+  if (model == "sigma")
+    run([&](const Eigen::Matrix3d& g) { return sigma_nu(g, delta, default_c_sigma); });
+  else if (model == "wale")
+    run([&](const Eigen::Matrix3d& g) { return wale_nu(g, delta, default_c_wale); });
+  else
+    run([&](const Eigen::Matrix3d& g) { return smagorinsky_nu(g, delta, default_c_smagorinsky); });
+  const double calls = static_cast<double>(n) * repeats;
+  fmt::print("bench_sgs_kernel {}: {} calls, {:.1f} ns per call (thread CPU), checksum {:.17g}\n",
+             model, calls, calls > 0 ? 1e9 * (thread_cpu() - t0) / calls : 0.0, sum);
+  return 0;
+}

@@ -1,0 +1,84 @@
+// The Taylor-Green vortex at Re = 1600 (case C3.5 of the International Workshop on High-Order
+// CFD Methods: box (2 pi)^3, V0 = L = 1, nu = 1/1600, u = sin x cos y cos z,
+// v = -cos x sin y cos z, w = 0, p = (cos 2x + cos 2y)(cos 2z + 2)/16) on an n^3 periodic
+// hexahedral box with a subgrid model, and its dissipation rate -dE/dt against the 512^3
+// spectral reference (validation/refdata/tgv_re1600/spectral_Re1600_512.gdiag). Shared by the
+// tgv_les validation case, its CTest versions and bench_tgv_re1600.
+#pragma once
+
+#include <mpi.h>
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "flow/dual_metrics.hpp"
+#include "flow/local_mesh.hpp"
+#include "flow/mesh.hpp"
+#include "flow/projection_rk4.hpp"
+
+namespace valsalva::validation {
+
+// The periodic n^3 box of side 2 pi, its metrics, partition and Poisson weights: built once and
+// shared by the runs on one mesh (at 64^3 this set-up costs about as much as 30 steps).
+struct TgvBox {
+  TgvBox(int n, MPI_Comm comm);
+  int n;
+  flow::Mesh mesh;
+  flow::DualMetrics metrics;
+  flow::LocalMesh local;
+  std::vector<double> poisson_weights;
+};
+
+// The initial velocity and pressure above at every local node.
+flow::FlowState tgv_re1600_initial_state(const flow::LocalMesh& local);
+// Collective: mean kinetic energy sum V |u|^2 / 2 over owned nodes / (2 pi)^3.
+double tgv_mean_energy(const flow::LocalMesh& local, const flow::VectorField& u);
+
+struct TgvLesSpec {
+  std::string scheme = "central4";  // flow::make_convection_scheme
+  std::string model = "sigma";      // les::SubgridViscosity names; "none" = no model
+  double constant = 0;              // 0 = the model's default
+  std::string update = "step";      // les.update: nu_sgs per "step" or per RK "stage"
+  double cfl = 0.5;                 // dt = t_end / ceil(t_end / (cfl h / V0))
+  double t_end = 10;
+};
+
+struct TgvLesResult {
+  std::vector<double> time, energy;        // mean kinetic energy after every step (index 0: t = 0)
+  std::vector<double> max_nu_sgs_over_nu;  // after every step (index 0: 0)
+  int steps = 0;
+  double dt = 0;
+  double cpu_seconds = 0;  // summed over ranks
+  double wall_seconds = 0;
+  // Max over the steps of dt (rc/2.83 + rv/2.79) with nu + max nu_sgs (flow/run_diagnostics.hpp,
+  // derived for central2; central4's convective spectral radius is ~1.37x larger).
+  double max_stability_number = 0;
+  int poisson_iterations_max = 0;
+  double poisson_iterations_mean = 0;
+  // > 0: the run stopped at this time because the energy was no longer finite or exceeded its
+  // initial value (it can only decay); time and energy end there.
+  double blow_up_time = 0;
+};
+
+// Collective over box.local's communicator.
+TgvLesResult run_tgv_les(const TgvLesSpec& spec, const TgvBox& box);
+
+// Rows (t, E, -dE/dt) of the spectral reference file (comment lines start with '#').
+std::vector<std::array<double, 3>> read_tgv_reference(const std::filesystem::path& file);
+// Linear interpolation of column `column` at time t.
+double interpolate_tgv_reference(const std::vector<std::array<double, 3>>& ref, double t,
+                                 int column);
+
+// -dE/dt by central differences at the interior steps, compared with the reference.
+struct TgvDissipation {
+  std::vector<double> time, rate, reference;
+  double peak = 0, peak_time = 0;                      // largest -dE/dt and its time
+  double reference_peak = 0, reference_peak_time = 0;  // over the reference rows <= t_end
+  double max_error = 0;                                // max |rate - reference| / reference_peak
+};
+TgvDissipation tgv_dissipation(const TgvLesResult& r, const std::vector<std::array<double, 3>>& ref,
+                               double t_end);
+
+}  // namespace valsalva::validation
