@@ -76,24 +76,19 @@ void RunAnalysis::sample(const flow::FlowState& state, std::int64_t step) {
       statistics_[i].add(state.time, state.velocity, state.pressure);
   if (wall_shear_ && every(step, options_.wall_shear.every_steps)) wall_shear_->sample(state);
   bool any = false;
-  std::vector<PressureDrop> values;
+  for (const auto& d : drops_) any = any || every(step, d.options.every_steps);
+  if (!any) return;
+  // RegionMean is collective: every rank evaluates, rank 0 writes the row.
+  std::string row = fmt::format("{:.17g}", state.time);
   for (const auto& d : drops_) {
-    const bool due = every(step, d.options.every_steps);
-    any = any || due;
-    values.push_back(due ? PressureDrop{d.upstream(state.pressure), d.downstream(state.pressure)}
-                         : PressureDrop{});
-  }
-  if (any && drop_csv_.is_open()) {
-    drop_csv_ << fmt::format("{:.17g}", state.time);
-    for (std::size_t i = 0; i < drops_.size(); ++i) {
-      if (every(step, drops_[i].options.every_steps))
-        drop_csv_ << fmt::format(",{:.9e},{:.9e},{:.9e}", values[i].upstream, values[i].downstream,
-                                 values[i].mmhg());
-      else
-        drop_csv_ << ",,,";
+    if (!every(step, d.options.every_steps)) {
+      row += ",,,";
+      continue;
     }
-    drop_csv_ << '\n' << std::flush;
+    const PressureDrop p{d.upstream(state.pressure), d.downstream(state.pressure)};
+    row += fmt::format(",{:.9e},{:.9e},{:.9e}", p.upstream, p.downstream, p.mmhg());
   }
+  if (drop_csv_.is_open()) drop_csv_ << row << '\n' << std::flush;
 }
 
 std::vector<CheckpointArray> RunAnalysis::checkpoint_arrays() const {
