@@ -404,6 +404,16 @@ void BoundaryConditions::impose(VectorField& u, double t) {
     if (free_outflow(k)) u[nodes_[k]] += c * outlet_area_[k];
 }
 
+void BoundaryConditions::stabilize_backflow(const VectorField& u, VectorField& rhs) const {
+  if (!has_pressure_) return;
+  for (const auto& b : mesh_.boundary) {
+    const auto& P = patches_[b.patch];
+    if (P.spec < 0 || specs_[P.spec].type != BoundaryType::pressure_outlet) continue;
+    const double flux = u[b.node].dot(b.area);
+    if (flux < 0) rhs[b.node] += 0.5 * flux / mesh_.volume[b.node] * u[b.node];
+  }
+}
+
 std::vector<double> BoundaryConditions::patch_fluxes(const VectorField& u) const {
   std::vector<double> flux(patches_.size(), 0.0);
   for (const auto& b : mesh_.boundary)

@@ -43,6 +43,7 @@ void ProjectionRK4::momentum_rhs(const VectorField& u, VectorField& rhs) {
     rhs.assign(mesh_.num_local(), Eigen::Vector3d::Zero());
   }
   for (int i = 0; i < mesh_.num_local(); ++i) rhs[i] -= conv_[i];
+  if (options_.boundary) options_.boundary->stabilize_backflow(u, rhs);
 }
 
 void ProjectionRK4::set_pressure_increment(const ScalarField& dp) {
