@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "flow/boundary_conditions.hpp"
+#include "flow/womersley.hpp"
 
 namespace valsalva::validation {
 
@@ -42,13 +43,16 @@ struct PhaseSample {
 };
 
 struct WomersleyResult {
-  double radius = 0, length = 0, h = 0, nu = 0, u_peak = 0, dt = 0, wall = 0;
+  flow::Womersley exact;  // the exact solution of the run
+  double radius = 0, length = 0, h = 0, u_peak = 0, dt = 0, wall = 0;
   long nodes = 0;
   int steps = 0;
   std::vector<PhaseSample> phases;
   double max_error = 0, l2_error = 0, transverse = 0;  // worst over the phases
   // LES: nu_sgs / nu over owned nodes and all RK stages (max, and mean per node-stage).
   double max_nu_ratio = 0, mean_nu_ratio = 0;
+  double first_stage_nu_ratio = 0;  // max at the first stage (the exact, parallel initial field)
+  double interior_nu_ratio = 0;     // max over the middle third |z - L/2| <= L/6
   // Final velocity (3 per node) and pressure by dual node (global order, on every rank).
   std::vector<double> final_velocity, final_pressure;
   double max_divergence = 0;
