@@ -414,6 +414,21 @@ void BoundaryConditions::stabilize_backflow(const VectorField& u, VectorField& r
   }
 }
 
+void BoundaryConditions::drop_outlet_viscous_flux(const TensorField& grad, double nu,
+                                                  const ScalarField& nu_sgs,
+                                                  VectorField& rhs) const {
+  if (!has_pressure_) return;
+  for (const auto& b : mesh_.boundary) {
+    const auto& P = patches_[b.patch];
+    if (P.spec < 0 || specs_[P.spec].type != BoundaryType::pressure_outlet) continue;
+    const auto& g = grad[b.node];
+    const Eigen::Vector3d flux =
+        nu_sgs.empty() ? Eigen::Vector3d(nu * (g * b.area))
+                       : Eigen::Vector3d((nu + nu_sgs[b.node]) * ((g + g.transpose()) * b.area));
+    rhs[b.node] -= flux / mesh_.volume[b.node];
+  }
+}
+
 std::vector<double> BoundaryConditions::patch_fluxes(const VectorField& u) const {
   std::vector<double> flux(patches_.size(), 0.0);
   for (const auto& b : mesh_.boundary)

@@ -93,6 +93,14 @@ class BoundaryConditions {
   // the flow leaves. Without it a Womersley pipe (Wo 17, near-wall reversal at the outlet)
   // blew up within one period. `u`, `rhs`: owned and ghost nodes.
   void stabilize_backflow(const VectorField& u, VectorField& rhs) const;
+  // Do-nothing (traction-free) viscous flux of pressure outlets: the viscous operators add the
+  // boundary flux nu (grad u) . A of every boundary face from the nodal gradient, an
+  // extrapolation that feeds the outlet node from its own value; at a pressure outlet the
+  // natural condition nu du/dn = (p - p_out) n / rho = 0 sets that flux to zero, so it is taken
+  // out again: rhs_j -= (nu + nu_sgs_j) F_j . A_j / V_j, F = grad u (Laplacian form) or
+  // grad u + grad u^T (stress form, with LES). `nu_sgs` empty = laminar.
+  void drop_outlet_viscous_flux(const TensorField& grad, double nu, const ScalarField& nu_sgs,
+                                VectorField& rhs) const;
 
   // Collective. Outward flux sum u . A through every patch of the mesh (index = patch index
   // of LocalMesh::patch_names), m^3/s; periodic patches get 0.

@@ -294,3 +294,32 @@ TEST_CASE("pressure-outlet backflow stabilisation removes the inflowing kinetic 
     }
   }
 }
+
+TEST_CASE("pressure outlets take out the viscous boundary flux (do-nothing, traction free)") {
+  Channel c(8, 4, 2.0, 1.0);
+  const flow::BoundaryConditions bc(
+      c.local, channel_conditions({}, flow::BoundaryType::pressure_outlet), 0.01);
+  // grad u = diag(1, 0, 0) (u = (x, 0, 0)): the dropped flux is nu (grad u) . A = nu A_x e_x per
+  // outlet face, summed over the outlet nu H depth e_x (twice that in the stress form); no other
+  // patch is touched.
+  const flow::TensorField grad(c.local.num_local(), Eigen::Vector3d(1, 0, 0).asDiagonal());
+  const double nu = 0.01, area = 1.0 * c.depth;
+  for (bool stress : {false, true}) {
+    CAPTURE(stress);
+    const flow::ScalarField nu_sgs =
+        stress ? flow::ScalarField(c.local.num_local(), 0.0) : flow::ScalarField{};
+    flow::VectorField rhs(c.local.num_local(), Eigen::Vector3d::Zero());
+    bc.drop_outlet_viscous_flux(grad, nu, nu_sgs, rhs);
+    Eigen::Vector3d total = Eigen::Vector3d::Zero();
+    bool only_outlet = true;
+    for (int j = 0; j < c.local.num_owned; ++j) {
+      total += c.local.volume[j] * rhs[j];
+      if (rhs[j].norm() > 0 && std::abs(c.local.position[j].x() - 2.0) > 1e-12) only_outlet = false;
+    }
+    total = Eigen::Vector3d(c.local.comm.sum(total.x()), c.local.comm.sum(total.y()),
+                            c.local.comm.sum(total.z()));
+    CHECK(only_outlet);
+    CHECK(total.x() == doctest::Approx(-(stress ? 2 : 1) * nu * area).epsilon(1e-12));
+    CHECK(std::abs(total.y()) + std::abs(total.z()) < 1e-15);
+  }
+}
