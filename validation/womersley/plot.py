@@ -22,8 +22,12 @@ for row in csv.DictReader(open(out / "curves.csv")):
 levels = {r["case"]: r for r in csv.DictReader(open(out / "levels.csv"))}
 
 cases = [c for c in points if levels.get(c, {}).get("les", "none") == "none"]
-fig, axes = plt.subplots(1, len(cases), figsize=(5.2 * len(cases), 4.6), squeeze=False)
-for ax, case in zip(axes[0], cases):
+columns = min(3, len(cases))
+rows = (len(cases) + columns - 1) // columns
+fig, axes = plt.subplots(rows, columns, figsize=(5.2 * columns, 4.6 * rows), squeeze=False)
+for ax in axes.flat[len(cases):]:
+    ax.axis("off")
+for ax, case in zip(axes.flat, cases):
     colours = plt.cm.viridis([i / 8 for i in range(8)])
     for colour, t in zip(colours, sorted(points[case])):
         rows = points[case][t]
