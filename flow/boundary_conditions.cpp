@@ -404,6 +404,31 @@ void BoundaryConditions::impose(VectorField& u, double t) {
     if (free_outflow(k)) u[nodes_[k]] += c * outlet_area_[k];
 }
 
+void BoundaryConditions::stabilize_backflow(const VectorField& u, VectorField& rhs) const {
+  if (!has_pressure_) return;
+  for (const auto& b : mesh_.boundary) {
+    const auto& P = patches_[b.patch];
+    if (P.spec < 0 || specs_[P.spec].type != BoundaryType::pressure_outlet) continue;
+    const double flux = u[b.node].dot(b.area);
+    if (flux < 0) rhs[b.node] += 0.5 * flux / mesh_.volume[b.node] * u[b.node];
+  }
+}
+
+void BoundaryConditions::drop_outlet_viscous_flux(const TensorField& grad, double nu,
+                                                  const ScalarField& nu_sgs,
+                                                  VectorField& rhs) const {
+  if (!has_pressure_) return;
+  for (const auto& b : mesh_.boundary) {
+    const auto& P = patches_[b.patch];
+    if (P.spec < 0 || specs_[P.spec].type != BoundaryType::pressure_outlet) continue;
+    const auto& g = grad[b.node];
+    const Eigen::Vector3d flux =
+        nu_sgs.empty() ? Eigen::Vector3d(nu * (g * b.area))
+                       : Eigen::Vector3d((nu + nu_sgs[b.node]) * ((g + g.transpose()) * b.area));
+    rhs[b.node] -= flux / mesh_.volume[b.node];
+  }
+}
+
 std::vector<double> BoundaryConditions::patch_fluxes(const VectorField& u) const {
   std::vector<double> flux(patches_.size(), 0.0);
   for (const auto& b : mesh_.boundary)

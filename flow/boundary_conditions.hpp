@@ -9,7 +9,8 @@
 //                      -sum_j u_j . A_j equals Q(t) to round-off
 //   convective_outlet  du/dt + U_c du/dn = 0, U_c = inflow / outflow area unless given
 //   pressure_outlet    p = p_out (Dirichlet rows dp = 0 in the Poisson matrix); u from the
-//                      momentum equation (free)
+//                      momentum equation (free), with backflow stabilisation where u . n < 0
+//                      (stabilize_backflow)
 // Role exchange (pulse-duplicator inflow, see ../shared/design/architecture.md): an inlet with a
 // partner (swap_with, a convective outlet) imposes Q(t) while Q >= 0; while Q < 0 the partner
 // imposes |Q| inward with a flat profile and the inlet becomes a convective outlet.
@@ -83,6 +84,23 @@ class BoundaryConditions {
   // Collective. Dirichlet values at time t, held outlet values, slip, and the mass correction
   // (owned and ghost nodes).
   void impose(VectorField& u, double t);
+
+  // Backflow stabilisation of pressure outlets (Bazilevs, Gohean, Hughes, Moser & Zhang, Comput.
+  // Methods Appl. Mech. Engrg. 198, 3534-3550, 2009, eq. 20 with beta = 1/2; Moghadam et al.,
+  // Comput. Mech. 48, 277-291, 2011): rhs_j += 1/2 min(u_j . A_j, 0) u_j / V_j on the outlet
+  // faces. The centred convective term's boundary flux (u . A) u brings kinetic energy
+  // 1/2 |u . A| |u|^2 in where the flow re-enters; this removes exactly that, and nothing where
+  // the flow leaves. Without it a Womersley pipe (Wo 17, near-wall reversal at the outlet)
+  // blew up within one period. `u`, `rhs`: owned and ghost nodes.
+  void stabilize_backflow(const VectorField& u, VectorField& rhs) const;
+  // Do-nothing (traction-free) viscous flux of pressure outlets: the viscous operators add the
+  // boundary flux nu (grad u) . A of every boundary face from the nodal gradient, an
+  // extrapolation that feeds the outlet node from its own value; at a pressure outlet the
+  // natural condition nu du/dn = (p - p_out) n / rho = 0 sets that flux to zero, so it is taken
+  // out again: rhs_j -= (nu + nu_sgs_j) F_j . A_j / V_j, F = grad u (Laplacian form) or
+  // grad u + grad u^T (stress form, with LES). `nu_sgs` empty = laminar.
+  void drop_outlet_viscous_flux(const TensorField& grad, double nu, const ScalarField& nu_sgs,
+                                VectorField& rhs) const;
 
   // Collective. Outward flux sum u . A through every patch of the mesh (index = patch index
   // of LocalMesh::patch_names), m^3/s; periodic patches get 0.

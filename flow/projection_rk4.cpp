@@ -43,6 +43,11 @@ void ProjectionRK4::momentum_rhs(const VectorField& u, VectorField& rhs, int sta
     rhs.assign(mesh_.num_local(), Eigen::Vector3d::Zero());
   }
   for (int i = 0; i < mesh_.num_local(); ++i) rhs[i] -= conv_[i];
+  if (options_.boundary) {
+    options_.boundary->stabilize_backflow(u, rhs);
+    if (options_.viscosity > 0 || options_.subgrid_viscosity)
+      options_.boundary->drop_outlet_viscous_flux(grad_u_, options_.viscosity, nu_sgs_, rhs);
+  }
 }
 
 void ProjectionRK4::set_pressure_increment(const ScalarField& dp) {

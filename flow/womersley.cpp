@@ -94,4 +94,15 @@ double Womersley::velocity(double r, double t) const {
   return u;
 }
 
+double Womersley::pressure_gradient(double t) const {
+  const double area = std::numbers::pi * radius * radius;
+  double g = 8 * nu * mean / (area * radius * radius);
+  if (harmonic != C(0) && omega > 0) {
+    const C lambda = std::polar(womersley_number(), 0.75 * std::numbers::pi);
+    const C factor = 1.0 - 2.0 * bessel_j1(lambda) / (lambda * bessel_j0(lambda));
+    g += (C(0, omega) * harmonic / (area * factor) * std::polar(1.0, omega * t)).real();
+  }
+  return g;
+}
+
 }  // namespace valsalva::flow

@@ -32,6 +32,10 @@ struct Womersley {
   double womersley_number() const;
   // Axial velocity at distance r from the axis (r <= radius), m/s.
   double velocity(double r, double t) const;
+  // The driving kinematic pressure gradient G(t) = -(1/rho) dp/dz, m/s^2, with which u solves
+  // du/dt = G + nu (u'' + u'/r): G = 8 nu Q0 / (pi R^4) + Re[G_h e^{i w t}],
+  // G_h = i w Qh / (pi R^2 (1 - 2 J1(L) / (L J0(L)))) (the flux of the oscillating profile).
+  double pressure_gradient(double t) const;
 };
 
 }  // namespace valsalva::flow

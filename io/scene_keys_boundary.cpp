@@ -23,7 +23,7 @@ void declare_boundary_keys(Schema& s) {
       .doc(
           "wall: no-slip (u = velocity); slip: zero normal velocity; inlet: flow rate Q(t) with a "
           "profile; convective_outlet: du/dt + U_c du/dn = 0, outflow = inflow; pressure_outlet: "
-          "fixed pressure");
+          "fixed pressure, backflow-stabilised where the flow re-enters");
   s.real3(b + ".velocity")
       .def(std::array{0.0, 0.0, 0.0})
       .unit_of("m/s")

@@ -19,6 +19,7 @@ Case cavity_case();
 Case womersley_statistics_case();
 Case poiseuille_wss_case();
 Case tgv_les_case();
+Case womersley_case();
 
 const std::vector<Case>& all_cases() {
   // clang-format off
@@ -37,6 +38,7 @@ const std::vector<Case>& all_cases() {
       womersley_statistics_case(),
       poiseuille_wss_case(),
       tgv_les_case(),
+      womersley_case(),
   };
   // clang-format on
   return cases;

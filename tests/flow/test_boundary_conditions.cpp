@@ -2,7 +2,8 @@
 // xmax, periodic in z): the steady plane Poiseuille solution from a flat inlet, the exact inlet
 // flux Q(t) and global mass conservation to round-off with a time-varying inflow, the role
 // exchange of inlet and outlet while Q < 0, the errors for missing and unknown patches, and the
-// time order of velocity and pressure with a time-dependent inflow.
+// time order of velocity and pressure with a time-dependent inflow, and the backflow stabilisation
+// of pressure outlets.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -264,4 +265,61 @@ TEST_CASE("plane Poiseuille inlet: parabola across the channel with the exact di
                                                 0.01),
                        doctest::Contains("inlet 'xmin': the plane_poiseuille profile needs"),
                        std::invalid_argument);
+}
+
+TEST_CASE("pressure-outlet backflow stabilisation removes the inflowing kinetic energy only") {
+  Channel c(8, 4, 2.0, 1.0);
+  const flow::BoundaryConditions bc(
+      c.local, channel_conditions({}, flow::BoundaryType::pressure_outlet), 0.01);
+  const int outlet = c.patch("xmax");
+  for (double sign : {-1.0, 1.0}) {
+    CAPTURE(sign);
+    // A uniform stream u = sign (1, 0.5, 0): inflow through the outlet for sign < 0.
+    const flow::VectorField u(c.local.num_local(), sign * Eigen::Vector3d(1, 0.5, 0));
+    flow::VectorField rhs(c.local.num_local(), Eigen::Vector3d::Zero());
+    bc.stabilize_backflow(u, rhs);
+    // Kinetic-energy rate sum V u . rhs against the inflow 1/2 sum |u . A| |u|^2 (owned nodes).
+    double power = 0, inflow = 0;
+    for (int j = 0; j < c.local.num_owned; ++j) power += c.local.volume[j] * u[j].dot(rhs[j]);
+    for (const auto& b : c.local.boundary)
+      if (b.node < c.local.num_owned && b.patch == outlet)
+        inflow += 0.5 * std::max(0.0, -u[b.node].dot(b.area)) * u[b.node].squaredNorm();
+    power = c.local.comm.sum(power), inflow = c.local.comm.sum(inflow);
+    // Outflow: untouched (exactly zero); backflow: the power removed is the inflow of kinetic
+    // energy, to round-off.
+    if (sign > 0) CHECK(power == 0.0);
+    if (sign < 0) {
+      CHECK(inflow == doctest::Approx(0.5 * c.depth * 1.25).epsilon(1e-12));  // area H x depth
+      CHECK(std::abs(power + inflow) < 1e-12 * inflow);
+    }
+  }
+}
+
+TEST_CASE("pressure outlets take out the viscous boundary flux (do-nothing, traction free)") {
+  Channel c(8, 4, 2.0, 1.0);
+  const flow::BoundaryConditions bc(
+      c.local, channel_conditions({}, flow::BoundaryType::pressure_outlet), 0.01);
+  // grad u = diag(1, 0, 0) (u = (x, 0, 0)): the dropped flux is nu (grad u) . A = nu A_x e_x per
+  // outlet face, summed over the outlet nu H depth e_x (twice that in the stress form); no other
+  // patch is touched.
+  const flow::TensorField grad(c.local.num_local(), Eigen::Vector3d(1, 0, 0).asDiagonal());
+  const double nu = 0.01, area = 1.0 * c.depth;
+  for (bool stress : {false, true}) {
+    CAPTURE(stress);
+    const flow::ScalarField nu_sgs =
+        stress ? flow::ScalarField(c.local.num_local(), 0.0) : flow::ScalarField{};
+    flow::VectorField rhs(c.local.num_local(), Eigen::Vector3d::Zero());
+    bc.drop_outlet_viscous_flux(grad, nu, nu_sgs, rhs);
+    Eigen::Vector3d total = Eigen::Vector3d::Zero();
+    bool only_outlet = true;
+    for (int j = 0; j < c.local.num_owned; ++j) {
+      total += c.local.volume[j] * rhs[j];
+      if (rhs[j].norm() > 0 && std::abs(c.local.position[j].x() - 2.0) > 1e-12) only_outlet = false;
+    }
+    total = Eigen::Vector3d(c.local.comm.sum(total.x()), c.local.comm.sum(total.y()),
+                            c.local.comm.sum(total.z()));
+    CHECK(only_outlet);
+    CHECK(total.x() == doctest::Approx(-(stress ? 2 : 1) * nu * area).epsilon(1e-12));
+    CHECK(std::abs(total.y()) + std::abs(total.z()) < 1e-15);
+  }
 }

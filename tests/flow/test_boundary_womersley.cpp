@@ -64,6 +64,35 @@ TEST_CASE("Womersley profile: flux equals Q(t), no slip, Poiseuille at low Wo") 
         doctest::Approx(2e-4 / (std::numbers::pi * R * R) * 0.75).epsilon(1e-6));
 }
 
+TEST_CASE("Womersley pressure gradient: the profile solves du/dt = G + nu (u'' + u'/r)") {
+  // Central differences (step 1e-4 of R and of the period: truncation ~1e-8 relative, round-off
+  // ~1e-16 / 1e-8 = 1e-8) at interior radii: the residual is 1e-5 of the terms' size at most;
+  // a wrong G_h (a missing factor i w or the wrong flux factor) is off by O(1).
+  for (double wo : {4.0, 17.0}) {
+    const double R = 0.01, period = 1.0;
+    const double nu = R * R * 2 * std::numbers::pi / period / (wo * wo);
+    const auto w = flow::Womersley::from_sine(R, nu, 1e-5, 2e-5, period, 0.4);
+    const double hr = 1e-4 * R, ht = 1e-4 * period;
+    for (double s : {0.2, 0.6, 0.95})
+      for (double t : {0.1, 0.55}) {
+        CAPTURE(wo);
+        CAPTURE(s);
+        CAPTURE(t);
+        const double r = s * R;
+        const double dudt = (w.velocity(r, t + ht) - w.velocity(r, t - ht)) / (2 * ht);
+        const double up = w.velocity(r + hr, t), u0 = w.velocity(r, t), um = w.velocity(r - hr, t);
+        const double lap = (up - 2 * u0 + um) / (hr * hr) + (up - um) / (2 * hr) / r;
+        const double g = w.pressure_gradient(t);
+        const double scale = std::abs(dudt) + std::abs(g) + std::abs(nu * lap);
+        CHECK(std::abs(dudt - g - nu * lap) < 1e-5 * scale);
+      }
+  }
+  // Steady limit: Poiseuille's G = 8 nu Q / (pi R^4).
+  const auto steady = flow::Womersley::from_sine(0.01, 1e-6, 1e-5, 0.0, 1.0, 0.0);
+  CHECK(steady.pressure_gradient(0.3) ==
+        doctest::Approx(8e-6 * 1e-5 / (std::numbers::pi * 1e-8)).epsilon(1e-12));
+}
+
 TEST_CASE("CSV waveform: periodic interpolation and errors naming file and line") {
   const auto dir = std::filesystem::temp_directory_path();
   const auto good = dir / "valsalva_waveform_good.csv";

@@ -1,0 +1,206 @@
+// A Womersley pipe run; see womersley_run.hpp.
+#include "validation/womersley/womersley_run.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <stdexcept>
+
+#include "flow/dual_metrics.hpp"
+#include "flow/local_mesh.hpp"
+#include "flow/poisson_weights.hpp"
+#include "flow/projection_rk4.hpp"
+#include "flow/run_diagnostics.hpp"
+#include "flow/womersley.hpp"
+#include "io/pipe_generator.hpp"
+#include "les/subgrid_viscosity.hpp"
+
+namespace valsalva::validation {
+
+namespace {
+
+constexpr double kDensity = 1100, kViscosity = 3.6e-3, kPeriod = 1.0;
+
+// Owned values of every rank, concatenated on rank 0 (empty elsewhere).
+std::vector<double> gather_to_root(const std::vector<double>& mine, MPI_Comm comm) {
+  int size = 0, rank = 0;
+  MPI_Comm_size(comm, &size);
+  MPI_Comm_rank(comm, &rank);
+  const int n = static_cast<int>(mine.size());
+  std::vector<int> counts(size), offsets(size, 0);
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+  for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<double> all(rank == 0 ? offsets.back() + counts.back() : 0);
+  MPI_Gatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0,
+              comm);
+  return all;
+}
+
+flow::BoundarySpec condition(const std::string& patch, flow::BoundaryType type) {
+  flow::BoundarySpec s;
+  s.patch = patch;
+  s.type = type;
+  return s;
+}
+
+}  // namespace
+
+WomersleyResult run_womersley(const WomersleySetup& setup, MPI_Comm comm) {
+  const double t0 = MPI_Wtime();
+  WomersleyResult res;
+  const double nu = kViscosity / kDensity, omega = 2 * std::numbers::pi / kPeriod;
+  const double R = setup.womersley * std::sqrt(nu / omega), D = 2 * R;
+  const double h = D / setup.nodes_per_diameter, L = setup.length_in_diameters * D;
+  const double q0 = 5 * D / kPeriod * std::numbers::pi * R * R;
+  res.radius = R, res.length = L, res.h = h;
+
+  const auto mesh = io::generate_pipe_mesh(R, L, h);
+  const auto metrics = flow::compute_dual_metrics(mesh);
+  const auto local = flow::distribute(mesh, metrics, comm);
+  res.nodes = local.global_nodes;
+
+  auto inlet = condition("inlet", flow::BoundaryType::inlet);
+  inlet.profile = flow::InletProfile::womersley;
+  inlet.flow_rate.kind = flow::Waveform::Kind::sine;
+  inlet.flow_rate.mean = q0;
+  inlet.flow_rate.amplitude = q0;
+  inlet.flow_rate.period = kPeriod;
+  auto bc = std::make_shared<flow::BoundaryConditions>(
+      local,
+      std::vector<flow::BoundarySpec>{inlet, condition("wall", flow::BoundaryType::wall),
+                                      condition("outlet", setup.outlet)},
+      nu);
+  const auto exact = flow::Womersley::from_sine(R, nu, q0, q0, kPeriod, 0.0);
+  res.exact = exact;
+
+  flow::ProjectionOptions options;
+  options.density = kDensity;
+  options.viscosity = nu;
+  options.poisson.tolerance = setup.poisson_tolerance;
+  options.boundary = bc;
+  if (bc->has_pressure_outlet()) options.poisson.dirichlet = bc->pressure_dirichlet();
+  // LES: the model, with running max and sum of nu_sgs / nu over owned nodes and stages.
+  std::unique_ptr<les::SubgridViscosity> model;
+  double nu_max = 0, nu_sum = 0, nu_count = 0, nu_first = -1, nu_interior = 0;
+  if (setup.les_model != "none") {
+    model = std::make_unique<les::SubgridViscosity>(setup.les_model, std::nullopt, local.h);
+    // Every stage (les.update = "stage"): the largest nu_sgs the model produces anywhere.
+    options.subgrid_viscosity = [&](int, const flow::TensorField& g, flow::ScalarField& nu_sgs) {
+      (*model)(g, nu_sgs);
+      for (int i = 0; i < local.num_owned; ++i) {
+        nu_max = std::max(nu_max, nu_sgs[i] / nu);
+        nu_sum += nu_sgs[i] / nu;
+        if (std::abs(local.position[i].z() - L / 2) <= L / 6)
+          nu_interior = std::max(nu_interior, nu_sgs[i] / nu);
+      }
+      nu_count += local.num_owned;
+      if (nu_first < 0) nu_first = nu_max;
+    };
+  }
+  flow::ProjectionRK4 solver(local, options, flow::poisson_weights(mesh, metrics, local));
+
+  // Exact initial state: u(r, 0) e_z and p = -rho G(0) (z - L), zero at the outlet.
+  auto radius_of = [&](const Eigen::Vector3d& x) { return std::min(std::hypot(x.x(), x.y()), R); };
+  flow::FlowState state;
+  const int n = local.num_local();
+  state.velocity.assign(n, Eigen::Vector3d::Zero());
+  state.pressure.assign(n, 0.0);
+  for (int j = 0; j < n; ++j) {
+    const auto& x = local.position[j];
+    state.velocity[j].z() = exact.velocity(radius_of(x), 0.0);
+    state.pressure[j] = -kDensity * exact.pressure_gradient(0.0) * (x.z() - L);
+  }
+  bc->impose_pressure(state.pressure);
+  bc->hold_outlets(state.velocity);
+  bc->impose(state.velocity, 0.0);
+
+  for (int k = 0; k < 1000; ++k)
+    res.u_peak = std::max(res.u_peak, exact.velocity(0.0, kPeriod * k / 1000));
+  const double interval = kPeriod / setup.phases;
+  const int per_phase = static_cast<int>(std::ceil(interval / (setup.cfl * h / res.u_peak)));
+  const double dt = interval / per_phase;
+  res.dt = dt;
+
+  const auto weights = flow::laplacian_weights(local);
+  std::vector<double> scratch;
+  auto sample = [&](double t) {
+    PhaseSample s;
+    s.time = t;
+    double e2 = 0, vol = 0;
+    std::vector<double> mine;
+    for (int j = 0; j < local.num_owned; ++j) {
+      const auto& x = local.position[j];
+      if (std::abs(x.z() - L / 2) > h / 2) continue;
+      const double r = radius_of(x), ue = exact.velocity(r, t);
+      const auto& u = state.velocity[j];
+      s.max_error = std::max(s.max_error, std::abs(u.z() - ue));
+      s.transverse = std::max(s.transverse, std::hypot(u.x(), u.y()));
+      e2 += local.volume[j] * (u.z() - ue) * (u.z() - ue);
+      vol += local.volume[j];
+      mine.insert(mine.end(), {x.x(), x.y(), r, u.z(), ue});
+    }
+    s.max_error = local.comm.max(s.max_error) / res.u_peak;
+    s.transverse = local.comm.max(s.transverse) / res.u_peak;
+    s.l2_error = std::sqrt(local.comm.sum(e2) / local.comm.sum(vol)) / res.u_peak;
+    const auto all = gather_to_root(mine, comm);
+    for (std::size_t i = 0; i + 4 < all.size(); i += 5) {
+      s.x.push_back(all[i]), s.y.push_back(all[i + 1]), s.r.push_back(all[i + 2]);
+      s.u.push_back(all[i + 3]), s.exact.push_back(all[i + 4]);
+    }
+    // The fixed step must stay inside the RK4 stability region (flow/run_diagnostics.hpp).
+    const double limit =
+        1.0 / flow::stability_rates(local, weights, nu, state.velocity, scratch).stability;
+    if (dt > limit)
+      throw std::runtime_error(fmt::format(
+          "womersley: dt {:.4g} s beyond the RK4 stability limit {:.4g} s at t = {:.4g} s", dt,
+          limit, t));
+    return s;
+  };
+
+  const int total = per_phase * setup.phases * (setup.sample_period + 1);
+  const int first_sample = per_phase * setup.phases * setup.sample_period;
+  for (int step = 1; step <= total; ++step) {
+    if (setup.max_steps > 0 && step > setup.max_steps) break;
+    const auto report = solver.step(state, dt);
+    res.max_divergence = std::max(res.max_divergence, report.max_divergence);
+    // |div u| stays below u_peak / h (~300 1/s at D/20) in a sane run; 1e6 is a blow-up.
+    if (!std::isfinite(report.max_divergence) || report.max_divergence > 1e6)
+      throw std::runtime_error(
+          fmt::format("womersley: the run blew up at step {} (t = {:.4g} s, "
+                      "max |div u| {:.3g} 1/s)",
+                      step, state.time, report.max_divergence));
+    ++res.steps;
+    if (setup.max_steps == 0 && step > first_sample && (step - first_sample) % per_phase == 0)
+      res.phases.push_back(sample(state.time));
+  }
+  for (const auto& s : res.phases) {
+    res.max_error = std::max(res.max_error, s.max_error);
+    res.l2_error = std::max(res.l2_error, s.l2_error);
+    res.transverse = std::max(res.transverse, s.transverse);
+  }
+  if (model) {
+    res.max_nu_ratio = local.comm.max(nu_max);
+    res.mean_nu_ratio = local.comm.sum(nu_sum) / std::max(1.0, local.comm.sum(nu_count));
+    res.first_stage_nu_ratio = local.comm.max(nu_first);
+    res.interior_nu_ratio = local.comm.max(nu_interior);
+  }
+  // Final fields by dual node, on every rank (owned values summed over the ranks).
+  const auto nodes = static_cast<std::size_t>(metrics.num_nodes());
+  res.final_velocity.assign(3 * nodes, 0.0);
+  res.final_pressure.assign(nodes, 0.0);
+  for (int j = 0; j < local.num_owned; ++j) {
+    res.final_pressure[local.dual_node[j]] = state.pressure[j];
+    for (int c = 0; c < 3; ++c)
+      res.final_velocity[3 * local.dual_node[j] + c] = state.velocity[j][c];
+  }
+  for (auto* field : {&res.final_velocity, &res.final_pressure})
+    MPI_Allreduce(MPI_IN_PLACE, field->data(), static_cast<int>(field->size()), MPI_DOUBLE, MPI_SUM,
+                  comm);
+  res.wall = local.comm.max(MPI_Wtime() - t0);
+  return res;
+}
+
+}  // namespace valsalva::validation

@@ -1,0 +1,64 @@
+// One Womersley pipe run (shared by the validation case and the tests): a rigid straight pipe
+// (Gmsh tetrahedra, io/pipe_generator.hpp) with a Womersley-profile sine inflow
+// Q(t) = Q0 (1 + sin(2 pi t / T)), no-slip wall and an outlet, started from the exact solution
+// (flow/womersley.hpp; velocity and the linear pressure of G(0)) so that the viscous transient
+// of a start from rest, R^2 / (14.7 nu) = 3.1 s at Wo = 17, does not hide the discretisation
+// error. Fluid and period of the reference experiment (rho 1100, mu 3.6e-3, T = 1 s); the radius
+// gives the Womersley number exactly, R = Wo sqrt(nu T / (2 pi)), and the mean velocity is
+// U0 = 5 D / T (3.48 L/min through D = 24.5 mm at Wo = 17), so every Wo takes the same number
+// of steps per period at the same nodes per diameter.
+// Sampled: at `phases` equally spaced times of the period `sample_period` (0-based), the nodes
+// of the cross-section slab |z - L/2| <= h/2 against u_exact(r, t) e_z.
+#pragma once
+
+#include <mpi.h>
+
+#include <string>
+#include <vector>
+
+#include "flow/boundary_conditions.hpp"
+#include "flow/womersley.hpp"
+
+namespace valsalva::validation {
+
+struct WomersleySetup {
+  double womersley = 17;
+  double nodes_per_diameter = 20;  // mesh size D / nodes_per_diameter
+  double length_in_diameters = 2;
+  flow::BoundaryType outlet = flow::BoundaryType::pressure_outlet;
+  std::string les_model = "none";  // none | sigma | wale | smagorinsky (default constants)
+  double cfl = 0.4;                // dt ~ cfl h / u_peak, a whole number of steps per phase
+  int phases = 8;
+  int sample_period = 3;  // 3 = the 4th period
+  double poisson_tolerance = 1e-10;
+  int max_steps = 0;  // > 0: stop after that many steps (no sampling; rank tests)
+};
+
+struct PhaseSample {
+  double time = 0;
+  double max_error = 0;   // max |u_z - u_exact| / u_peak over the slab
+  double l2_error = 0;    // volume-weighted RMS of u_z - u_exact over the slab / u_peak
+  double transverse = 0;  // max |u_x, u_y| / u_peak over the slab
+  std::vector<double> x, y, r, u, exact;  // slab nodes (owned, gathered on rank 0)
+};
+
+struct WomersleyResult {
+  flow::Womersley exact;  // the exact solution of the run
+  double radius = 0, length = 0, h = 0, u_peak = 0, dt = 0, wall = 0;
+  long nodes = 0;
+  int steps = 0;
+  std::vector<PhaseSample> phases;
+  double max_error = 0, l2_error = 0, transverse = 0;  // worst over the phases
+  // LES: nu_sgs / nu over owned nodes and all RK stages (max, and mean per node-stage).
+  double max_nu_ratio = 0, mean_nu_ratio = 0;
+  double first_stage_nu_ratio = 0;  // max at the first stage (the exact, parallel initial field)
+  double interior_nu_ratio = 0;     // max over the middle third |z - L/2| <= L/6
+  // Final velocity (3 per node) and pressure by dual node (global order, on every rank).
+  std::vector<double> final_velocity, final_pressure;
+  double max_divergence = 0;
+};
+
+// Collective over `comm`.
+WomersleyResult run_womersley(const WomersleySetup& setup, MPI_Comm comm);
+
+}  // namespace valsalva::validation
