@@ -235,7 +235,7 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
     if (e.key().empty()) throw;
     throw std::runtime_error(scene.location(e.key()).str() + ": " + e.what());
   }
-  if (analysis) analysis->finish(mesh, metrics);
+  if (analysis) analysis->finish();
   if (summary.stopped) {
     if (rank == 0)
       fmt::print(

@@ -31,6 +31,7 @@ struct StatisticsOptions {
   enum class Region { all, plane, box };
   PhaseStatisticsOptions phase;
   int every_steps = 1;
+  double write_interval = 0;  // s; > 0: also write the files every this much time (from start)
   Region region = Region::all;
   Eigen::Vector3d a{0, 0, 0}, b{0, 0, 0};  // plane: point, normal; box: lo, hi
   double half_thickness = 0;

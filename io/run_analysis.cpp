@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace valsalva::io {
@@ -29,7 +30,11 @@ bool every(std::int64_t step, int n) {
 RunAnalysis::RunAnalysis(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
                          const flow::LocalMesh& local, AnalysisOptions options, double density,
                          double dynamic_viscosity, std::filesystem::path run_dir, bool append)
-    : local_(&local), options_(std::move(options)), dir_(std::move(run_dir)) {
+    : mesh_(&mesh),
+      metrics_(&metrics),
+      local_(&local),
+      options_(std::move(options)),
+      dir_(std::move(run_dir)) {
   const bool root = local.comm.root();
   if (!options_.probes.points.empty()) {
     probes_ = std::make_unique<Probes>(mesh, metrics, local, options_.probes.points);
@@ -45,6 +50,7 @@ RunAnalysis::RunAnalysis(const flow::Mesh& mesh, const flow::DualMetrics& metric
       throw std::runtime_error(
           fmt::format("statistics.{}: the region covers no mesh node", s.phase.name));
     statistics_.emplace_back(local, s.phase, std::move(nodes));
+    next_write_.push_back(NAN);
   }
   if (!options_.wall_shear.patches.empty())
     wall_shear_.emplace(local, options_.wall_shear, density, dynamic_viscosity, dir_, append);
@@ -71,9 +77,11 @@ void RunAnalysis::sample(const flow::FlowState& state, std::int64_t step) {
   for (auto& s : samples_)
     if (s.due(state.time)) s.write(state, step, dir_ / "samples");
   // The initial state is no sample of the statistics (it is not a solution of the flow yet).
-  for (std::size_t i = 0; i < statistics_.size(); ++i)
+  for (std::size_t i = 0; i < statistics_.size(); ++i) {
     if (step > 0 && every(step, options_.statistics[i].every_steps))
       statistics_[i].add(state.time, state.velocity, state.pressure);
+    write_interim(i, state.time);
+  }
   if (wall_shear_ && every(step, options_.wall_shear.every_steps)) wall_shear_->sample(state);
   bool any = false;
   for (const auto& d : drops_) any = any || every(step, d.options.every_steps);
@@ -105,8 +113,24 @@ void RunAnalysis::restore(const CheckpointReader& reader) {
   if (wall_shear_) wall_shear_->restore(reader);
 }
 
-void RunAnalysis::finish(const flow::Mesh& mesh, const flow::DualMetrics& metrics) const {
-  for (const auto& s : statistics_) s.write(mesh, metrics, dir_ / "statistics");
+// Interim statistics files at start_time + k write_interval (the first such time after the
+// run's first sample, so a restarted run continues the sequence), overwritten by later writes.
+void RunAnalysis::write_interim(std::size_t i, double time) {
+  const double interval = options_.statistics[i].write_interval;
+  if (!(interval > 0)) return;
+  const double start = options_.statistics[i].phase.start_time;
+  const double eps = 1e-9 * interval;
+  auto next_after = [&](double t) {
+    return start + interval * (std::floor((std::max(t, start) - start) / interval + eps) + 1);
+  };
+  if (std::isnan(next_write_[i])) next_write_[i] = next_after(time);
+  if (time < next_write_[i] - eps) return;
+  statistics_[i].write(*mesh_, *metrics_, dir_ / "statistics");
+  next_write_[i] = next_after(time);
+}
+
+void RunAnalysis::finish() const {
+  for (const auto& s : statistics_) s.write(*mesh_, *metrics_, dir_ / "statistics");
   if (wall_shear_) wall_shear_->write(dir_);
 }
 

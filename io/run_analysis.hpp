@@ -43,16 +43,19 @@ class RunAnalysis {
   // Collective: statistics and wall shear accumulators from a checkpoint of the same scene.
   void restore(const CheckpointReader& reader);
   // Collective: statistics and wall shear files.
-  void finish(const flow::Mesh& mesh, const flow::DualMetrics& metrics) const;
+  void finish() const;
 
   const std::vector<PhaseStatistics>& statistics() const { return statistics_; }
   const WallShearRecorder* wall_shear() const { return wall_shear_ ? &*wall_shear_ : nullptr; }
 
  private:
+  void write_interim(std::size_t statistics, double time);
   struct Drop {
     PressureDropOptions options;
     RegionMean upstream, downstream;
   };
+  const flow::Mesh* mesh_;
+  const flow::DualMetrics* metrics_;
   const flow::LocalMesh* local_;
   AnalysisOptions options_;
   std::filesystem::path dir_;
@@ -60,6 +63,7 @@ class RunAnalysis {
   std::optional<ProbeCsv> probe_csv_;
   std::vector<LinePlaneSamples> samples_;
   std::vector<PhaseStatistics> statistics_;
+  std::vector<double> next_write_;  // per statistics: next interim write time (NaN: not set)
   std::optional<WallShearRecorder> wall_shear_;
   std::vector<Drop> drops_;
   std::ofstream drop_csv_;

@@ -79,6 +79,15 @@ void declare_analysis_keys(Schema& s) {
       .unit_of("s")
       .doc("Samples before this time are ignored; it is phase 0 of cycle 0");
   declare_every_steps(s, st, "the statistics");
+  s.real(st + ".write_interval")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("s")
+      .doc(
+          "Also write the statistics files every this much simulated time after start_time "
+          "(e.g. one period, to follow the convergence over cycles); 0 = at the end of the run "
+          "only. Each write costs about 2-3 time steps per bin on the whole mesh "
+          "(docs/analysis.md)");
   s.choice(st + ".region", {"all", "plane", "box"})
       .def("all")
       .unit_of("-")
@@ -187,6 +196,7 @@ AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh
     s.phase.density = rho;
     s.phase.name = name;
     s.every_steps = scene.get<int>(k + ".every_steps");
+    s.write_interval = scene.get<double>(k + ".write_interval");
     const auto region = scene.get<std::string>(k + ".region");
     s.region = region == "all"     ? StatisticsOptions::Region::all
                : region == "plane" ? StatisticsOptions::Region::plane

@@ -87,7 +87,7 @@ void run_level(const Context& ctx, Level& level) {
   loop.set_hooks(hooks);
   const auto& state = loop.state();
   loop.run();
-  analysis.finish(mesh, metrics);
+  analysis.finish();
 
   // Mean tau_w over the wall nodes of the middle half, weighted like the scene's history.
   const auto* wall = analysis.wall_shear();

@@ -138,7 +138,7 @@ void run_level(const Context& ctx, Level& level) {
   };
   loop.set_hooks(hooks);
   const auto summary = loop.run();
-  analysis.finish(mesh, metrics);
+  analysis.finish();
 
   // 1. Phase mean and RMS in the middle half of the pipe (away from inlet/outlet).
   const auto& stats = analysis.statistics().front();
