@@ -62,6 +62,15 @@ struct BoundarySpec {
   double convection_speed = 0;  // convective_outlet, m/s; 0 = inflow / outflow area
 };
 
+// A condition of `type` on `patch` with every other setting at its default (for code that
+// builds conditions directly: validation cases, tests).
+inline BoundarySpec boundary_spec(std::string patch, BoundaryType type) {
+  BoundarySpec s;
+  s.patch = std::move(patch);
+  s.type = type;
+  return s;
+}
+
 class BoundaryConditions {
  public:
   // Collective. `nu` is the kinematic viscosity (Womersley profile). Throws

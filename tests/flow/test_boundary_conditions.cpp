@@ -39,18 +39,12 @@ struct Channel {
   }
 };
 
-flow::BoundarySpec spec(const std::string& patch, flow::BoundaryType type) {
-  flow::BoundarySpec s;
-  s.patch = patch;
-  s.type = type;
-  return s;
-}
-
 std::vector<flow::BoundarySpec> channel_conditions(flow::Waveform q, flow::BoundaryType outlet) {
-  auto inlet = spec("xmin", flow::BoundaryType::inlet);
+  auto inlet = flow::boundary_spec("xmin", flow::BoundaryType::inlet);
   inlet.flow_rate = q;
-  return {inlet, spec("xmax", outlet), spec("ymin", flow::BoundaryType::wall),
-          spec("ymax", flow::BoundaryType::wall)};
+  return {inlet, flow::boundary_spec("xmax", outlet),
+          flow::boundary_spec("ymin", flow::BoundaryType::wall),
+          flow::boundary_spec("ymax", flow::BoundaryType::wall)};
 }
 
 flow::RunOptions channel_options(double nu, double end) {
@@ -191,18 +185,18 @@ TEST_CASE("inlet and outlet exchange roles while Q(t) < 0") {
 TEST_CASE("missing and unknown boundary conditions are refused, naming the patches") {
   Channel c(4, 4, 1.0, 1.0);
   auto options = channel_options(0.1, 0.1);
-  options.boundary = {spec("xmin", flow::BoundaryType::wall)};
+  options.boundary = {flow::boundary_spec("xmin", flow::BoundaryType::wall)};
   CHECK_THROWS_WITH_AS(flow::RunLoop(c.mesh, c.metrics, c.local, options),
                        doctest::Contains("patches 'xmax', 'ymin', 'ymax' of the mesh have no "
                                          "boundary condition (give each non-periodic patch one "
                                          "of: wall, slip, inlet"),
                        flow::RunError);
-  options.boundary.push_back(spec("inlet", flow::BoundaryType::wall));
+  options.boundary.push_back(flow::boundary_spec("inlet", flow::BoundaryType::wall));
   CHECK_THROWS_WITH_AS(
       flow::RunLoop(c.mesh, c.metrics, c.local, options),
       doctest::Contains("patch 'inlet', which is not in the mesh (its patches: xmin, xmax"),
       flow::RunError);
-  options.boundary = {spec("zmin", flow::BoundaryType::wall)};
+  options.boundary = {flow::boundary_spec("zmin", flow::BoundaryType::wall)};
   CHECK_THROWS_WITH_AS(flow::RunLoop(c.mesh, c.metrics, c.local, options),
                        doctest::Contains("'zmin', which is periodic"), flow::RunError);
 }
@@ -231,14 +225,15 @@ TEST_CASE("slip walls: an impulsively started stream between them becomes unifor
 TEST_CASE("plane Poiseuille inlet: parabola across the channel with the exact discrete flux") {
   Channel c(12, 16, 2.0, 1.0);
   const double area = c.depth * 1.0, q = 0.3 * area;  // mean velocity 0.3
-  auto inlet = spec("xmin", flow::BoundaryType::inlet);
+  auto inlet = flow::boundary_spec("xmin", flow::BoundaryType::inlet);
   inlet.flow_rate.mean = q;
   inlet.profile = flow::InletProfile::plane_poiseuille;
   inlet.across = Eigen::Vector3d(0, 2, 0);  // normalised by the solver
   flow::BoundaryConditions bc(
       c.local,
-      {inlet, spec("xmax", flow::BoundaryType::convective_outlet),
-       spec("ymin", flow::BoundaryType::wall), spec("ymax", flow::BoundaryType::wall)},
+      {inlet, flow::boundary_spec("xmax", flow::BoundaryType::convective_outlet),
+       flow::boundary_spec("ymin", flow::BoundaryType::wall),
+       flow::boundary_spec("ymax", flow::BoundaryType::wall)},
       0.01);
   flow::VectorField u(c.local.num_local(), Eigen::Vector3d::Zero());
   bc.impose(u, 0.0);
@@ -258,13 +253,13 @@ TEST_CASE("plane Poiseuille inlet: parabola across the channel with the exact di
   CHECK(worst < 0.01);
   // A missing direction is refused, naming the inlet.
   inlet.across = Eigen::Vector3d::Zero();
-  CHECK_THROWS_WITH_AS(flow::BoundaryConditions(c.local,
-                                                {inlet, spec("xmax", flow::BoundaryType::wall),
-                                                 spec("ymin", flow::BoundaryType::wall),
-                                                 spec("ymax", flow::BoundaryType::wall)},
-                                                0.01),
-                       doctest::Contains("inlet 'xmin': the plane_poiseuille profile needs"),
-                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(
+      flow::BoundaryConditions(c.local,
+                               {inlet, flow::boundary_spec("xmax", flow::BoundaryType::wall),
+                                flow::boundary_spec("ymin", flow::BoundaryType::wall),
+                                flow::boundary_spec("ymax", flow::BoundaryType::wall)},
+                               0.01),
+      doctest::Contains("inlet 'xmin': the plane_poiseuille profile needs"), std::invalid_argument);
 }
 
 TEST_CASE("pressure-outlet backflow stabilisation removes the inflowing kinetic energy only") {

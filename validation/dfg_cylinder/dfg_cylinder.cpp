@@ -41,13 +41,6 @@ struct Result {
   int steps = 0;
 };
 
-flow::BoundarySpec condition(const std::string& patch, flow::BoundaryType type) {
-  flow::BoundarySpec s;
-  s.patch = patch;
-  s.type = type;
-  return s;
-}
-
 Result run_level(const Context& ctx, const Level& level, double t_end) {
   const auto t0 = MPI_Wtime();
   const double rho = 1, nu = 1e-3, u_mean = 0.2, d = 0.1, height = 0.41;
@@ -60,16 +53,16 @@ Result run_level(const Context& ctx, const Level& level, double t_end) {
   const auto metrics = flow::compute_dual_metrics(mesh);
   const auto local = flow::distribute(mesh, metrics, ctx.comm);
 
-  auto inlet = condition("inlet", flow::BoundaryType::inlet);
+  auto inlet = flow::boundary_spec("inlet", flow::BoundaryType::inlet);
   inlet.profile = flow::InletProfile::plane_poiseuille;
   inlet.across = Eigen::Vector3d(0, 1, 0);
   inlet.flow_rate.mean = u_mean * height * spec.thickness;
   auto bc = std::make_shared<flow::BoundaryConditions>(
       local,
-      std::vector<flow::BoundarySpec>{inlet,
-                                      condition("outlet", flow::BoundaryType::pressure_outlet),
-                                      condition("wall", flow::BoundaryType::wall),
-                                      condition("cylinder", flow::BoundaryType::wall)},
+      std::vector<flow::BoundarySpec>{
+          inlet, flow::boundary_spec("outlet", flow::BoundaryType::pressure_outlet),
+          flow::boundary_spec("wall", flow::BoundaryType::wall),
+          flow::boundary_spec("cylinder", flow::BoundaryType::wall)},
       nu);
   flow::ProjectionOptions options;
   options.density = rho;

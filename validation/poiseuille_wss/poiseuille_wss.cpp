@@ -33,13 +33,6 @@ struct Level {
   double wss_error = 0, wss_min = 0, wss_max = 0, osi_max = 0, dp_error = 0;
 };
 
-flow::BoundarySpec condition(const std::string& patch, flow::BoundaryType type) {
-  flow::BoundarySpec s;
-  s.patch = patch;
-  s.type = type;
-  return s;
-}
-
 void run_level(const Context& ctx, Level& level) {
   const double nu = kMu / kRho;
   const auto mesh = io::generate_pipe_mesh(kRadius, kLength, kRadius / level.resolution);
@@ -53,11 +46,11 @@ void run_level(const Context& ctx, Level& level) {
   o.projection.poisson.tolerance = 1e-10;
   o.time.end = 3 * viscous_time;
   o.output.print = false;
-  auto inlet = condition("inlet", flow::BoundaryType::inlet);
+  auto inlet = flow::boundary_spec("inlet", flow::BoundaryType::inlet);
   inlet.profile = flow::InletProfile::poiseuille;
   inlet.flow_rate.mean = kQ;
-  o.boundary = {inlet, condition("outlet", flow::BoundaryType::pressure_outlet),
-                condition("wall", flow::BoundaryType::wall)};
+  o.boundary = {inlet, flow::boundary_spec("outlet", flow::BoundaryType::pressure_outlet),
+                flow::boundary_spec("wall", flow::BoundaryType::wall)};
 
   io::AnalysisOptions a;
   a.wall_shear.patches = {"wall"};

@@ -39,13 +39,6 @@ std::vector<double> gather_to_root(const std::vector<double>& mine, MPI_Comm com
   return all;
 }
 
-flow::BoundarySpec condition(const std::string& patch, flow::BoundaryType type) {
-  flow::BoundarySpec s;
-  s.patch = patch;
-  s.type = type;
-  return s;
-}
-
 }  // namespace
 
 WomersleyResult run_womersley(const WomersleySetup& setup, MPI_Comm comm) {
@@ -62,7 +55,7 @@ WomersleyResult run_womersley(const WomersleySetup& setup, MPI_Comm comm) {
   const auto local = flow::distribute(mesh, metrics, comm);
   res.nodes = local.global_nodes;
 
-  auto inlet = condition("inlet", flow::BoundaryType::inlet);
+  auto inlet = flow::boundary_spec("inlet", flow::BoundaryType::inlet);
   inlet.profile = flow::InletProfile::womersley;
   inlet.flow_rate.kind = flow::Waveform::Kind::sine;
   inlet.flow_rate.mean = q0;
@@ -70,8 +63,8 @@ WomersleyResult run_womersley(const WomersleySetup& setup, MPI_Comm comm) {
   inlet.flow_rate.period = kPeriod;
   auto bc = std::make_shared<flow::BoundaryConditions>(
       local,
-      std::vector<flow::BoundarySpec>{inlet, condition("wall", flow::BoundaryType::wall),
-                                      condition("outlet", setup.outlet)},
+      std::vector<flow::BoundarySpec>{inlet, flow::boundary_spec("wall", flow::BoundaryType::wall),
+                                      flow::boundary_spec("outlet", setup.outlet)},
       nu);
   const auto exact = flow::Womersley::from_sine(R, nu, q0, q0, kPeriod, 0.0);
   res.exact = exact;

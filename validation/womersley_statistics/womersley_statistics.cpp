@@ -58,13 +58,6 @@ double wall_gradient(const flow::Womersley& w, double t) {
                    std::exp(std::complex<double>(0, kOmega * t)));
 }
 
-flow::BoundarySpec condition(const std::string& patch, flow::BoundaryType type) {
-  flow::BoundarySpec s;
-  s.patch = patch;
-  s.type = type;
-  return s;
-}
-
 struct Level {
   double resolution = 4;  // R / h
   std::int64_t nodes = 0;
@@ -92,7 +85,7 @@ void run_level(const Context& ctx, Level& level) {
   o.projection.poisson.tolerance = 1e-10;
   o.time.end = 3 * kPeriod;
   o.output.print = false;
-  auto inlet = condition("inlet", flow::BoundaryType::inlet);
+  auto inlet = flow::boundary_spec("inlet", flow::BoundaryType::inlet);
   inlet.profile = flow::InletProfile::womersley;
   inlet.flow_rate.kind = flow::Waveform::Kind::sine;
   inlet.flow_rate.amplitude = kAmplitude;
@@ -103,7 +96,7 @@ void run_level(const Context& ctx, Level& level) {
   auto outlet = inlet;
   outlet.patch = "outlet";
   outlet.flow_rate.phase = M_PI;
-  o.boundary = {inlet, outlet, condition("wall", flow::BoundaryType::wall)};
+  o.boundary = {inlet, outlet, flow::boundary_spec("wall", flow::BoundaryType::wall)};
 
   // Statistics over cycles 1 and 2 (the start-up from the exact field is one period).
   io::AnalysisOptions a;
