@@ -24,7 +24,8 @@ namespace {
 
 constexpr double kDensity = 1100, kViscosity = 3.6e-3, kPeriod = 1.0;
 
-// Owned values of every rank, concatenated on rank 0 (empty elsewhere).
+}  // namespace
+
 std::vector<double> gather_to_root(const std::vector<double>& mine, MPI_Comm comm) {
   int size = 0, rank = 0;
   MPI_Comm_size(comm, &size);
@@ -39,7 +40,15 @@ std::vector<double> gather_to_root(const std::vector<double>& mine, MPI_Comm com
   return all;
 }
 
-}  // namespace
+PhaseSteps phase_steps(const flow::Womersley& exact, double period, int phases, double cfl,
+                       double h) {
+  PhaseSteps s;
+  for (int k = 0; k < 1000; ++k) s.u_peak = std::max(s.u_peak, exact.velocity(0.0, period * k / 1000));
+  const double interval = period / phases;
+  s.per_phase = static_cast<int>(std::ceil(interval / (cfl * h / s.u_peak)));
+  s.dt = interval / s.per_phase;
+  return s;
+}
 
 WomersleyResult run_womersley(const WomersleySetup& setup, MPI_Comm comm) {
   const double t0 = MPI_Wtime();
@@ -110,12 +119,10 @@ WomersleyResult run_womersley(const WomersleySetup& setup, MPI_Comm comm) {
   bc->hold_outlets(state.velocity);
   bc->impose(state.velocity, 0.0);
 
-  for (int k = 0; k < 1000; ++k)
-    res.u_peak = std::max(res.u_peak, exact.velocity(0.0, kPeriod * k / 1000));
-  const double interval = kPeriod / setup.phases;
-  const int per_phase = static_cast<int>(std::ceil(interval / (setup.cfl * h / res.u_peak)));
-  const double dt = interval / per_phase;
-  res.dt = dt;
+  const auto steps = phase_steps(exact, kPeriod, setup.phases, setup.cfl, h);
+  res.u_peak = steps.u_peak, res.dt = steps.dt;
+  const int per_phase = steps.per_phase;
+  const double dt = steps.dt;
 
   const auto weights = flow::laplacian_weights(local);
   std::vector<double> scratch;

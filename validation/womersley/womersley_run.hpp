@@ -61,4 +61,16 @@ struct WomersleyResult {
 // Collective over `comm`.
 WomersleyResult run_womersley(const WomersleySetup& setup, MPI_Comm comm);
 
+// The fixed time step of a Womersley run: u_peak = max centreline velocity over the period
+// (1000 samples), dt ~ cfl h / u_peak rounded down to a whole number of steps per phase.
+struct PhaseSteps {
+  double u_peak = 0, dt = 0;
+  int per_phase = 0;
+};
+PhaseSteps phase_steps(const flow::Womersley& exact, double period, int phases, double cfl,
+                       double h);
+
+// Collective: the owned values of every rank, concatenated on rank 0 (empty elsewhere).
+std::vector<double> gather_to_root(const std::vector<double>& mine, MPI_Comm comm);
+
 }  // namespace valsalva::validation
