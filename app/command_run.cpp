@@ -106,6 +106,7 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
   const auto metrics = flow::compute_dual_metrics(mesh);
   auto boundary = io::read_boundary_conditions(scene, mesh);
   const auto analysis_options = io::read_analysis_options(scene, mesh);
+  io::check_les_scene(scene);
   const fs::path run_path =
       in_place ? dir : io::RunDirectory::prepare(dir, wipe, scene, MPI_COMM_WORLD).path();
 
@@ -127,7 +128,7 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
 
   std::int64_t start_step = 0;
   flow::FlowState start;
-  flow::ScalarField start_dp;
+  flow::ScalarField start_dp, start_nu_sgs;
   std::uint64_t hash = 0;
   const auto every_steps =
       static_cast<std::int64_t>(scene.get<int>("output.checkpoint_every_steps"));
@@ -138,10 +139,10 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
     io::CheckpointReader in(local, hash, *checkpoint);  // throws on another mesh
     in.read_state(start);
     start_step = in.info().step;
-    if (in.has("pressure_increment")) {  // the Poisson warm start (bitwise restarts)
-      std::vector<std::int64_t> rows(local.dual_node.begin(), local.dual_node.end());
-      start_dp = in.read_array("pressure_increment", rows);
-    }
+    if (in.has("pressure_increment"))  // the Poisson warm start (bitwise restarts)
+      start_dp = io::read_nodal_array(in, local, "pressure_increment");
+    if (les.subgrid_viscosity && in.has("subgrid_viscosity"))  // the first dt of an LES
+      start_nu_sgs = io::read_nodal_array(in, local, "subgrid_viscosity");
     if (analysis) analysis->restore(in);
     if (rank == 0)
       fmt::print("restart: {} (step {}, t = {:.9g} s)\n", checkpoint->string(), start_step,
@@ -166,7 +167,9 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
     std::vector<io::FieldOutput::Scalar> scalars;
     std::vector<io::FieldOutput::Vector> vectors;
     flow::FieldSet all = set;
-    les.add_fields(all);
+    static const std::vector<io::PhaseStatistics> no_statistics;
+    les.add_fields(all, time, *set.state_velocity,
+                   analysis ? analysis->statistics() : no_statistics);
     for (const auto& [name, f] : all.scalars) scalars.push_back({name, f});
     for (const auto& [name, f] : set.vectors) vectors.push_back({name, f});
     o->write(time, scalars, vectors);
@@ -185,7 +188,10 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
     fmt::print("les: model {}, constant {:.4g}\n", les.model, les.constant);
   run_options.boundary = std::move(boundary);
   flow::RunLoop loop(mesh, metrics, local, run_options, sink);
-  if (checkpoint) loop.resume(std::move(start), start_step, start_dp);
+  if (checkpoint) {
+    loop.resume(std::move(start), start_step, start_dp, start_nu_sgs);
+    les.resume(loop.subgrid_viscosity());
+  }
   if (analysis && !checkpoint) analysis->sample(loop.state(), 0);
 
   // Checkpoints every N steps, every M wall-clock minutes (rank 0's clock decides, so that all
@@ -216,13 +222,11 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
       if (!due) return;
       std::vector<io::CheckpointArray> extras;
       if (analysis) extras = analysis->checkpoint_arrays();
-      auto& dp = extras.emplace_back(
-          io::CheckpointArray{"pressure_increment", local.global_nodes, 0, {}, {}});
-      const auto& increment = loop.pressure_increment();
-      for (int i = 0; i < local.num_owned; ++i) {
-        dp.rows.push_back(local.dual_node[i]);
-        dp.data.push_back(increment[i]);
-      }
+      extras.push_back(
+          io::nodal_checkpoint_array("pressure_increment", local, loop.pressure_increment()));
+      if (!loop.subgrid_viscosity().empty())
+        extras.push_back(
+            io::nodal_checkpoint_array("subgrid_viscosity", local, loop.subgrid_viscosity()));
       last_checkpoint = writer->write(state, step, dt, extras);
       last_write = std::chrono::steady_clock::now();
     };

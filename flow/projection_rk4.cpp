@@ -58,6 +58,17 @@ void ProjectionRK4::set_pressure_increment(const ScalarField& dp) {
   dp_ = dp;
 }
 
+void ProjectionRK4::set_subgrid_viscosity(const ScalarField& nu_sgs) {
+  if (!options_.subgrid_viscosity)
+    throw std::invalid_argument(
+        "flow::ProjectionRK4::set_subgrid_viscosity: the solver has no subgrid model");
+  if (nu_sgs.size() != dp_.size())
+    throw std::invalid_argument(
+        "flow::ProjectionRK4::set_subgrid_viscosity: " + std::to_string(nu_sgs.size()) +
+        " values for " + std::to_string(dp_.size()) + " local nodes");
+  nu_sgs_ = nu_sgs;
+}
+
 void ProjectionRK4::matrix_laplacian(const ScalarField& p, const VectorField& grad_p,
                                      ScalarField& out) const {
   // (1/V_j) [sum_k w_jk (p_k - p_j) + sum_faces grad p_j . A_j]: the hypre matrix's operator plus

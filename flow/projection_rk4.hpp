@@ -80,6 +80,10 @@ class ProjectionRK4 {
 
   // nu_sgs of the last RK stage evaluated (owned + ghosts; empty without a subgrid model).
   const ScalarField& subgrid_viscosity() const { return nu_sgs_; }
+  // Restores that nu_sgs (all local nodes) from a checkpoint: the first time step of a restarted
+  // LES then sees the same nu + max nu_sgs as the uninterrupted run. Throws on a wrong size or
+  // without a subgrid model.
+  void set_subgrid_viscosity(const ScalarField& nu_sgs);
   // Collective: max over owned nodes of that nu_sgs (0 without a subgrid model), m^2/s.
   double max_subgrid_viscosity() const;
 

@@ -53,7 +53,8 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
   last_good_ = state_;
 }
 
-void RunLoop::resume(FlowState state, std::int64_t step, const ScalarField& pressure_increment) {
+void RunLoop::resume(FlowState state, std::int64_t step, const ScalarField& pressure_increment,
+                     const ScalarField& subgrid_viscosity) {
   const auto n = static_cast<std::size_t>(local_.num_local());
   if (state.velocity.size() != n || state.pressure.size() != n)
     throw RunError(
@@ -64,6 +65,7 @@ void RunLoop::resume(FlowState state, std::int64_t step, const ScalarField& pres
   last_good_ = state_;
   step_ = step;
   if (!pressure_increment.empty()) solver_.set_pressure_increment(pressure_increment);
+  if (!subgrid_viscosity.empty()) solver_.set_subgrid_viscosity(subgrid_viscosity);
   resumed_ = true;
 }
 
@@ -133,6 +135,7 @@ void RunLoop::write_fields(const std::string& basename, const FlowState& state) 
   if (!sink_) return;
   const auto& out = options_.output;
   FieldSet set;
+  set.state_velocity = &state.velocity;
   if (out.velocity) set.vectors.emplace_back("velocity", &state.velocity);
   if (out.pressure) set.scalars.emplace_back("pressure", &state.pressure);
   if (out.vorticity) {

@@ -66,6 +66,7 @@ struct RunOptions {
 struct FieldSet {
   std::vector<std::pair<std::string, const ScalarField*>> scalars;
   std::vector<std::pair<std::string, const VectorField*>> vectors;
+  const VectorField* state_velocity = nullptr;  // the written state's velocity (derived fields)
 };
 using FieldSink = std::function<void(const std::string& basename, double time, const FieldSet&)>;
 
@@ -119,12 +120,15 @@ class RunLoop {
 
   void set_hooks(RunHooks hooks) { hooks_ = std::move(hooks); }
   // Continue from a checkpointed state (velocity and pressure of every local node, time) after
-  // `step` steps instead of the initial condition; log.csv is appended to when it exists. Not
-  // restored: the previous step's nu_sgs (LES) used by the first time-step choice.
-  // `pressure_increment` (all local nodes; empty = zero) restores the Poisson warm start.
-  void resume(FlowState state, std::int64_t step, const ScalarField& pressure_increment = {});
-  // The last pressure increment (for checkpoints).
+  // `step` steps instead of the initial condition; log.csv is appended to when it exists.
+  // `pressure_increment` (all local nodes; empty = zero) restores the Poisson warm start,
+  // `subgrid_viscosity` (all local nodes; empty = zero) the previous step's nu_sgs of an LES,
+  // which bounds the first time step (choose_dt).
+  void resume(FlowState state, std::int64_t step, const ScalarField& pressure_increment = {},
+              const ScalarField& subgrid_viscosity = {});
+  // The last pressure increment and nu_sgs (for checkpoints; nu_sgs is empty without a model).
   const ScalarField& pressure_increment() const { return solver_.pressure_increment(); }
+  const ScalarField& subgrid_viscosity() const { return solver_.subgrid_viscosity(); }
 
   // Runs from the initial condition (or the resumed state) to time.end (or max_steps), or until
   // hooks.stop_requested(). Throws RunError.

@@ -126,6 +126,25 @@ std::filesystem::path CheckpointWriter::write(const flow::FlowState& state, std:
   return final_path;
 }
 
+CheckpointArray nodal_checkpoint_array(const std::string& name, const flow::LocalMesh& local,
+                                       const flow::ScalarField& field) {
+  if (field.size() < static_cast<std::size_t>(local.num_owned))
+    throw std::invalid_argument(fmt::format("nodal_checkpoint_array {}: {} values for {} owned nodes",
+                                            name, field.size(), local.num_owned));
+  CheckpointArray a{name, local.global_nodes, 0, {}, {}};
+  for (int i = 0; i < local.num_owned; ++i) {
+    a.rows.push_back(local.dual_node[i]);
+    a.data.push_back(field[i]);
+  }
+  return a;
+}
+
+flow::ScalarField read_nodal_array(const CheckpointReader& reader, const flow::LocalMesh& local,
+                                   const std::string& name) {
+  const std::vector<std::int64_t> rows(local.dual_node.begin(), local.dual_node.end());
+  return reader.read_array(name, rows);
+}
+
 std::optional<std::filesystem::path> latest_checkpoint(const std::filesystem::path& dir,
                                                        const std::string& basename) {
   if (!std::filesystem::is_directory(dir)) return std::nullopt;

@@ -80,6 +80,14 @@ class CheckpointWriter {
   std::vector<std::int64_t> owned_rows_;
 };
 
+// A nodal field (owned values of `field`, local order) as an extra array `name` with rows by
+// dual node, and its inverse: every local node's value (owned and ghosts) of that array.
+CheckpointArray nodal_checkpoint_array(const std::string& name, const flow::LocalMesh& local,
+                                       const flow::ScalarField& field);
+class CheckpointReader;
+flow::ScalarField read_nodal_array(const CheckpointReader& reader, const flow::LocalMesh& local,
+                                   const std::string& name);
+
 // Newest complete checkpoint <basename>_<step>.h5 in `dir` (highest step), or nullopt.
 std::optional<std::filesystem::path> latest_checkpoint(const std::filesystem::path& dir,
                                                        const std::string& basename = "checkpoint");

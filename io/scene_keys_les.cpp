@@ -3,9 +3,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "io/scene_keys.hpp"
+#include "io/sgs_energy_field.hpp"
+#include "les/sgs_energy.hpp"
 #include "les/subgrid_viscosity.hpp"
 
 namespace valsalva::io {
@@ -40,11 +43,14 @@ void declare_les_keys(Schema& s) {
 struct LesSetup::Shared {
   les::SubgridViscosity model;
   double nu = 0;
+  bool energy_fraction = false;             // output.fields has sgs_energy_fraction
   const flow::ScalarField* last = nullptr;  // the solver's nu_sgs array, filled last
-  flow::ScalarField ratio;
+  flow::ScalarField ratio, resolved, fraction;
+  const flow::LocalMesh* local = nullptr;
 };
 
-void LesSetup::add_fields(flow::FieldSet& set) const {
+void LesSetup::add_fields(flow::FieldSet& set, double time, const flow::VectorField& velocity,
+                          const std::vector<PhaseStatistics>& statistics) const {
   if (!shared) return;
   auto& sh = *shared;
   const double scale = sh.nu > 0 ? 1.0 / sh.nu : 1.0;
@@ -52,20 +58,52 @@ void LesSetup::add_fields(flow::FieldSet& set) const {
   if (sh.last)
     for (std::size_t i = 0; i < sh.ratio.size(); ++i) sh.ratio[i] = (*sh.last)[i] * scale;
   set.scalars.emplace_back(sh.nu > 0 ? "nu_sgs_over_nu" : "nu_sgs", &sh.ratio);
+  if (!sh.energy_fraction) return;
+  resolved_turbulent_energy(*sh.local, velocity, statistics, time, sh.resolved);
+  sh.fraction.assign(sh.resolved.size(), 0.0);
+  const std::vector<double> zero(sh.last ? 0 : sh.resolved.size(), 0.0);
+  les::subgrid_energy_fraction(sh.last ? std::span<const double>(*sh.last) : zero,
+                               sh.model.filter_width(), sh.resolved, sh.fraction);
+  set.scalars.emplace_back("sgs_energy_fraction", &sh.fraction);
+}
+
+namespace {
+
+bool wants_energy_fraction(const Scene& scene) {
+  const auto fields = scene.get<std::vector<std::string>>("output.fields");
+  return std::find(fields.begin(), fields.end(), "sgs_energy_fraction") != fields.end();
+}
+
+}  // namespace
+
+void check_les_scene(const Scene& scene) {
+  if (scene.get<std::string>("les.model") == "none" && wants_energy_fraction(scene))
+    throw scene.error("output.fields", "sgs_energy_fraction needs a subgrid model",
+                      "les.model = sigma, wale or smagorinsky, or drop sgs_energy_fraction");
+}
+
+void LesSetup::resume(const flow::ScalarField& nu_sgs) const {
+  if (shared && !nu_sgs.empty()) shared->last = &nu_sgs;
 }
 
 LesSetup les_setup(const Scene& scene, const flow::LocalMesh& local) {
+  check_les_scene(scene);
   LesSetup out;
   out.model = scene.get<std::string>("les.model");
   if (out.model == "none") return out;
+  const bool fraction = wants_energy_fraction(scene);
   const double c = scene.get<double>("les.constant");
   try {
     out.shared = std::make_shared<LesSetup::Shared>(LesSetup::Shared{
         les::SubgridViscosity(out.model, c, local.h,
                               les::parse_sgs_update(scene.get<std::string>("les.update"))),
         scene.get<double>("flow.viscosity") / scene.get<double>("flow.density"),
+        fraction,
         nullptr,
-        {}});
+        {},
+        {},
+        {},
+        &local});
   } catch (const std::invalid_argument& e) {
     throw scene.error("les.constant", e.what(), "a finite value > 0, or 0 for the default");
   }

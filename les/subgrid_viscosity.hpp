@@ -49,6 +49,7 @@ class SubgridViscosity {
   const SgsModel& model() const { return model_; }
   bool active() const { return model_.kind != SgsKind::none; }
   std::size_t size() const { return delta_.size(); }
+  std::span<const double> filter_width() const { return delta_; }
 
  private:
   SgsModel model_;
