@@ -87,7 +87,7 @@ CbcStation measure(const flow::LocalMesh& local, const std::vector<std::size_t>&
 CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
   const auto start = Clock::now();
   const double M = les::cbc_mesh_size, U0 = les::cbc_u0;
-  const double length = cbc_box_in_m * M, h = length / spec.n;
+  const double length = spec.box_in_m * M, h = length / spec.n;
   io::BoxSpec box;
   box.cells = {spec.n, spec.n, spec.n};
   box.length = Eigen::Vector3d::Constant(length);

@@ -29,6 +29,7 @@ inline constexpr double cbc_air_viscosity = 1.5e-5;  // m^2/s, air near 20 C
 
 struct CbcSpec {
   int n = 32;                       // nodes (cells) per side
+  double box_in_m = cbc_box_in_m;   // L / M (other values: box-size studies)
   std::string model = "sigma";      // les::SubgridViscosity names; "none" = no model
   double constant = 0;              // 0 = the model's default
   std::string update = "step";      // les.update: nu_sgs per "step" or per RK "stage"
