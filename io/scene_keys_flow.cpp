@@ -150,7 +150,8 @@ void declare_flow_keys(Schema& s) {
       .unit_of("-")
       .doc(
           "Fields to write; vorticity is the curl of the nodal velocity gradient, q_criterion "
-          "1/2 (|W|^2 - |S|^2) of it (vortex cores where > 0); with [les] a model, nu_sgs/nu too");
+          "1/2 (|W|^2 - |S|^2) of it (vortex cores where > 0); with [les] a model, nu_sgs/nu too; with immersed structures, their force density "
+          "(and the Lagrangian meshes in structures/)");
   // Checkpoints for `valsalva run --restart`: HDF5 files in <run dir>/checkpoints (see
   // io/checkpoint.hpp), also written on SIGINT/SIGTERM.
   s.integer("output.checkpoint_every_steps")
