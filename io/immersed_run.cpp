@@ -37,8 +37,8 @@ ImmersedRun::ImmersedRun(ImmersedSetup setup, flow::LocalMesh& local, const fs::
     csv_.open(file, append ? std::ios::app : std::ios::trunc);
     if (!csv_) throw std::runtime_error("cannot write " + file.string());
     if (!append)
-      csv_ << "step,time,structure,force_x,force_y,force_z,tether_x,tether_y,tether_z,"
-              "max_speed,max_displacement,min_det_F,dt_bound\n";
+      csv_ << "step,time,structure,load_x,load_y,load_z,force_x,force_y,force_z,tether_x,tether_y,"
+              "tether_z,max_speed,max_displacement,min_det_F,dt_bound\n";
   }
 }
 
@@ -89,11 +89,18 @@ void ImmersedRun::after_step(double time, std::int64_t step) {
     const int first = ib_->first_marker(b), n = ib_->body(b).num_nodes();
     const auto& mesh = ib_->body(b).mesh();
     const Eigen::Vector3d f = ib_->total_force(b), t = ib_->tether_force(b);
+    // The fluid's load on the structure: with the solid massless, the internal forces at the
+    // free nodes balance the fluid there, so the load is what the clamped nodes' internal forces
+    // pass to the support, whether the tether or a no-slip wall under them holds it.
+    Eigen::Vector3d load = -t;
+    for (int a : ib_->body(b).clamped_nodes()) load += ib_->forces().col(first + a);
     const double speed = ib_->velocities().middleCols(first, n).colwise().norm().maxCoeff();
     const double disp = (ib_->positions().middleCols(first, n) - mesh.X).colwise().norm().maxCoeff();
-    csv_ << fmt::format("{},{:.12g},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.6e},{:.6e},{:.9g},{:.6e}\n",
-                        step, time, ib_->body(b).spec().name, f.x(), f.y(), f.z(), t.x(), t.y(),
-                        t.z(), speed, disp, ib_->last_min_det(), dt_bound_);
+    csv_ << fmt::format(
+        "{},{:.12g},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.6e},{:.6e},"
+        "{:.9g},{:.6e}\n",
+        step, time, ib_->body(b).spec().name, load.x(), load.y(), load.z(), f.x(), f.y(), f.z(),
+        t.x(), t.y(), t.z(), speed, disp, ib_->last_min_det(), dt_bound_);
   }
   csv_.flush();
 }

@@ -4,9 +4,11 @@
 // what the run writes about them:
 //   structures/<name>.xmf (+ <name>_NNNNNN.h5)  the Lagrangian mesh at every field output with
 //       displacement, marker velocity and force [N] and (stresses = true) nodal stresses
-//   structures.csv  every immersed.log_every steps: per structure the force it applies to the
-//       fluid (= the tether reaction: internal forces sum to zero), the tether reaction, the
-//       largest marker speed and displacement, the smallest det F and the dt bound in use
+//   structures.csv  every immersed.log_every steps: per structure the fluid's load on it [N]
+//       (what its clamped nodes pass to the support), the force it applies to the fluid (= the
+//       tether reaction: internal forces sum to zero; near 0 when a no-slip wall under the
+//       clamped nodes carries the load instead), the tether reaction, the largest marker speed
+//       and displacement, the smallest det F and the dt bound in use
 //   force_density  the Eulerian force density [N/m^3] joins the fluid fields
 // Marker positions and the bound in use go into checkpoints and come back on --restart (so
 // that a restarted run takes the same time steps).
