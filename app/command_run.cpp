@@ -17,6 +17,7 @@
 #include "flow/run_loop.hpp"
 #include "io/checkpoint.hpp"
 #include "io/field_output.hpp"
+#include "io/immersed_run.hpp"
 #include "io/mesh_source.hpp"
 #include "io/run_analysis.hpp"
 #include "io/run_directory.hpp"
@@ -25,6 +26,7 @@
 #include "io/scene_keys_boundary.hpp"
 #include "io/scene_keys_flow.hpp"
 #include "io/scene_keys_les.hpp"
+#include "io/scene_keys_structure.hpp"
 #include "io/stop_signal.hpp"
 
 namespace valsalva::app {
@@ -106,6 +108,7 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
   const auto metrics = flow::compute_dual_metrics(mesh);
   auto boundary = io::read_boundary_conditions(scene, mesh);
   const auto analysis_options = io::read_analysis_options(scene, mesh);
+  auto immersed_setup = io::read_immersed_setup(scene, mesh);
   io::check_les_scene(scene);
   const fs::path run_path =
       in_place ? dir : io::RunDirectory::prepare(dir, wipe, scene, MPI_COMM_WORLD).path();
@@ -113,7 +116,7 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
   flow::PartitionOptions options;
   options.ghost_layers = scene.get<int>("partition.ghost_layers");
   options.method = scene.get<std::string>("partition.method");
-  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, options);
+  auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, options);
 
   auto run_options = io::flow_run_options(scene, run_path);
   const auto les = io::les_setup(scene, local);  // nu_sgs/nu joins the fields with a model
@@ -135,10 +138,18 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
   const double every_seconds = 60 * scene.get<double>("output.checkpoint_every_minutes");
   const bool on_signal = scene.get<bool>("output.checkpoint_on_signal");
   if (checkpoint || every_steps > 0 || every_seconds > 0 || on_signal) hash = io::mesh_hash(mesh);
+  std::optional<io::ImmersedRun> immersed;  // only with [structure.<name>] tables
+  auto make_immersed = [&](std::int64_t step) {
+    if (!immersed_setup.empty())
+      immersed.emplace(std::move(immersed_setup), local, run_path, in_place, step);
+  };
+  if (!checkpoint) make_immersed(0);
   if (checkpoint) {
     io::CheckpointReader in(local, hash, *checkpoint);  // throws on another mesh
     in.read_state(start);
     start_step = in.info().step;
+    make_immersed(start_step);
+    if (immersed) immersed->restore(in);
     if (in.has("pressure_increment"))  // the Poisson warm start (bitwise restarts)
       start_dp = io::read_nodal_array(in, local, "pressure_increment");
     if (les.subgrid_viscosity && in.has("subgrid_viscosity"))  // the first dt of an LES
@@ -170,8 +181,9 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
     static const std::vector<io::PhaseStatistics> no_statistics;
     les.add_fields(all, time, *set.state_velocity,
                    analysis ? analysis->statistics() : no_statistics);
+    if (immersed && stream == "fields") immersed->write(time, all);  // + the Lagrangian meshes
     for (const auto& [name, f] : all.scalars) scalars.push_back({name, f});
-    for (const auto& [name, f] : set.vectors) vectors.push_back({name, f});
+    for (const auto& [name, f] : all.vectors) vectors.push_back({name, f});
     o->write(time, scalars, vectors);
   };
   if (rank == 0) {
@@ -186,6 +198,19 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
   }
   if (rank == 0 && les.subgrid_viscosity)
     fmt::print("les: model {}, constant {:.4g}\n", les.model, les.constant);
+  if (immersed) {
+    const auto& ib = immersed->structure();
+    const auto& o = ib.options();
+    if (rank == 0)
+      fmt::print(
+          "immersed: {} structure(s), {} markers, kernel {} width {} h, coupling {}, dt bound "
+          "{:.4e} s (dt_safety {})\n",
+          ib.num_bodies(), ib.num_markers(), ibm::kernel_name(o.transfer.kernel.type),
+          o.transfer.kernel.width,
+          o.mode == ibm::CouplingMode::per_stage ? "per_stage" : "per_step", immersed->dt_bound(),
+          o.stability_safety);
+    run_options.coupling = immersed->coupling();
+  }
   run_options.boundary = std::move(boundary);
   flow::RunLoop loop(mesh, metrics, local, run_options, sink);
   if (checkpoint) {
@@ -210,6 +235,13 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
     hooks.after_step = [&](const flow::FlowState& state, std::int64_t step) {
       analysis->sample(state, step);
     };
+  if (immersed) {
+    auto previous = std::move(hooks.after_step);
+    hooks.after_step = [&, previous](const flow::FlowState& state, std::int64_t step) {
+      if (previous) previous(state, step);
+      immersed->after_step(state.time, step);
+    };
+  }
   if (writer)
     hooks.checkpoint = [&](const flow::FlowState& state, std::int64_t step, double dt,
                            bool stopping) {
@@ -222,6 +254,8 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
       if (!due) return;
       std::vector<io::CheckpointArray> extras;
       if (analysis) extras = analysis->checkpoint_arrays();
+      if (immersed)
+        for (auto& a : immersed->checkpoint_arrays()) extras.push_back(std::move(a));
       extras.push_back(
           io::nodal_checkpoint_array("pressure_increment", local, loop.pressure_increment()));
       if (!loop.subgrid_viscosity().empty())

@@ -15,6 +15,7 @@
 #include "io/scene.hpp"
 #include "io/scene_docs.hpp"
 #include "io/scene_keys_analysis.hpp"
+#include "io/scene_keys_structure.hpp"
 #include "io/scene_keys_boundary.hpp"
 #include "io/scene_keys_les.hpp"
 #include "validation/case.hpp"
@@ -41,6 +42,7 @@ int check_scene(const std::filesystem::path& scene_file) {
   const auto metrics = flow::compute_dual_metrics(mesh);
   io::read_boundary_conditions(scene, mesh);  // every non-periodic patch has a valid condition
   io::read_analysis_options(scene, mesh);     // probes, samples, statistics, wall shear
+  io::read_immersed_setup(scene, mesh);       // structure meshes, materials, clamped sets
   io::check_les_scene(scene);                 // LES output fields
   if (world_rank() == 0)
     fmt::print("{}: scene and mesh are valid ({} nodes, {} cells, {} boundary patches)\n",

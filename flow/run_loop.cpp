@@ -51,6 +51,7 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
     boundary_->impose(state_.velocity, 0.0);
   }
   last_good_ = state_;
+  if (options_.coupling.body_force) solver_.set_body_force(options_.coupling.body_force);
 }
 
 void RunLoop::resume(FlowState state, std::int64_t step, const ScalarField& pressure_increment,
@@ -124,6 +125,16 @@ double RunLoop::choose_dt(double remaining) {
               t.cfl, t.fourier, dt, limit, step_, limit * rates_.convective,
               limit * rates_.viscous),
           "time.cfl");
+  }
+  if (const auto& c = options_.coupling; c.max_dt) {
+    const double bound = c.max_dt();
+    if (t.dt > 0 && options_.enforce_stability_limit && t.dt > bound)
+      throw RunError(fmt::format("time.dt = {:.6g} s exceeds the largest time step {:.6g} s that "
+                                 "{} admits at step {}: set time.dt <= {:.6g}, or time.dt = 0 "
+                                 "to let the run keep below it",
+                                 t.dt, bound, c.max_dt_source, step_, bound),
+                     "time.dt");
+    dt = std::min(dt, bound);
   }
   // Land on the next event (end, output time) without a sliver of a step: the last two steps
   // before it share the remaining time when it is less than two steps.
@@ -240,6 +251,7 @@ RunSummary RunLoop::run() {
     last_good_.time = state_.time;
     try {
       report = solver_.step(state_, dt);
+      if (options_.coupling.finish_step) options_.coupling.finish_step(state_);
     } catch (const std::exception& e) {
       ++step_;
       const auto bad =

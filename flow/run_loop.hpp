@@ -51,12 +51,24 @@ struct OutputOptions {
   double cycle_period = 0;  // s; > 0 shows cycle and phase in the status line
 };
 
+// Something that moves with the flow and pushes on it (app/ plugs in the immersed structures of
+// ibm/, so that flow/ stays independent of them): its force density at every RK stage, its own
+// update once the step is taken (markers to t^{n+1}) and the largest time step its explicit
+// coupling admits. All empty = none: nothing is called or allocated.
+struct StepCoupling {
+  BodyForce body_force;
+  std::function<void(const FlowState&)> finish_step;  // collective, after each flow step
+  std::function<double()> max_dt;  // collective, s, at the current state; +inf = no bound
+  std::string max_dt_source;       // what sets max_dt, for the message when time.dt exceeds it
+};
+
 struct RunOptions {
   ProjectionOptions projection;  // density, kinematic viscosity, Poisson settings
   TimeOptions time;
   OutputOptions output;
   InitialCondition initial;
   std::vector<BoundarySpec> boundary;  // one per non-periodic patch
+  StepCoupling coupling;
   double velocity_limit = 50;          // m/s
   // Tests only: let a time step beyond the stability limit through to exercise the guard.
   bool enforce_stability_limit = true;

@@ -133,6 +133,12 @@ void ImmersedStructure::finish_step(const flow::FlowState& state) {
   x_ = x_n_ + dt * velocity_;
 }
 
+void ImmersedStructure::current_force_density(flow::VectorField& density) {
+  locate(x_);
+  compute_forces(x_);
+  spread(density);
+}
+
 double ImmersedStructure::stable_time_step() {
   locate(x_);
   std::vector<Eigen::SparseMatrix<double>> K(bodies_.size());

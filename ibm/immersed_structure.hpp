@@ -72,6 +72,11 @@ class ImmersedStructure {
   // After ProjectionRK4::step: markers to X^{n+1} (state.time is t^{n+1}). Collective.
   void finish_step(const flow::FlowState& state);
 
+  // The force density the markers spread at their current positions (owned + ghosts,
+  // overwritten), with the forces evaluated there: for output between steps (the next step
+  // locates its own stages again). Collective.
+  void current_force_density(flow::VectorField& density);
+
   // Largest stable time step of the explicit coupling at the current positions, from the
   // largest eigenvalue of the kernel-mapped stiffness (ib_stability.hpp). Collective.
   double stable_time_step();

@@ -153,7 +153,8 @@ void declare_flow_keys(Schema& s) {
           "1/2 (|W|^2 - |S|^2) of it (vortex cores where > 0); with [les] a model, nu_sgs/nu too, "
           "and on request sgs_energy_fraction = k_sgs / (k_res + k_sgs) with Yoshizawa's "
           "k_sgs = (nu_sgs / (0.094 Delta))^2 and k_res the [statistics] k / rho where a section "
-          "covers the node (bin with >= 2 samples), else |u|^2 / 2 (les/sgs_energy.hpp)");
+          "covers the node (bin with >= 2 samples), else |u|^2 / 2 (les/sgs_energy.hpp); with "
+          "immersed structures, their force density (and the Lagrangian meshes in structures/)");
   // Checkpoints for `valsalva run --restart`: HDF5 files in <run dir>/checkpoints (see
   // io/checkpoint.hpp), also written on SIGINT/SIGTERM.
   s.integer("output.checkpoint_every_steps")

@@ -55,15 +55,17 @@ std::string item(const std::string& h5, const std::string& name, long rows, int 
 
 }  // namespace
 
-std::filesystem::path write_solid_results(const std::filesystem::path& dir,
-                                          const std::string& basename,
-                                          const structure::SolidMesh& mesh,
-                                          const Eigen::Matrix3Xd& x,
-                                          const structure::NodalStress* stress) {
+std::string write_solid_h5(const std::filesystem::path& dir, const std::string& basename,
+                           const structure::SolidMesh& mesh, const Eigen::Matrix3Xd& x,
+                           const structure::NodalStress* stress, const SolidVectors& vectors) {
   const long n = mesh.num_nodes(), ne = mesh.num_elements();
   if (x.cols() != n)
     throw std::invalid_argument(
         fmt::format("write_solid_results: {} positions for a mesh of {} nodes", x.cols(), n));
+  for (const auto& [name, v] : vectors)
+    if (v->cols() != n)
+      throw std::invalid_argument(fmt::format(
+          "write_solid_results: field '{}' has {} values for a mesh of {} nodes", name, v->cols(), n));
   const bool q2 = mesh.order == HexOrder::q2;
   const int nen = mesh.nodes_per_element();
   std::vector<std::int64_t> topo(static_cast<std::size_t>(ne) * nen);
@@ -78,10 +80,17 @@ std::filesystem::path write_solid_results(const std::filesystem::path& dir,
   f.write_block<double>("reference", n, 3, 0, rows3(mesh.X));
   f.write_block<std::int64_t>("topology", ne, nen, 0, topo);
   f.write_block<double>("displacement", n, 3, 0, rows3(x - mesh.X));
-  std::string attrs = fmt::format(
-      "      <Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n"
-      "        {}\n      </Attribute>\n",
-      item(h5name, "displacement", n, 3, "Float", 8));
+  auto attribute = [&](const std::string& name, const char* type, int cols) {
+    return fmt::format(
+        "      <Attribute Name=\"{}\" AttributeType=\"{}\" Center=\"Node\">\n        {}\n"
+        "      </Attribute>\n",
+        name, type, item(h5name, name, n, cols, "Float", 8));
+  };
+  std::string attrs = attribute("displacement", "Vector", 3);
+  for (const auto& [name, v] : vectors) {
+    f.write_block<double>(name, n, 3, 0, rows3(*v));
+    attrs += attribute(name, "Vector", 3);
+  }
   if (stress) {
     const std::vector<double> vm(stress->von_mises.data(), stress->von_mises.data() + n);
     f.write_block<double>("von_mises", n, 0, 0, vm);
@@ -93,34 +102,32 @@ std::filesystem::path write_solid_results(const std::filesystem::path& dir,
     for (long i = 0; i < n; ++i)
       for (int k = 0; k < 6; ++k) t6[6 * i + k] = stress->cauchy(order[k], i);
     f.write_block<double>("cauchy", n, 6, 0, t6);
-    attrs += fmt::format(
-        "      <Attribute Name=\"von_mises\" AttributeType=\"Scalar\" Center=\"Node\">\n        "
-        "{}\n"
-        "      </Attribute>\n",
-        item(h5name, "von_mises", n, 0, "Float", 8));
+    attrs += attribute("von_mises", "Scalar", 0);
     for (const char* v : {"principal_stress", "principal_strain"})
-      attrs += fmt::format(
-          "      <Attribute Name=\"{}\" AttributeType=\"Vector\" Center=\"Node\">\n        {}\n"
-          "      </Attribute>\n",
-          v, item(h5name, v, n, 3, "Float", 8));
-    attrs += fmt::format(
-        "      <Attribute Name=\"cauchy\" AttributeType=\"Tensor6\" Center=\"Node\">\n        {}\n"
-        "      </Attribute>\n",
-        item(h5name, "cauchy", n, 6, "Float", 8));
+      attrs += attribute(v, "Vector", 3);
+    attrs += attribute("cauchy", "Tensor6", 6);
   }
   f.close();
-
-  const auto xmf = dir / (basename + ".xmf");
-  std::ofstream out(xmf);
-  out << fmt::format(
-      "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n  <Domain>\n    <Grid Name=\"solid\" "
-      "GridType=\"Uniform\">\n"
+  return fmt::format(
       "      <Topology TopologyType=\"{}\" NumberOfElements=\"{}\">\n        {}\n      "
       "</Topology>\n"
-      "      <Geometry GeometryType=\"XYZ\">\n        {}\n      </Geometry>\n{}    </Grid>\n  "
-      "</Domain>\n</Xdmf>\n",
+      "      <Geometry GeometryType=\"XYZ\">\n        {}\n      </Geometry>\n{}",
       q2 ? "Hexahedron_27" : "Hexahedron", ne, item(h5name, "topology", ne, nen, "Int", 8),
       item(h5name, "geometry", n, 3, "Float", 8), attrs);
+}
+
+std::filesystem::path write_solid_results(const std::filesystem::path& dir,
+                                          const std::string& basename,
+                                          const structure::SolidMesh& mesh,
+                                          const Eigen::Matrix3Xd& x,
+                                          const structure::NodalStress* stress,
+                                          const SolidVectors& vectors) {
+  const std::string grid = write_solid_h5(dir, basename, mesh, x, stress, vectors);
+  const auto xmf = dir / (basename + ".xmf");
+  std::ofstream out(xmf);
+  out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n  <Domain>\n    <Grid Name=\"solid\" "
+         "GridType=\"Uniform\">\n"
+      << grid << "    </Grid>\n  </Domain>\n</Xdmf>\n";
   if (!out)
     throw std::runtime_error(fmt::format("write_solid_results: cannot write {}", xmf.string()));
   return xmf;

@@ -17,6 +17,8 @@
 #include <array>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "structure/solid_mesh.hpp"
 #include "structure/stress_recovery.hpp"
@@ -26,12 +28,22 @@ namespace valsalva::io {
 // Permutation from XDMF/VTK local node order to Gmsh order: vtk node i is Gmsh node map[i].
 const std::array<int, 27>& hex27_vtk_to_gmsh();
 
+// Extra nodal vectors (3 x N each), e.g. marker velocity and force: /<name> [N x 3].
+using SolidVectors = std::vector<std::pair<std::string, const Eigen::Matrix3Xd*>>;
+
 // Writes both files; returns the path of the .xmf. `stress` may be null (geometry and
 // displacement only). Throws with the file name on any I/O failure.
 std::filesystem::path write_solid_results(const std::filesystem::path& dir,
                                           const std::string& basename,
                                           const structure::SolidMesh& mesh,
                                           const Eigen::Matrix3Xd& x,
-                                          const structure::NodalStress* stress);
+                                          const structure::NodalStress* stress,
+                                          const SolidVectors& vectors = {});
+
+// Writes only <dir>/<basename>.h5 and returns the XDMF <Topology>, <Geometry> and <Attribute>
+// elements that describe it (for a grid of a temporal collection, io/solid_series.hpp).
+std::string write_solid_h5(const std::filesystem::path& dir, const std::string& basename,
+                           const structure::SolidMesh& mesh, const Eigen::Matrix3Xd& x,
+                           const structure::NodalStress* stress, const SolidVectors& vectors = {});
 
 }  // namespace valsalva::io

@@ -5,7 +5,9 @@ existing HDF5 dataset (read with h5py) whose shape equals the stated Dimensions.
 Where VTK's Python module is installed (python3-vtk9; Debian's build has no XDMF reader), the
 mixed topology is also loaded into a vtkUnstructuredGrid: every face VTK defines for a cell must
 have its normal pointing out of the cell, i.e. the node order is VTK's (as XDMF's is).
-Usage: check_xdmf.py FILE.xmf STEPS   (exit code 0 when every check passes)"""
+Usage: check_xdmf.py FILE.xmf STEPS [TOPOLOGY]   (exit code 0 when every check passes)
+TOPOLOGY (default Mixed, the fluid mesh) is the expected TopologyType, e.g. Hexahedron_27 for the
+Lagrangian meshes of immersed structures (no VTK orientation check for those)."""
 import os
 import sys
 import xml.etree.ElementTree as ET
@@ -56,7 +58,7 @@ def vtk_orientation(directory, collection):
     return errors
 
 
-def main(path, steps):
+def main(path, steps, topology="Mixed"):
     root = ET.parse(path).getroot()  # raises on malformed XML
     errors = []
     collections = root.findall("./Domain/Grid")
@@ -70,8 +72,8 @@ def main(path, steps):
         errors.append(f"times not increasing: {times}")
     for grid in grids:
         topo = grid.find("Topology")
-        if topo is None or topo.get("TopologyType") != "Mixed":
-            errors.append(f"{grid.get('Name')}: no Mixed topology")
+        if topo is None or topo.get("TopologyType") != topology:
+            errors.append(f"{grid.get('Name')}: no {topology} topology")
         for item in grid.iter("DataItem"):
             dims = tuple(int(d) for d in item.get("Dimensions").split())
             fname, dset = item.text.strip().split(":")
@@ -81,11 +83,12 @@ def main(path, steps):
                     errors.append(f"{fname}:{dset} missing")
                 elif f[dset].shape != dims:
                     errors.append(f"{fname}:{dset} shape {f[dset].shape}, xmf says {dims}")
-    errors += vtk_orientation(os.path.dirname(path), collections[0] if collections else None)
+    if topology == "Mixed":
+        errors += vtk_orientation(os.path.dirname(path), collections[0] if collections else None)
     for e in errors:
         print("check_xdmf:", e, file=sys.stderr)
     return 1 if errors else 0
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1], int(sys.argv[2])))
+    sys.exit(main(sys.argv[1], int(sys.argv[2]), *sys.argv[3:4]))

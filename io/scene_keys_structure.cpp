@@ -1,0 +1,262 @@
+// Scene keys of the immersed structures ([immersed], [structure.<name>]; ibm/, structure/) and
+// their reader.
+#include "io/scene_keys_structure.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <Eigen/Geometry>
+#include <numbers>
+#include <regex>
+
+#include "io/scene_keys.hpp"
+#include "io/solid_gmsh_reader.hpp"
+#include "structure/mesh_generators.hpp"
+
+namespace valsalva::io {
+
+void declare_structure_keys(Schema& s) {
+  s.section("immersed",
+            "How immersed structures exchange forces and velocities with the fluid (used only "
+            "when the scene has [structure.<name>] tables).");
+  s.choice("immersed.kernel", {"peskin4", "roma3", "bspline3"})
+      .def("peskin4")
+      .unit_of("-")
+      .doc(
+          "Base kernel of the discrete Dirac delta, RKPM-corrected on the mesh so that it keeps "
+          "partition of unity and zero first moments (ibm/kernels.hpp, ibm/rkpm.hpp)");
+  s.real("immersed.kernel_width")
+      .def(4.0)
+      .above(0)
+      .unit_of("h")
+      .doc("Support width of the kernel in units of the local fluid mesh size");
+  s.choice("immersed.coupling", {"per_stage", "per_step"})
+      .def("per_stage")
+      .unit_of("-")
+      .doc(
+          "per_stage: forces spread and markers moved at every RK stage (1.24x the stable time "
+          "step of per_step for 4x the transfer cost); per_step: forces held over the step "
+          "(ibm/immersed_structure.hpp)");
+  s.real("immersed.dt_safety")
+      .def(0.9)
+      .in_range(0, 1)
+      .unit_of("-")
+      .doc(
+          "Fraction of the coupling's time-step bound (largest eigenvalue of Interp Spread K, "
+          "ibm/ib_stability.hpp) the run may use; the bound was 1.2-1.4x below the measured "
+          "limit in tests/ibm/test_ib_stability");
+  s.integer("immersed.stability_check_every")
+      .def(50)
+      .at_least(1)
+      .unit_of("-")
+      .doc(
+          "Re-evaluate that bound every this many steps (the stiffness changes as the solids "
+          "deform; one evaluation costs about 100 spread-interpolate pairs)");
+  s.integer("immersed.log_every")
+      .def(10)
+      .at_least(1)
+      .unit_of("-")
+      .doc("A row of structures.csv (force on the fluid, tether reaction, speed) every N steps");
+
+  const std::string k = "structure.<name>";
+  s.section(k,
+            "An immersed solid (thick membrane, leaflet, bar) of hexahedra whose nodes are markers "
+            "in the fluid; its results go to structures/<name>.xmf at the field output interval.");
+  s.choice(k + ".mesh", {"bar", "shell_patch", "gmsh"})
+      .required()
+      .unit_of("-")
+      .doc(
+          "bar: a straight block (origin, size, elements; node sets clamped, tip, bottom, top, "
+          "back, front and u0..w1); shell_patch: a cylindrical shell patch about the z axis "
+          "(node sets attachment, free_edge, side0, side1); gmsh: a .msh file of hexahedra with "
+          "physical groups as node sets (structure/mesh_generators.hpp, io/solid_gmsh_reader.hpp)");
+  s.choice(k + ".order", {"q2", "q1"})
+      .def("q2")
+      .unit_of("-")
+      .doc("Element order of the generated mesh (quadratic hexahedra by default)");
+  s.when(k + ".order", k + ".mesh", {"bar", "shell_patch"});
+  s.string(k + ".file").required().unit_of("-").doc("Gmsh mesh, relative to the scene file");
+  s.when(k + ".file", k + ".mesh", {"gmsh"});
+  s.real3(k + ".origin").def(std::array{0.0, 0.0, 0.0}).unit_of("m").doc("Corner of the bar");
+  s.when(k + ".origin", k + ".mesh", {"bar"});
+  s.real3(k + ".size").required().above(0).unit_of("m").doc("Extent of the bar along x, y, z");
+  s.when(k + ".size", k + ".mesh", {"bar"});
+  s.real(k + ".radius").required().above(0).unit_of("m").doc("Mid-surface radius of the patch");
+  s.real(k + ".angle").required().in_range(0, 360).unit_of("deg").doc("Angular span, centred on +x");
+  s.real(k + ".height").required().above(0).unit_of("m").doc("Extent along the patch axis z");
+  s.real(k + ".thickness").required().above(0).unit_of("m").doc("Shell thickness");
+  for (const char* key : {".radius", ".angle", ".height", ".thickness"})
+    s.when(k + key, k + ".mesh", {"shell_patch"});
+  s.int3(k + ".elements")
+      .required()
+      .at_least(1)
+      .unit_of("-")
+      .doc("Elements along x, y, z (bar) or along the arc, the height and the thickness (patch)");
+  s.when(k + ".elements", k + ".mesh", {"bar", "shell_patch"});
+  s.real3(k + ".rotation_axis")
+      .def(std::array{0.0, 0.0, 1.0})
+      .unit_of("-")
+      .doc("Axis of a rotation of the mesh about the coordinate origin, before the translation");
+  s.real(k + ".rotation_angle").def(0.0).unit_of("deg").doc("Angle of that rotation");
+  s.real3(k + ".translate").def(std::array{0.0, 0.0, 0.0}).unit_of("m").doc("Translation");
+  s.choice(k + ".material",
+           {"neo_hookean", "mooney_rivlin", "hgo", "st_venant_kirchhoff", "linear_elastic"})
+      .def("neo_hookean")
+      .unit_of("-")
+      .doc("Constitutive law (structure/material.hpp)");
+  s.real_table(k + ".parameters")
+      .required()
+      .unit_of("Pa, -")
+      .doc(
+          "Material parameters: neo_hookean {G, K}, mooney_rivlin {C10, C01, C11, K}, hgo {mu, "
+          "K, k1, k2, kappa, gamma}, st_venant_kirchhoff and linear_elastic {E, nu}");
+  s.string_list(k + ".clamped")
+      .def(std::vector<std::string>{})
+      .unit_of("-")
+      .doc("Node sets held at their reference positions by a stiff tether");
+  s.real(k + ".tether_stiffness")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("N/m")
+      .doc(
+          "Spring per clamped node; needed with clamped sets. Stiffer holds better but lowers "
+          "the stable time step (it enters the coupling's bound like the solid stiffness)");
+  s.boolean(k + ".stresses")
+      .def(true)
+      .unit_of("-")
+      .doc("Write nodal von Mises, principal and Cauchy stresses with the structure");
+}
+
+namespace {
+
+Eigen::Vector3d vec(const Scene& scene, const std::string& key) {
+  const auto a = scene.get<std::array<double, 3>>(key);
+  return {a[0], a[1], a[2]};
+}
+
+structure::SolidMesh build_solid_mesh(const Scene& scene, const std::string& k) {
+  const auto type = scene.get<std::string>(k + ".mesh");
+  if (type == "gmsh") {
+    try {
+      return read_solid_gmsh(scene.path(k + ".file"));
+    } catch (const std::exception& e) {
+      throw scene.error(k + ".file", e.what());
+    }
+  }
+  const auto order = scene.get<std::string>(k + ".order") == "q1" ? structure::HexOrder::q1
+                                                                  : structure::HexOrder::q2;
+  const auto n = scene.get<std::array<int, 3>>(k + ".elements");
+  if (type == "bar") {
+    structure::Bar b;
+    b.origin = vec(scene, k + ".origin");
+    const auto size = vec(scene, k + ".size");
+    b.length = size.x();
+    b.height = size.y();
+    b.depth = size.z();
+    b.n_length = n[0];
+    b.n_height = n[1];
+    b.n_depth = n[2];
+    return structure::straight_bar(order, b);
+  }
+  structure::ShellPatch p;
+  p.radius = scene.get<double>(k + ".radius");
+  p.angle = scene.get<double>(k + ".angle") * std::numbers::pi / 180;
+  p.height = scene.get<double>(k + ".height");
+  p.thickness = scene.get<double>(k + ".thickness");
+  if (!(p.thickness < 2 * p.radius))
+    throw scene.error(k + ".thickness", "the shell is thicker than its diameter");
+  p.n_angle = n[0];
+  p.n_height = n[1];
+  p.n_thickness = n[2];
+  return structure::cylindrical_shell_patch(order, p);
+}
+
+void place(const Scene& scene, const std::string& k, structure::SolidMesh& mesh) {
+  const auto axis = vec(scene, k + ".rotation_axis");
+  const double angle = scene.get<double>(k + ".rotation_angle") * std::numbers::pi / 180;
+  if (angle != 0 && !(axis.norm() > 0))
+    throw scene.error(k + ".rotation_axis", "the rotation axis is zero");
+  const Eigen::Matrix3d r =
+      angle == 0 ? Eigen::Matrix3d::Identity()
+                 : Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+  mesh.X = (r * mesh.X).colwise() + vec(scene, k + ".translate");
+}
+
+// The markers' periodic box: the mesh's periodic links must be translations along the axes.
+std::optional<ibm::PeriodicBox> periodic_box(const Scene& scene, const flow::Mesh& mesh) {
+  if (mesh.periodic.empty()) return std::nullopt;
+  ibm::PeriodicBox box;
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300);
+  for (const auto& x : mesh.nodes) lo = lo.cwiseMin(x);
+  box.origin = lo;
+  for (const auto& link : mesh.periodic) {
+    int d = 0;
+    const double len = link.translation.cwiseAbs().maxCoeff(&d);
+    if (link.translation.norm() > len * (1 + 1e-12))
+      throw scene.error("mesh.periodic",
+                        fmt::format("immersed structures need periodic directions along x, y or "
+                                    "z; the link {} -> {} translates by ({}, {}, {})",
+                                    link.master, link.slave, link.translation.x(),
+                                    link.translation.y(), link.translation.z()));
+    box.periodic[d] = true;
+    box.length[d] = len;
+  }
+  return box;
+}
+
+}  // namespace
+
+ImmersedSetup read_immersed_setup(const Scene& scene, const flow::Mesh& mesh) {
+  ImmersedSetup out;
+  const auto names = scene.names("structure");
+  if (names.empty()) return out;
+  auto& o = out.options;
+  o.transfer.kernel.type = ibm::parse_kernel_type(scene.get<std::string>("immersed.kernel"));
+  o.transfer.kernel.width = scene.get<double>("immersed.kernel_width");
+  o.mode = scene.get<std::string>("immersed.coupling") == "per_step" ? ibm::CouplingMode::per_step
+                                                                     : ibm::CouplingMode::per_stage;
+  o.fluid_density = scene.get<double>("flow.density");
+  o.box = periodic_box(scene, mesh);
+  out.dt_safety = scene.get<double>("immersed.dt_safety");
+  o.stability_safety = out.dt_safety;
+  out.stability_check_every = scene.get<int>("immersed.stability_check_every");
+  out.log_every = scene.get<int>("immersed.log_every");
+
+  static const std::regex valid("[A-Za-z0-9_]+");
+  for (const auto& name : names) {
+    const std::string k = "structure." + name;
+    if (!std::regex_match(name, valid))
+      throw scene.error(k, fmt::format("structure name '{}' is not a plain name", name),
+                        "[A-Za-z0-9_]+");
+    StructureSetup st;
+    st.name = name;
+    st.mesh = build_solid_mesh(scene, k);
+    place(scene, k, st.mesh);
+    const auto where = scene.location(k + ".parameters").str() + ": key '" + k + ".parameters'";
+    try {
+      st.material = structure::make_material(
+          scene.get<std::string>(k + ".material"),
+          scene.get<std::map<std::string, double>>(k + ".parameters"), where);
+    } catch (const std::invalid_argument& e) {
+      throw SceneError({e.what()});
+    }
+    st.body.name = name;
+    st.body.clamped_sets = scene.get<std::vector<std::string>>(k + ".clamped");
+    for (const auto& set : st.body.clamped_sets)
+      if (!st.mesh.node_sets.count(set)) {
+        std::vector<std::string> known;
+        for (const auto& [n, nodes] : st.mesh.node_sets) known.push_back(n);
+        throw scene.error(k + ".clamped", fmt::format("the mesh has no node set '{}'", set),
+                          fmt::format("{}", fmt::join(known, ", ")));
+      }
+    st.body.tether_stiffness = scene.get<double>(k + ".tether_stiffness");
+    if (!st.body.clamped_sets.empty() && !(st.body.tether_stiffness > 0))
+      throw scene.error(k + ".tether_stiffness",
+                        "clamped node sets need a tether stiffness > 0 (N/m per node)");
+    st.stresses = scene.get<bool>(k + ".stresses");
+    out.structures.push_back(std::move(st));
+  }
+  return out;
+}
+
+}  // namespace valsalva::io

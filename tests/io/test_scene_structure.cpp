@@ -1,0 +1,146 @@
+// [structure.<name>] and [immersed] tables read into structures placed in the fluid: generator
+// sizes, rotation then translation, clamped sets, material, the periodic box of the markers;
+// and the errors that name the key.
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include "io/mesh_source.hpp"
+#include "io/scene_keys_structure.hpp"
+
+using namespace valsalva;
+
+namespace {
+
+const std::string fluid = R"(
+[mesh]
+source = "box"
+[mesh.box]
+origin = [-0.01, 0.0, 0.002]
+length = [0.04, 0.02, 0.006]
+cells = [8, 4, 6]
+periodic = ["z"]
+[boundary.xmin]
+type = "wall"
+[boundary.xmax]
+type = "wall"
+[boundary.ymin]
+type = "wall"
+[boundary.ymax]
+type = "wall"
+)";
+
+std::string error_of(const std::string& structure) {
+  try {
+    const auto scene = io::parse_scene(fluid + structure, "t.toml");
+    io::read_immersed_setup(scene, io::build_mesh(scene));
+  } catch (const io::SceneError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+TEST_CASE("a rotated and translated bar: node positions, sets, material and the periodic box") {
+  const auto scene = io::parse_scene(fluid + R"(
+[immersed]
+kernel = "roma3"
+kernel_width = 3.0
+coupling = "per_step"
+dt_safety = 0.5
+[structure.flap]
+mesh = "bar"
+origin = [0.0, 0.0, 0.0]
+size = [0.001, 0.008, 0.006]
+elements = [1, 4, 3]
+rotation_axis = [0.0, 0.0, 2.0]
+rotation_angle = 90.0
+translate = [0.01, 0.0, 0.002]
+material = "st_venant_kirchhoff"
+parameters = { E = 1.4e6, nu = 0.4 }
+clamped = ["bottom"]
+tether_stiffness = 5.0
+stresses = false
+)",
+                                     "t.toml");
+  const auto setup = io::read_immersed_setup(scene, io::build_mesh(scene));
+  REQUIRE(setup.structures.size() == 1);
+  const auto& s = setup.structures[0];
+  CHECK(s.name == "flap");
+  CHECK_FALSE(s.stresses);
+  CHECK(s.mesh.num_elements() == 12);
+  CHECK(s.mesh.num_nodes() == 3 * 9 * 7);  // Q2: 2n + 1 nodes per direction
+  // A quarter turn about +z maps (x, y, z) to (-y, x, z), then the translation.
+  const auto& corner = s.mesh.X;
+  const Eigen::Vector3d lo = corner.rowwise().minCoeff(), hi = corner.rowwise().maxCoeff();
+  CHECK(lo.x() == doctest::Approx(0.01 - 0.008).epsilon(1e-12));
+  CHECK(hi.x() == doctest::Approx(0.01).epsilon(1e-12));
+  CHECK(lo.y() == doctest::Approx(0.0).scale(1e-3).epsilon(1e-12));
+  CHECK(hi.y() == doctest::Approx(0.001).epsilon(1e-12));
+  CHECK(lo.z() == doctest::Approx(0.002).epsilon(1e-12));
+  CHECK(hi.z() == doctest::Approx(0.008).epsilon(1e-12));
+  // The clamped set is the bar's y = 0 face, now at x = 0.01 after the rotation.
+  CHECK(s.body.clamped_sets == std::vector<std::string>{"bottom"});
+  for (int a : s.mesh.node_set("bottom")) CHECK(s.mesh.X(0, a) == doctest::Approx(0.01).epsilon(1e-12));
+  CHECK(s.body.tether_stiffness == 5.0);
+  CHECK(s.material != nullptr);
+  const auto& o = setup.options;
+  CHECK(o.transfer.kernel.type == ibm::KernelType::roma3);
+  CHECK(o.transfer.kernel.width == 3.0);
+  CHECK(o.mode == ibm::CouplingMode::per_step);
+  CHECK(setup.dt_safety == 0.5);
+  REQUIRE(o.box.has_value());
+  CHECK(o.box->periodic == std::array{false, false, true});
+  CHECK(o.box->length.z() == doctest::Approx(0.006));
+  CHECK(o.box->origin.z() == doctest::Approx(0.002));
+}
+
+TEST_CASE("a scene without structure tables builds nothing") {
+  const auto scene = io::parse_scene(fluid, "t.toml");
+  CHECK(io::read_immersed_setup(scene, io::build_mesh(scene)).empty());
+}
+
+TEST_CASE("bad structure tables name the key") {
+  const std::string bar = R"(
+[structure.flap]
+mesh = "bar"
+size = [0.001, 0.008, 0.006]
+elements = [1, 4, 3]
+parameters = { G = 1.0e4, K = 1.0e5 }
+)";
+  CHECK(error_of(bar + "clamped = [\"foot\"]\ntether_stiffness = 1.0\n")
+            .find("key 'structure.flap.clamped': the mesh has no node set 'foot'") !=
+        std::string::npos);
+  CHECK(error_of(bar + "clamped = [\"bottom\"]\n")
+            .find("key 'structure.flap.tether_stiffness': clamped node sets need a tether") !=
+        std::string::npos);
+  CHECK(error_of(bar + "rotation_axis = [0.0, 0.0, 0.0]\nrotation_angle = 10.0\n")
+            .find("key 'structure.flap.rotation_axis': the rotation axis is zero") !=
+        std::string::npos);
+  CHECK(error_of(R"(
+[structure.flap]
+mesh = "bar"
+size = [0.001, 0.008, 0.006]
+elements = [1, 4, 3]
+parameters = { G = 1.0e4 }
+)").find("material 'neo_hookean' needs parameter 'K'") != std::string::npos);
+  CHECK(error_of(R"(
+[structure.leaflet]
+mesh = "shell_patch"
+radius = 0.001
+angle = 120.0
+height = 0.01
+thickness = 0.003
+elements = [4, 4, 1]
+parameters = { G = 1.0e4, K = 1.0e5 }
+)").find("key 'structure.leaflet.thickness': the shell is thicker than its diameter") !=
+        std::string::npos);
+  CHECK(error_of(R"(
+[structure.a-b]
+mesh = "bar"
+size = [0.001, 0.008, 0.006]
+elements = [1, 4, 3]
+parameters = { G = 1.0e4, K = 1.0e5 }
+)").find("structure name 'a-b' is not a plain name") != std::string::npos);
+}
