@@ -86,20 +86,18 @@ WomersleyResult run_womersley(const WomersleySetup& setup, MPI_Comm comm) {
   if (bc->has_pressure_outlet()) options.poisson.dirichlet = bc->pressure_dirichlet();
   // LES: the model, with running max and sum of nu_sgs / nu over owned nodes and stages.
   std::unique_ptr<les::SubgridViscosity> model;
-  double nu_max = 0, nu_sum = 0, nu_count = 0, nu_first = -1, nu_interior = 0;
+  NuSgsRecord record;
+  double nu_first = -1, nu_interior = 0;
   if (setup.les_model != "none") {
     model = std::make_unique<les::SubgridViscosity>(setup.les_model, std::nullopt, local.h);
     // Every stage (les.update = "stage"): the largest nu_sgs the model produces anywhere.
     options.subgrid_viscosity = [&](int, const flow::TensorField& g, flow::ScalarField& nu_sgs) {
       (*model)(g, nu_sgs);
-      for (int i = 0; i < local.num_owned; ++i) {
-        nu_max = std::max(nu_max, nu_sgs[i] / nu);
-        nu_sum += nu_sgs[i] / nu;
+      record.add(local, nu_sgs, nu);
+      for (int i = 0; i < local.num_owned; ++i)
         if (std::abs(local.position[i].z() - L / 2) <= L / 6)
           nu_interior = std::max(nu_interior, nu_sgs[i] / nu);
-      }
-      nu_count += local.num_owned;
-      if (nu_first < 0) nu_first = nu_max;
+      if (nu_first < 0) nu_first = record.max;
     };
   }
   flow::ProjectionRK4 solver(local, options, flow::poisson_weights(mesh, metrics, local));
@@ -182,8 +180,8 @@ WomersleyResult run_womersley(const WomersleySetup& setup, MPI_Comm comm) {
     res.transverse = std::max(res.transverse, s.transverse);
   }
   if (model) {
-    res.max_nu_ratio = local.comm.max(nu_max);
-    res.mean_nu_ratio = local.comm.sum(nu_sum) / std::max(1.0, local.comm.sum(nu_count));
+    res.max_nu_ratio = record.global_max(local);
+    res.mean_nu_ratio = record.global_mean(local);
     res.first_stage_nu_ratio = local.comm.max(nu_first);
     res.interior_nu_ratio = local.comm.max(nu_interior);
   }

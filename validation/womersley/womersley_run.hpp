@@ -13,10 +13,12 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "flow/boundary_conditions.hpp"
+#include "flow/local_mesh.hpp"
 #include "flow/womersley.hpp"
 
 namespace valsalva::validation {
@@ -69,6 +71,23 @@ struct PhaseSteps {
 };
 PhaseSteps phase_steps(const flow::Womersley& exact, double period, int phases, double cfl,
                        double h);
+
+// Running max and sum of nu_sgs / nu over the owned nodes of every RK stage (an LES model on a
+// laminar pipe flow).
+struct NuSgsRecord {
+  double max = 0, sum = 0, count = 0;
+  void add(const flow::LocalMesh& local, const flow::ScalarField& nu_sgs, double nu) {
+    for (int i = 0; i < local.num_owned; ++i) {
+      max = std::max(max, nu_sgs[i] / nu);
+      sum += nu_sgs[i] / nu;
+    }
+    count += local.num_owned;
+  }
+  double global_max(const flow::LocalMesh& local) const { return local.comm.max(max); }
+  double global_mean(const flow::LocalMesh& local) const {
+    return local.comm.sum(sum) / std::max(1.0, local.comm.sum(count));
+  }
+};
 
 // Collective: the owned values of every rank, concatenated on rank 0 (empty elsewhere).
 std::vector<double> gather_to_root(const std::vector<double>& mine, MPI_Comm comm);

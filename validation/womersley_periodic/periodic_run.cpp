@@ -54,16 +54,12 @@ PeriodicResult run_periodic_womersley(const PeriodicSetup& setup, MPI_Comm comm)
   options.poisson.tolerance = 1e-12;
   options.boundary = bc;
   std::unique_ptr<les::SubgridViscosity> model;
-  double nu_max = 0, nu_sum = 0, nu_count = 0;
+  NuSgsRecord record;  // every RK stage: the largest nu_sgs the model produces anywhere
   if (setup.les_model != "none") {
     model = std::make_unique<les::SubgridViscosity>(setup.les_model, std::nullopt, local.h);
     options.subgrid_viscosity = [&](int, const flow::TensorField& g, flow::ScalarField& nu_sgs) {
       (*model)(g, nu_sgs);
-      for (int i = 0; i < local.num_owned; ++i) {
-        nu_max = std::max(nu_max, nu_sgs[i] / nu);
-        nu_sum += nu_sgs[i] / nu;
-      }
-      nu_count += local.num_owned;
+      record.add(local, nu_sgs, nu);
     };
   }
   // On prisms poisson_weights gives the two-point weights (P1 weights need tetrahedra); the
@@ -123,8 +119,8 @@ PeriodicResult run_periodic_womersley(const PeriodicSetup& setup, MPI_Comm comm)
   res.transverse = local.comm.max(transverse) / res.u_peak;
   res.samples = gather_to_root(mine, comm);
   if (model) {
-    res.max_nu_ratio = local.comm.max(nu_max);
-    res.mean_nu_ratio = local.comm.sum(nu_sum) / std::max(1.0, local.comm.sum(nu_count));
+    res.max_nu_ratio = record.global_max(local);
+    res.mean_nu_ratio = record.global_mean(local);
   }
   res.final_velocity.assign(3 * static_cast<std::size_t>(metrics.num_nodes()), 0.0);
   for (int j = 0; j < local.num_owned; ++j)
