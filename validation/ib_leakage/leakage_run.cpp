@@ -38,11 +38,18 @@ void centre_line_pressure(const LeakageChannel& c, const flow::ScalarField& p, L
 // marker forces again through a transfer of the same kernel. Returns {interior, wall} x sums.
 struct ForceSplit {
   ForceSplit(LeakageChannel& c) : c_(c), transfer_(c.local, c.ib->options().transfer) {
+    double v[2] = {0, 0};
     for (int j = 0; j < c.local.num_owned; ++j) {
       const double y = c.local.position[j].y();
       wall_.push_back(y < 1e-9 * c.setup.height || y > (1 - 1e-9) * c.setup.height);
+      v[wall_.back() ? 1 : 0] += c.local.volume[j];
     }
+    const double interior = c.local.comm.sum(v[0]);
+    span_ = c.setup.height * interior / (interior + c.local.comm.sum(v[1]));
   }
+  // Height of the interior nodes' dual volumes (H - h on the uniform mesh): the pressure
+  // gradient over the wall nodes' half cells meets their imposed velocity, not the membrane.
+  double interior_span() const { return span_; }
   std::array<double, 2> operator()() {
     const double depth = c_.setup.depth();
     wrapped_ = c_.ib->positions();
@@ -64,6 +71,7 @@ struct ForceSplit {
   LeakageChannel& c_;
   ibm::DiracTransfer transfer_;
   std::vector<char> wall_;
+  double span_ = 0;
   Eigen::Matrix3Xd wrapped_, force_;
   flow::VectorField density_;
 };
@@ -154,6 +162,7 @@ LeakageResult run_leakage(const LeakageSetup& setup, MPI_Comm comm) {
   const io::RegionMean down(c.local, mid + Eigen::Vector3d(x_down, 0, 0), region_radius,
                             "downstream");
   ForceSplit split(c);
+  r.interior_span = split.interior_span();
 
   flow::FlowState state{flow::VectorField(c.local.num_local(), Eigen::Vector3d::Zero()),
                         flow::ScalarField(c.local.num_local(), 0.0), 0.0};

@@ -42,6 +42,7 @@ struct LeakageResult {
   double leak_change = 0;     // |leak(1st half of window) - leak(2nd half)| / leak_reference
   double jump = 0;            // Pa
   double tether = 0, interior = 0, wall = 0;  // N/m
+  double interior_span = 0;  // height of the interior (not wall) nodes' dual volumes [m]
   double deflection = 0;                      // m
   double static_deflection = 0;  // of the static membrane under the sustained jump [m]
   std::vector<double> profile_x, profile_p;  // pressure on the centre line (y = H/2) at the end
