@@ -45,8 +45,9 @@ struct TransferCost {
 };
 
 // Times the three transfer operations on `markers` (repeat calls each).
-TransferCost time_transfer(valsalva::flow::LocalMesh& local, const valsalva::ibm::TransferOptions& o,
-                           const Points& markers, int repeat) {
+TransferCost time_transfer(valsalva::flow::LocalMesh& local,
+                           const valsalva::ibm::TransferOptions& o, const Points& markers,
+                           int repeat) {
   valsalva::ibm::DiracTransfer transfer(local, o);
   Points force(markers.size(), Eigen::Vector3d(1, 2, 3)), values(markers.size());
   valsalva::flow::VectorField field(local.num_local(), Eigen::Vector3d(0.1, 0.2, 0.3));
@@ -77,8 +78,8 @@ void marker_clouds(const std::map<std::string, std::string>& opt, int repeat, bo
   std::mt19937_64 rng(7);
   for (double n : numbers(opt.contains("markers") ? opt.at("markers") : "1000,4000,16000")) {
     Points markers(static_cast<std::size_t>(n));
-    std::uniform_real_distribution<double> x(s.upstream - 4e-3, s.upstream + 4e-3),
-        y(0, s.height), z(0, s.depth());
+    std::uniform_real_distribution<double> x(s.upstream - 4e-3, s.upstream + 4e-3), y(0, s.height),
+        z(0, s.depth());
     for (auto& p : markers) p = {x(rng), y(rng), z(rng)};
     for (double w : numbers(opt.contains("widths") ? opt.at("widths") : "3,4,6")) {
       valsalva::ibm::TransferOptions o;
@@ -86,15 +87,14 @@ void marker_clouds(const std::map<std::string, std::string>& opt, int repeat, bo
       const auto t = time_transfer(c.local, o, markers, repeat);
       const double us = 1e6 / n, stage = (t.locate + t.spread + t.interpolate) * us;
       if (root)
-        fmt::print("  {:>7.0f} {:>5g} {:>8.3f} {:>8.3f} {:>8.3f} {:>8.3f} {:>12.4f} {:>9.1f}\n",
-                   n, w, t.locate * us, t.spread * us, t.interpolate * us, stage,
+        fmt::print("  {:>7.0f} {:>5g} {:>8.3f} {:>8.3f} {:>8.3f} {:>8.3f} {:>12.4f} {:>9.1f}\n", n,
+                   w, t.locate * us, t.spread * us, t.interpolate * us, stage,
                    1e3 * stage / t.support, t.support);
     }
   }
 }
 
-void coupled_step(const std::map<std::string, std::string>& opt, int steps, int repeat,
-                  bool root) {
+void coupled_step(const std::map<std::string, std::string>& opt, int steps, int repeat, bool root) {
   v::LeakageSetup s;
   s.h = std::stod(opt.contains("h") ? opt.at("h") : "2.5e-4");
   s.depth_cells = std::stoi(opt.contains("depth-cells") ? opt.at("depth-cells") : "48");
@@ -152,10 +152,10 @@ void coupled_step(const std::map<std::string, std::string>& opt, int steps, int 
         "transfer total {:.1f} %, solid forces {:.1f} %; parts / measured hook = {:.3f}\n"
         "  stability bound (power iteration, once per run): {:.3f} s CPU = {:.1f} steps\n",
         s.h, c.local.global_nodes, m, s.kernel_width, dt, step, hook, pct(hook), finish,
-        pct(finish), tc.locate, 1e6 * tc.locate / m, tc.spread, 1e6 * tc.spread / m,
-        tc.interpolate, 1e6 * tc.interpolate / m, forces, 1e6 * forces / m, tc.support,
-        pct(4 * tc.locate), pct(4 * tc.spread), pct(4 * tc.interpolate), pct(4 * transfer),
-        pct(4 * forces), 4 * (transfer + forces) / hook, bound_seconds, bound_seconds / step);
+        pct(finish), tc.locate, 1e6 * tc.locate / m, tc.spread, 1e6 * tc.spread / m, tc.interpolate,
+        1e6 * tc.interpolate / m, forces, 1e6 * forces / m, tc.support, pct(4 * tc.locate),
+        pct(4 * tc.spread), pct(4 * tc.interpolate), pct(4 * transfer), pct(4 * forces),
+        4 * (transfer + forces) / hook, bound_seconds, bound_seconds / step);
   }
 }
 

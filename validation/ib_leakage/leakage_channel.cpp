@@ -15,7 +15,9 @@ namespace valsalva::validation {
 
 namespace {
 
-int cells(double length, double h) { return static_cast<int>(std::lround(length / h)); }
+int cells(double length, double h) {
+  return static_cast<int>(std::lround(length / h));
+}
 
 flow::Mesh channel_mesh(const LeakageSetup& s) {
   io::BoxSpec box;

@@ -53,7 +53,8 @@ struct ForceSplit {
   std::array<double, 2> operator()() {
     const double depth = c_.setup.depth();
     wrapped_ = c_.ib->positions();
-    for (int a = 0; a < wrapped_.cols(); ++a) wrapped_(2, a) -= depth * std::floor(wrapped_(2, a) / depth);
+    for (int a = 0; a < wrapped_.cols(); ++a)
+      wrapped_(2, a) -= depth * std::floor(wrapped_(2, a) / depth);
     transfer_.locate({reinterpret_cast<const Eigen::Vector3d*>(wrapped_.data()),
                       static_cast<std::size_t>(wrapped_.cols())});
     force_ = c_.ib->forces();
@@ -172,19 +173,18 @@ LeakageResult run_leakage(const LeakageSetup& setup, MPI_Comm comm) {
     const auto flux = c.bc->patch_fluxes(state.velocity);
     const auto& x = c.ib->positions();
     const auto force = split();
-    r.history.push_back({state.time, c.inlet_pressure(state.time),
-                         -flux[static_cast<std::size_t>(c.inlet_patch)] / depth,
-                         flux[static_cast<std::size_t>(c.outlet_patch)] / depth,
-                         displaced_area(line, x, s.membrane_x()),
-                         membrane_deflection(c.membrane, x),
-                         up(state.pressure) - down(state.pressure),
-                         -c.ib->tether_force(0).x() / depth, -force[0] / depth, -force[1] / depth,
-                         c.ib->velocities().colwise().norm().maxCoeff()});
+    r.history.push_back(
+        {state.time, c.inlet_pressure(state.time),
+         -flux[static_cast<std::size_t>(c.inlet_patch)] / depth,
+         flux[static_cast<std::size_t>(c.outlet_patch)] / depth,
+         displaced_area(line, x, s.membrane_x()), membrane_deflection(c.membrane, x),
+         up(state.pressure) - down(state.pressure), -c.ib->tether_force(0).x() / depth,
+         -force[0] / depth, -force[1] / depth, c.ib->velocities().colwise().norm().maxCoeff()});
     const auto rates = flow::stability_rates(c.local, weights, nu, state.velocity, scratch);
     if (r.dt * rates.stability > 1)
       throw std::runtime_error(fmt::format(
-          "ib_leakage: dt {:.4g} s beyond the RK4 stability limit {:.4g} s at t = {:.4g} s",
-          r.dt, 1 / rates.stability, state.time));
+          "ib_leakage: dt {:.4g} s beyond the RK4 stability limit {:.4g} s at t = {:.4g} s", r.dt,
+          1 / rates.stability, state.time));
   };
   sample();
   for (int n = 1; n <= steps; ++n) {
@@ -207,6 +207,15 @@ LeakageResult run_leakage(const LeakageSetup& setup, MPI_Comm comm) {
   window_means(r.history, t1, tm, halves, first);
   window_means(r.history, tm, t2, halves, second);
   window_means(r.history, t1, t2, r, r.leak);
+  // Volume that crossed the moving membrane while the load was ramped: int Q_in - [A].
+  double inflow = 0;
+  const LeakageSample* ramp_end = &r.history.front();
+  for (std::size_t i = 1; i < r.history.size() && r.history[i].time <= s.ramp + 1e-12; ++i) {
+    inflow += (r.history[i].time - r.history[i - 1].time) *
+              (r.history[i].flow_in + r.history[i - 1].flow_in) / 2;
+    ramp_end = &r.history[i];
+  }
+  r.ramp_leak = (inflow - ramp_end->area) / ramp_end->area;
   r.leak_change = std::abs(first - second) / r.leak_reference;
   centre_line_pressure(c, state.pressure, r);
   const auto statics = membrane_static_shape(c.membrane, *c.material, r.jump);
@@ -214,7 +223,8 @@ LeakageResult run_leakage(const LeakageSetup& setup, MPI_Comm comm) {
   for (const auto& [from, to] :
        {std::pair{&c.ib->positions(), &r.final_line}, std::pair{&statics, &r.static_line}}) {
     to->resize(3, static_cast<Eigen::Index>(line.size()));
-    for (std::size_t i = 0; i < line.size(); ++i) to->col(static_cast<Eigen::Index>(i)) = from->col(line[i]);
+    for (std::size_t i = 0; i < line.size(); ++i)
+      to->col(static_cast<Eigen::Index>(i)) = from->col(line[i]);
   }
   r.wall_seconds = c.local.comm.max(MPI_Wtime() - t0);
   return r;

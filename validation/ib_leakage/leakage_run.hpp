@@ -40,10 +40,12 @@ struct LeakageResult {
   double leak = 0;            // per depth [m^2/s]
   double leak_reference = 0;  // Bernoulli flow of the open channel, H sqrt(2 dp / rho) [m^2/s]
   double leak_change = 0;     // |leak(1st half of window) - leak(2nd half)| / leak_reference
-  double jump = 0;            // Pa
+  // Volume leaked through the moving membrane during the ramp / the area it displaced then.
+  double ramp_leak = 0;
+  double jump = 0;                            // Pa
   double tether = 0, interior = 0, wall = 0;  // N/m
-  double interior_span = 0;  // height of the interior (not wall) nodes' dual volumes [m]
-  double deflection = 0;                      // m
+  double interior_span = 0;      // height of the interior (not wall) nodes' dual volumes [m]
+  double deflection = 0;         // m
   double static_deflection = 0;  // of the static membrane under the sustained jump [m]
   std::vector<double> profile_x, profile_p;  // pressure on the centre line (y = H/2) at the end
   Eigen::Matrix3Xd final_line, static_line;  // membrane centre line at the end, static
