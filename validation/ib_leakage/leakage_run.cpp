@@ -16,14 +16,14 @@ namespace {
 
 constexpr double region_distance = 5e-3, region_radius = 1.5e-3;  // m, see the header
 
-// Pressure at the centre-line nodes (y = H/2, z = 0), indexed by round(x / h), all ranks.
+// Pressure on the node row nearest y = H/2 (z = 0), indexed by round(x / h), all ranks.
 void centre_line_pressure(const LeakageChannel& c, const flow::ScalarField& p, LeakageResult& r) {
   const auto& s = c.setup;
   const int n = static_cast<int>(std::lround(s.length() / s.h)) + 1;
   std::vector<double> sum(static_cast<std::size_t>(n), 0.0);
   for (int j = 0; j < c.local.num_owned; ++j) {
     const auto& x = c.local.position[j];
-    if (std::abs(x.y() - s.height / 2) > s.h / 4 || std::abs(x.z()) > s.h / 4) continue;
+    if (std::abs(x.y() - s.height / 2) > 0.51 * s.h || std::abs(x.z()) > s.h / 4) continue;
     sum[static_cast<std::size_t>(std::lround(x.x() / s.h))] = p[j];
   }
   MPI_Allreduce(MPI_IN_PLACE, sum.data(), n, MPI_DOUBLE, MPI_SUM, c.local.comm.get());
