@@ -45,8 +45,10 @@ LeakageChannel::LeakageChannel(const LeakageSetup& s, MPI_Comm comm)
         "ib_leakage: h = {} m, kernel width {} h, thickness {} m: need h > 0, thickness > 0 and "
         "the kernel narrower than the slab depth {} cells",
         s.h, s.kernel_width, s.thickness, s.depth_cells));
-  // Ghost layers enough for the kernel's half-width (in cells) plus the moment search.
-  const int layers = static_cast<int>(std::ceil(s.kernel_width / 2)) + 2;
+  // Ghost layers are breadth-first on the edge graph (Manhattan distance on hexahedra): a
+  // marker's support reaches floor(width / 2 + 1/2) cells per axis from its nearest (owned)
+  // node, so 3 times that, plus one layer that the support must not touch.
+  const int layers = 3 * static_cast<int>(std::floor(s.kernel_width / 2 + 0.5)) + 1;
   local = flow::distribute(mesh, metrics, comm, {layers, "metis"});
   auto inlet = flow::boundary_spec("xmin", flow::BoundaryType::pressure_outlet);
   auto outlet = flow::boundary_spec("xmax", flow::BoundaryType::pressure_outlet);

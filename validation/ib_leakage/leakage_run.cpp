@@ -37,7 +37,7 @@ void centre_line_pressure(const LeakageChannel& c, const flow::ScalarField& p, L
 // velocity is imposed, so the force spread there never reaches the fluid): spreads the last
 // marker forces again through a transfer of the same kernel. Returns {interior, wall} x sums.
 struct ForceSplit {
-  ForceSplit(LeakageChannel& c) : c_(c), transfer_(c.local, c.ib->options().transfer) {
+  explicit ForceSplit(LeakageChannel& c) : c_(c), transfer_(c.local, c.ib->options().transfer) {
     double v[2] = {0, 0};
     for (int j = 0; j < c.local.num_owned; ++j) {
       const double y = c.local.position[j].y();
