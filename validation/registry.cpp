@@ -21,6 +21,7 @@ Case poiseuille_wss_case();
 Case tgv_les_case();
 Case womersley_case();
 Case womersley_periodic_case();
+Case ib_leakage_case();
 
 const std::vector<Case>& all_cases() {
   // clang-format off
@@ -41,6 +42,7 @@ const std::vector<Case>& all_cases() {
       tgv_les_case(),
       womersley_case(),
       womersley_periodic_case(),
+      ib_leakage_case(),
   };
   // clang-format on
   return cases;
