@@ -20,6 +20,7 @@ Case womersley_statistics_case();
 Case poiseuille_wss_case();
 Case tgv_les_case();
 Case womersley_case();
+Case turek_hron_fsi_case();
 
 const std::vector<Case>& all_cases() {
   // clang-format off
@@ -39,6 +40,7 @@ const std::vector<Case>& all_cases() {
       poiseuille_wss_case(),
       tgv_les_case(),
       womersley_case(),
+      turek_hron_fsi_case(),
   };
   // clang-format on
   return cases;

@@ -1,0 +1,271 @@
+// Turek–Hron FSI1 (steady, Re 20) and FSI3 (periodic, Re 200) (Turek & Hron 2006,
+// doi:10.1007/3-540-34596-5_15; refdata/turek_hron_fsi): the elastic bar behind the rigid
+// cylinder, immersed (ITBM, massless solid: rho_s = rho_f as in both cases) in a tetrahedral
+// slab with the cylinder body-fitted (validation/turek_hron_fsi/fsi_run.hpp for the set-up,
+// plane strain and the force convention).
+// FSI1: from the developed channel profile (no inflow ramp: only the steady state is compared)
+// until drag and uy_A change by < 1e-4 over 0.5 s, on three meshes; tip displacement of A
+// and drag/lift against TH2006 (fsi1_convergence.csv); uy_A and drag asserted within 5 % on the
+// finest. FSI3: the benchmark's 2 s ramp with a small seed bend, uy_A amplitude and frequency,
+// drag and lift over the last period against TH2006 within 10 % (fsi3_series.csv).
+// Quick: FSI1 on the coarse mesh only, shorter.
+// Options (environment, so that the default run stays within the CPU budget):
+//   VALSALVA_TUREK_HRON_FSI3=full     FSI3 on the medium mesh to t = 12 s (hours of CPU)
+//   VALSALVA_TUREK_HRON_FSI=fsi1|fsi3 only one of the two cases
+//   VALSALVA_TUREK_HRON_FSI_LEVEL=i   FSI1 on level i only (0, 1, 2), also the timing level
+//   VALSALVA_TUREK_HRON_FSI1_T=T      FSI1 end time (default 2.5 s; quick 1.4 s)
+//   VALSALVA_TUREK_HRON_FSI=timing    only FSI3 cost: 300 steps at the coarse mesh with the
+//                                     per-part profile (timing.csv), no FSI1.
+#include <fmt/format.h>
+#include <fmt/os.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <optional>
+#include <string>
+
+#include "validation/case.hpp"
+#include "validation/turek_hron_fsi/fsi_run.hpp"
+#include "validation/turek_hron_fsi/periodic_stats.hpp"
+
+namespace valsalva::validation {
+
+namespace {
+
+std::string env(const char* name) {
+  const char* v = std::getenv(name);
+  return v ? v : "";
+}
+
+const std::vector<FsiLevel> kLevels = {{0.02, 0.06, 5}, {0.014, 0.05, 5}, {0.01, 0.04, 5}};
+
+void write_series(const Context& ctx, const std::string& file, const FsiResult& r) {
+  auto out = fmt::output_file((ctx.out_dir / file).string());
+  out.print("t,ux_A,uy_A,drag,lift,drag_bar,lift_bar\n");
+  for (const auto& s : r.samples)
+    out.print("{:.6e},{:.8e},{:.8e},{:.8e},{:.8e},{:.8e},{:.8e}\n", s.t, s.ux, s.uy, s.drag,
+              s.lift, s.drag_bar, s.lift_bar);
+}
+
+void write_timing(const Context& ctx, const FsiResult& r) {
+  auto out = fmt::output_file((ctx.out_dir / "timing.csv").string());
+  out.print(
+      "ranks,nodes,markers,steps,dt,simulated_s,wall_s,wall_per_simulated_s,ib_hook_share,"
+      "locate_s,spread_s,interp_s,solid_forces_s\n");
+  const double simulated = r.samples.back().t;
+  out.print("{},{},{},{},{:.4e},{:.4e},{:.2f},{:.1f},{:.3f},{:.3e},{:.3e},{:.3e},{:.3e}\n",
+            r.ranks, r.nodes, r.markers, r.steps, r.dt, simulated, r.loop_wall, r.loop_wall / simulated,
+            r.ib_hook_seconds / r.loop_wall, r.t_locate, r.t_spread, r.t_interp, r.t_forces);
+}
+
+// The steady values: averages over the last `window` seconds (the coarse IB state keeps a small
+// jitter, the kernel width jumping with the nearest fluid node), and the spread (max - min) of
+// the drag over that window relative to its mean.
+struct Steady {
+  double ux = 0, uy = 0, drag = 0, lift = 0, drag_spread = 0;
+};
+
+Steady steady_values(const FsiResult& r, double window) {
+  Steady s;
+  const double t0 = r.samples.back().t - window;
+  double lo = 1e300, hi = -1e300;
+  int n = 0;
+  for (const auto& x : r.samples) {
+    if (x.t < t0) continue;
+    s.ux += x.ux;
+    s.uy += x.uy;
+    s.drag += x.drag;
+    s.lift += x.lift;
+    lo = std::min(lo, x.drag);
+    hi = std::max(hi, x.drag);
+    ++n;
+  }
+  s.ux /= n;
+  s.uy /= n;
+  s.drag /= n;
+  s.lift /= n;
+  s.drag_spread = (hi - lo) / s.drag;
+  return s;
+}
+
+FsiResult fsi1_level(const Context& ctx, const FsiLevel& level, double t_end) {
+  FsiSpec s;
+  s.p = read_turek_hron_parameters(ctx.refdata_dir / "turek_hron_fsi", "FSI1");
+  s.level = level;
+  s.t_end = t_end;
+  s.ramp = 0;
+  s.steady_window = 0.5;  // progress report only (tolerance 0: never stops early)
+  s.steady_tolerance = 0;
+  s.sample_interval = 0.005;
+  s.per_step = true;  // the steady state does not depend on the coupling's time scheme
+  return run_fsi(ctx, s);
+}
+
+FsiSpec fsi3_spec(const Context& ctx, const FsiLevel& level, double t_end) {
+  FsiSpec s;
+  s.p = read_turek_hron_parameters(ctx.refdata_dir / "turek_hron_fsi", "FSI3");
+  s.level = level;
+  s.t_end = t_end;
+  s.ramp = 1;  // half the benchmark's: only the periodic state is compared
+  s.initial_bend = 1e-3;
+  s.sample_interval = 1e-3;
+  // Lagging the force by one step costs a phase error omega dt ~ 3e-3 rad per step at 5 Hz
+  // and dt ~ 1e-4 s, for 1.4x fewer marker locations per simulated second than per-stage.
+  s.per_step = true;
+  return s;
+}
+
+void run_fsi1(const Context& ctx, Report& report, int rank) {
+  const auto dir = ctx.refdata_dir / "turek_hron_fsi";
+  const auto ref = [&](const char* q) { return read_turek_hron_reference(dir, "FSI1", q, "TH2006").mean; };
+  const double u_bar = read_turek_hron_parameters(dir, "FSI1").U_bar;
+  const double ux_ref = ref("ux_A"), uy_ref = ref("uy_A"), drag_ref = ref("drag"),
+               lift_ref = ref("lift");
+  std::optional<fmt::ostream> csv;
+  if (rank == 0) {
+    csv.emplace(fmt::output_file((ctx.out_dir / "fsi1_convergence.csv").string()));
+    csv->print(
+        "size_near,size_far,nodes,markers,dt,dt_bound,steps,t_end,ux_A,uy_A,drag,lift,"
+        "err_ux,err_uy,err_drag,err_lift,drag_spread_last_window,max_marker_w,balance_error,"
+        "wall_s\n");
+  }
+  // VALSALVA_TUREK_HRON_FSI_LEVEL=i: level i only (0-based; one row of the table per run).
+  const std::string only = env("VALSALVA_TUREK_HRON_FSI_LEVEL");
+  const int first = only.empty() ? 0 : std::stoi(only);
+  const int n = ctx.quick ? 1 : (only.empty() ? static_cast<int>(kLevels.size()) : first + 1);
+  FsiResult r;
+  Steady s;
+  for (int l = first; l < n; ++l) {
+    const double t_end = !env("VALSALVA_TUREK_HRON_FSI1_T").empty()
+                             ? std::stod(env("VALSALVA_TUREK_HRON_FSI1_T"))
+                             : (ctx.quick ? 1.4 : 2.5);
+    r = fsi1_level(ctx, kLevels[l], t_end);
+    s = steady_values(r, ctx.quick ? 0.3 : 0.75);
+    if (rank == 0) {
+      csv->print(
+          "{},{},{},{},{:.4e},{:.4e},{},{:.3f},{:.6e},{:.6e},{:.6f},{:.6f},{:.4f},{:.4f},{:.4f},"
+          "{:.4f},{:.2e},{:.2e},{:.2e},{:.1f}\n",
+          kLevels[l].size_near, kLevels[l].size_far, r.nodes, r.markers, r.dt, r.dt_bound, r.steps,
+          r.samples.back().t, s.ux, s.uy, s.drag, s.lift, s.ux / ux_ref - 1, s.uy / uy_ref - 1,
+          s.drag / drag_ref - 1, s.lift / lift_ref - 1, s.drag_spread, r.max_w, r.balance_error,
+          r.wall);
+      csv->flush();
+      write_series(ctx, fmt::format("fsi1_series_level{}.csv", l + 1), r);
+      fmt::print(
+          "FSI1 level {} (size {}): {} nodes, {} markers, dt {:.3e} (bound {:.3e}), {} steps to "
+          "t = {:.2f}: ux_A {:.4e} uy_A {:.4e} drag {:.4f} lift {:.4f}, {:.0f} s\n",
+          l + 1, kLevels[l].size_near, r.nodes, r.markers, r.dt, r.dt_bound, r.steps,
+          r.samples.back().t, s.ux, s.uy, s.drag, s.lift, r.wall);
+    }
+  }
+  report.add("FSI1 spread force balance |sum V f - sum F| / |sum F|", r.balance_error, 0, 1e-11,
+             Check::at_most);
+  if (ctx.quick) {
+    // Coarse mesh (size 0.02 = the bar's thickness, kernel support 0.08), 1 s from the
+    // developed profile: the drag is already at its coarse-mesh plateau (21.3-21.7 N/m from
+    // t = 1 to 6 s, fsi1_series.png), 49 % above TH2006 because the 4h kernel blocks the
+    // channel like a bar four times thicker; asserted within 60 % so that a regression of the
+    // coupling or the force balance shows. The marker z-velocity (plane strain) measured 0.8 %
+    // of the peak inflow velocity (the impulsive start included).
+    report.add("FSI1 quick drag [N/m], coarse mesh, within 60 % of TH2006", s.drag, drag_ref,
+               0.6 * drag_ref);
+    report.add("FSI1 quick max marker |w| / U_max (plane strain)", r.max_w / (1.5 * u_bar), 0, 0.02,
+               Check::at_most);
+    return;
+  }
+  report.add(fmt::format("FSI1 uy_A [m], size {}", kLevels[n - 1].size_near), s.uy, uy_ref,
+             0.05 * uy_ref);
+  report.add(fmt::format("FSI1 drag [N/m], size {}", kLevels[n - 1].size_near), s.drag, drag_ref,
+             0.05 * drag_ref);
+  report.add("FSI1 steady: drag (max - min) / mean over the last 0.75 s", s.drag_spread, 0, 0.01,
+             Check::at_most);
+}
+
+void run_fsi3(const Context& ctx, Report& report, int rank) {
+  const auto dir = ctx.refdata_dir / "turek_hron_fsi";
+  const bool full = env("VALSALVA_TUREK_HRON_FSI3") == "full";
+  const auto spec = fsi3_spec(ctx, kLevels[full ? 2 : 0], full ? 10.0 : 6.0);
+  const auto r = run_fsi(ctx, spec);
+  std::vector<double> t, uy, drag, lift;
+  for (const auto& s : r.samples) {
+    t.push_back(s.t);
+    uy.push_back(s.uy);
+    drag.push_back(s.drag);
+    lift.push_back(s.lift);
+  }
+  // The last 1.5 s: several periods of the established oscillation.
+  const auto y = periodic_stats(t, uy, spec.t_end - 1.5);
+  const auto d = window_stats(t, drag, y.t0, y.t1), l = window_stats(t, lift, y.t0, y.t1);
+  if (rank == 0) {
+    write_series(ctx, "fsi3_series.csv", r);
+    auto out = fmt::output_file((ctx.out_dir / "fsi3_summary.csv").string());
+    out.print(
+        "size_near,nodes,markers,dt,steps,t_end,periods,uy_mean,uy_amplitude,frequency,drag_mean,"
+        "drag_amplitude,lift_mean,lift_amplitude,wall_s,wall_per_simulated_s\n");
+    out.print("{},{},{},{:.4e},{},{:.3f},{},{:.5e},{:.5e},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.1f},"
+              "{:.1f}\n",
+              spec.level.size_near, r.nodes, r.markers, r.dt, r.steps, r.samples.back().t,
+              y.periods, y.mean, y.amplitude, y.frequency, d.mean, d.amplitude, l.mean,
+              l.amplitude, r.wall, r.loop_wall / r.samples.back().t);
+    fmt::print(
+        "FSI3 (size {}): {} steps, dt {:.3e}: uy_A {:.4e} +- {:.4e} at {:.3f} Hz ({} periods), "
+        "drag {:.2f} +- {:.2f}, lift {:.2f} +- {:.2f}; {:.0f} s\n",
+        spec.level.size_near, r.steps, r.dt, y.mean, y.amplitude, y.frequency, y.periods, d.mean,
+        d.amplitude, l.mean, l.amplitude, r.wall);
+  }
+  const auto uy_ref = read_turek_hron_reference(dir, "FSI3", "uy_A", "TH2006");
+  const auto drag_ref = read_turek_hron_reference(dir, "FSI3", "drag", "TH2006");
+  const auto lift_ref = read_turek_hron_reference(dir, "FSI3", "lift", "TH2006");
+  const auto level = fmt::format("size {}", spec.level.size_near);
+  report.add("FSI3 uy_A amplitude [m], " + level, y.amplitude, uy_ref.amplitude,
+             0.1 * uy_ref.amplitude);
+  report.add("FSI3 uy_A frequency [Hz], " + level, y.frequency, uy_ref.frequency,
+             0.1 * uy_ref.frequency);
+  report.add("FSI3 drag mean [N/m], " + level, d.mean, drag_ref.mean, 0.1 * drag_ref.mean);
+  report.add("FSI3 drag amplitude [N/m], " + level, d.amplitude, drag_ref.amplitude,
+             0.1 * drag_ref.amplitude);
+  report.add("FSI3 lift amplitude [N/m], " + level, l.amplitude, lift_ref.amplitude,
+             0.1 * lift_ref.amplitude);
+}
+
+void run_timing(const Context& ctx, int rank) {
+  auto spec = fsi3_spec(ctx, kLevels[0], 10.0);
+  spec.max_steps = 300;
+  spec.ramp = 0;  // full speed from the start: the cost of the periodic state
+  spec.profile = true;
+  spec.per_step = env("VALSALVA_TUREK_HRON_FSI_MODE") != "per_stage";
+  if (!env("VALSALVA_TUREK_HRON_FSI_LEVEL").empty())
+    spec.level = kLevels.at(std::stoul(env("VALSALVA_TUREK_HRON_FSI_LEVEL")));
+  if (env("VALSALVA_TUREK_HRON_FSI_CASE") == "FSI1")
+    spec.p = read_turek_hron_parameters(ctx.refdata_dir / "turek_hron_fsi", "FSI1");
+  const auto r = run_fsi(ctx, spec);
+  if (rank == 0) {
+    write_timing(ctx, r);
+    fmt::print(
+        "FSI3 timing: {} ranks, {} nodes, {} markers, {} steps of {:.3e} s in {:.1f} s: {:.0f} s "
+        "per simulated second; IB hook {:.0f} %; per call locate {:.2e} s, spread {:.2e} s, "
+        "interpolate {:.2e} s, solid forces {:.2e} s\n",
+        r.ranks, r.nodes, r.markers, r.steps, r.dt, r.wall, r.loop_wall / r.samples.back().t,
+        100 * r.ib_hook_seconds / r.loop_wall, r.t_locate, r.t_spread, r.t_interp, r.t_forces);
+  }
+}
+
+void run(const Context& ctx, Report& report) {
+  int rank = 0;
+  MPI_Comm_rank(ctx.comm, &rank);
+  if (env("VALSALVA_TUREK_HRON_FSI") == "timing") return run_timing(ctx, rank);
+  const std::string only = env("VALSALVA_TUREK_HRON_FSI");
+  if (only != "fsi3") run_fsi1(ctx, report, rank);
+  if (!ctx.quick && only != "fsi1") run_fsi3(ctx, report, rank);
+}
+
+}  // namespace
+
+Case turek_hron_fsi_case() {
+  return {"turek_hron_fsi",
+          "Turek-Hron FSI1 (steady) and FSI3 (periodic): immersed elastic bar behind a "
+          "body-fitted cylinder, tip displacement, drag, lift vs TH2006",
+          run};
+}
+
+}  // namespace valsalva::validation
