@@ -38,9 +38,9 @@ void check(const CylinderChannelSpec& s) {
         "generate_cylinder_channel_mesh: layers = {}; at least 3 are needed so that a periodic "
         "node and its image are not neighbours",
         s.layers));
-  if (s.box_size != 0 && !(s.box_size > 0 && s.box_x0 < s.box_x1 && s.box_y0 < s.box_y1 &&
-                           s.box_x0 >= 0 && s.box_x1 <= s.length && s.box_y0 >= 0 &&
-                           s.box_y1 <= s.height && s.box_transition > 0))
+  if (s.box_size != 0 &&
+      !(s.box_size > 0 && s.box_x0 < s.box_x1 && s.box_y0 < s.box_y1 && s.box_x0 >= 0 &&
+        s.box_x1 <= s.length && s.box_y0 >= 0 && s.box_y1 <= s.height && s.box_transition > 0))
     throw std::invalid_argument(fmt::format(
         "generate_cylinder_channel_mesh: refinement box [{}, {}] x [{}, {}] with size {} and "
         "transition {} must be non-empty, inside the channel and have positive sizes",
@@ -103,9 +103,8 @@ flow::Mesh generate_cylinder_channel_mesh(const CylinderChannelSpec& s) {
       gmsh::model::mesh::field::setNumber(box, "ZMax", s.thickness + 1);
       gmsh::model::mesh::field::setNumber(box, "Thickness", s.box_transition);
       background = gmsh::model::mesh::field::add("Min");
-      gmsh::model::mesh::field::setNumbers(background, "FieldsList",
-                                           {static_cast<double>(threshold),
-                                            static_cast<double>(box)});
+      gmsh::model::mesh::field::setNumbers(
+          background, "FieldsList", {static_cast<double>(threshold), static_cast<double>(box)});
     }
     gmsh::model::mesh::field::setAsBackgroundMesh(background);
 

@@ -17,14 +17,14 @@
 namespace valsalva::io {
 
 struct CylinderChannelSpec {
-  double length = 2.2, height = 0.41;        // m
-  double centre_x = 0.2, centre_y = 0.2;     // m
-  double diameter = 0.1;                     // m
-  double size_near = 0.01, size_far = 0.04;  // m, triangle edge lengths
-  double grading_distance = 0.3;             // m from the cylinder surface
-  double thickness = 0.03;                   // m, slab thickness in z
-  int layers = 3;                            // >= 3 so periodic images stay distinct
-  double box_size = 0;                       // m; 0 = no refinement box
+  double length = 2.2, height = 0.41;                     // m
+  double centre_x = 0.2, centre_y = 0.2;                  // m
+  double diameter = 0.1;                                  // m
+  double size_near = 0.01, size_far = 0.04;               // m, triangle edge lengths
+  double grading_distance = 0.3;                          // m from the cylinder surface
+  double thickness = 0.03;                                // m, slab thickness in z
+  int layers = 3;                                         // >= 3 so periodic images stay distinct
+  double box_size = 0;                                    // m; 0 = no refinement box
   double box_x0 = 0, box_x1 = 0, box_y0 = 0, box_y1 = 0;  // m
   double box_transition = 0.1;                            // m
 };

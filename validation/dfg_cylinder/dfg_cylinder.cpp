@@ -66,8 +66,7 @@ Result run_level(const Context& ctx, const Level& level, double t_end) {
       {{"front", Eigen::Vector3d(0.15, 0.2, zc)}, {"back", Eigen::Vector3d(0.25, 0.2, zc)}});
   flow::TensorField grad;
   auto coefficients = [&](Result& r) {
-    const Eigen::Vector3d f =
-        cylinder_force(local, solver, state, rho, nu, grad) / spec.thickness;
+    const Eigen::Vector3d f = cylinder_force(local, solver, state, rho, nu, grad) / spec.thickness;
     const double q = 0.5 * rho * u_mean * u_mean * d;
     r.cd = f.x() / q;
     r.cl = f.y() / q;

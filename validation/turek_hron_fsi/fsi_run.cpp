@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <numbers>
 #include <stdexcept>
 
@@ -115,7 +116,8 @@ FsiResult run_fsi(const Context& ctx, const FsiSpec& spec) {
   ibm::ImmersedOptions ib_options;
   ib_options.fluid_density = rho;
   if (spec.per_step) ib_options.mode = ibm::CouplingMode::per_step;
-  ib_options.box = ibm::PeriodicBox{Vec::Zero(), Vec(kLength, kHeight, depth), {false, false, true}};
+  ib_options.box =
+      ibm::PeriodicBox{Vec::Zero(), Vec(kLength, kHeight, depth), {false, false, true}};
   ibm::ImmersedStructure ib(local, ib_options);
   // Tether: a node spring of E times the marker spacing, about the bar's own nodal stiffness,
   // so the clamp is as stiff as the bar without lowering the coupling bound much.
@@ -161,8 +163,8 @@ FsiResult run_fsi(const Context& ctx, const FsiSpec& spec) {
     const Vec on_bar = -ib.total_force(0);
     const Vec total = (cyl + on_bar) / depth;
     const Vec uA = ib.positions().col(A) - bar.X.col(A);
-    r.samples.push_back({state.time, uA.x(), uA.y(), total.x(), total.y(), on_bar.x() / depth,
-                         on_bar.y() / depth});
+    r.samples.push_back(
+        {state.time, uA.x(), uA.y(), total.x(), total.y(), on_bar.x() / depth, on_bar.y() / depth});
   };
 
   const auto weights = flow::laplacian_weights(local);
@@ -171,6 +173,7 @@ FsiResult run_fsi(const Context& ctx, const FsiSpec& spec) {
   double dt = 0, next_sample = 0, next_bound = 0.5, next_steady = spec.steady_window;
   FsiSample at_window{};
   const auto loop_start = Clock::now();
+  const std::clock_t cpu_start = std::clock();
   while (state.time < spec.t_end - 1e-12 && (spec.max_steps <= 0 || r.steps < spec.max_steps)) {
     if (r.steps % 10 == 0) {
       const double fluid =
@@ -195,17 +198,18 @@ FsiResult run_fsi(const Context& ctx, const FsiSpec& spec) {
     if (spec.steady_window > 0 && state.time >= next_steady - 1e-12) {
       sample();
       const auto& s = r.samples.back();
-      r.steady_change = std::max(std::abs(s.drag / at_window.drag - 1),
-                                 std::abs(s.uy / at_window.uy - 1));
+      r.steady_change =
+          std::max(std::abs(s.drag / at_window.drag - 1), std::abs(s.uy / at_window.uy - 1));
       at_window = s;
       next_steady += spec.steady_window;
       if (local.comm.rank() == 0)
-        fmt::print("  t {:.3f}: drag {:.5f} lift {:.5f} uy_A {:.5e} (change {:.2e})\n", s.t,
-                   s.drag, s.lift, s.uy, r.steady_change);
+        fmt::print("  t {:.3f}: drag {:.5f} lift {:.5f} uy_A {:.5e} (change {:.2e})\n", s.t, s.drag,
+                   s.lift, s.uy, r.steady_change);
       if (r.steady_change < spec.steady_tolerance) break;
     }
   }
   r.loop_wall = seconds_since(loop_start);
+  r.loop_cpu = local.comm.max(static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC);
   sample();
   // Force balance of the spreading: sum_j V_j f_j over all fluid nodes = sum_a F_a.
   Vec spread = Vec::Zero();

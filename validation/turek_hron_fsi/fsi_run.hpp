@@ -29,16 +29,16 @@ namespace valsalva::validation {
 struct FsiLevel {
   double size_near = 0.01;  // m, triangles on the cylinder and in the box around the bar
   double size_far = 0.04;   // m, far field
-  int layers = 5;  // prism layers of size_near in the slab depth: > the 4h kernel support
+  int layers = 5;           // prism layers of size_near in the slab depth: > the 4h kernel support
 };
 
 struct FsiSpec {
   TurekHronParameters p;
   FsiLevel level;
-  double t_end = 10;       // s
-  double ramp = 2;         // s, inflow (1 - cos(pi t / ramp)) / 2; 0: start from the developed profile
-  double dt_fraction = 0.6;       // of the coupling bound (ibm/ib_stability.hpp)
-  double steady_window = 0;       // s; > 0: stop when drag and uy_A change by < steady_tolerance
+  double t_end = 10;  // s
+  double ramp = 2;    // s, inflow (1 - cos(pi t / ramp)) / 2; 0: start from the developed profile
+  double dt_fraction = 0.6;        // of the coupling bound (ibm/ib_stability.hpp)
+  double steady_window = 0;        // s; > 0: stop when drag and uy_A change by < steady_tolerance
   double steady_tolerance = 1e-3;  // relative, over one window
   double sample_interval = 1e-3;   // s between samples of the time series
   double initial_bend = 0;  // m: tip y-offset of a parabolic bend of the bar at t = 0 (a seed)
@@ -57,9 +57,10 @@ struct FsiResult {
   int markers = 0, steps = 0, ranks = 1;
   double dt = 0, dt_bound = 0, slab = 0, wall = 0, ib_hook_seconds = 0;
   double loop_wall = 0;  // s in the time loop (wall minus mesh generation and set-up)
-  double balance_error = 0;      // |sum_j V_j f_j - sum_a F_a| / |sum_a F_a| at the end
-  double steady_change = 0;      // last relative change of drag over steady_window
-  double max_w = 0;              // largest |z-velocity| of a marker (plane-strain check), m/s
+  double loop_cpu = 0;   // CPU s of this process in the time loop, max over ranks (shared machines)
+  double balance_error = 0;  // |sum_j V_j f_j - sum_a F_a| / |sum_a F_a| at the end
+  double steady_change = 0;  // last relative change of drag over steady_window
+  double max_w = 0;          // largest |z-velocity| of a marker (plane-strain check), m/s
   // Per call, seconds (profile only): locate, spread, interpolate, solid forces.
   double t_locate = 0, t_spread = 0, t_interp = 0, t_forces = 0;
 };

@@ -2,6 +2,7 @@
 #include "validation/turek_hron_fsi/periodic_stats.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace valsalva::validation {
@@ -23,10 +24,9 @@ PeriodicStats window_stats(std::span<const double> t, std::span<const double> y,
   return s;
 }
 
-PeriodicStats periodic_stats(std::span<const double> t, std::span<const double> y,
-                             double t_from) {
-  const auto first = static_cast<std::size_t>(
-      std::lower_bound(t.begin(), t.end(), t_from) - t.begin());
+PeriodicStats periodic_stats(std::span<const double> t, std::span<const double> y, double t_from) {
+  const auto first =
+      static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), t_from) - t.begin());
   if (t.size() < first + 3) return {};
   const auto range = window_stats(t, y, t_from, t.back());
   std::vector<double> up;
@@ -38,6 +38,15 @@ PeriodicStats periodic_stats(std::span<const double> t, std::span<const double> 
   const auto n = up.size();
   PeriodicStats s = window_stats(t, y, up[n - 2], up[n - 1]);
   s.periods = static_cast<int>(n - 1);
+  double sum = 0, sum2 = 0;
+  for (std::size_t k = 1; k < n; ++k) {
+    const double a = window_stats(t, y, up[k - 1], up[k]).amplitude;
+    sum += a;
+    sum2 += a * a;
+  }
+  s.amplitude_mean = sum / s.periods;
+  s.amplitude_std =
+      std::sqrt(std::max(0.0, sum2 / s.periods - s.amplitude_mean * s.amplitude_mean));
   s.frequency = static_cast<double>(n - 1) / (up[n - 1] - up[0]);
   return s;
 }

@@ -83,16 +83,15 @@ TurekHronParameters read_turek_hron_parameters(const std::filesystem::path& dir,
 
 TurekHronReference read_turek_hron_reference(const std::filesystem::path& dir,
                                              const std::string& case_name,
-                                             const std::string& quantity,
-                                             const std::string& set) {
+                                             const std::string& quantity, const std::string& set) {
   const auto file = dir / "turek_hron_reference_values.csv";
   std::optional<TurekHronReference> found;
   // case,quantity,mean,amplitude,frequency_Hz,set,note
   for_rows(file, case_name, [&](const std::vector<std::string>& f, int ln) {
     if (f.size() < 6 || f[1] != quantity || f[5] != set) return;
-    found = TurekHronReference{parse(f, 2, file, ln, "mean"),
-                               parse(f, 3, file, ln, "amplitude", true),
-                               parse(f, 4, file, ln, "frequency_Hz", true)};
+    found =
+        TurekHronReference{parse(f, 2, file, ln, "mean"), parse(f, 3, file, ln, "amplitude", true),
+                           parse(f, 4, file, ln, "frequency_Hz", true)};
   });
   if (!found)
     throw std::runtime_error(fmt::format("{}: no row for case {}, quantity {}, set {}",

@@ -10,7 +10,8 @@
 // drag and lift over the last period against TH2006 within 10 % (fsi3_series.csv).
 // Quick: FSI1 on the coarse mesh only, shorter.
 // Options (environment, so that the default run stays within the CPU budget):
-//   VALSALVA_TUREK_HRON_FSI3=full     FSI3 on the medium mesh to t = 12 s (hours of CPU)
+//   VALSALVA_TUREK_HRON_FSI3=full     FSI3 on the finest mesh to t = 10 s (about 70 CPU minutes)
+//   VALSALVA_TUREK_HRON_FSI3_LEVEL=i  FSI3 on level i (default 0, the coarse mesh)
 //   VALSALVA_TUREK_HRON_FSI=fsi1|fsi3 only one of the two cases
 //   VALSALVA_TUREK_HRON_FSI_LEVEL=i   FSI1 on level i only (0, 1, 2), also the timing level
 //   VALSALVA_TUREK_HRON_FSI1_T=T      FSI1 end time (default 2.5 s; quick 1.4 s)
@@ -43,19 +44,20 @@ void write_series(const Context& ctx, const std::string& file, const FsiResult& 
   auto out = fmt::output_file((ctx.out_dir / file).string());
   out.print("t,ux_A,uy_A,drag,lift,drag_bar,lift_bar\n");
   for (const auto& s : r.samples)
-    out.print("{:.6e},{:.8e},{:.8e},{:.8e},{:.8e},{:.8e},{:.8e}\n", s.t, s.ux, s.uy, s.drag,
-              s.lift, s.drag_bar, s.lift_bar);
+    out.print("{:.6e},{:.8e},{:.8e},{:.8e},{:.8e},{:.8e},{:.8e}\n", s.t, s.ux, s.uy, s.drag, s.lift,
+              s.drag_bar, s.lift_bar);
 }
 
 void write_timing(const Context& ctx, const FsiResult& r) {
   auto out = fmt::output_file((ctx.out_dir / "timing.csv").string());
   out.print(
-      "ranks,nodes,markers,steps,dt,simulated_s,wall_s,wall_per_simulated_s,ib_hook_share,"
-      "locate_s,spread_s,interp_s,solid_forces_s\n");
+      "ranks,nodes,markers,steps,dt,simulated_s,wall_s,wall_per_simulated_s,"
+      "cpu_per_simulated_s,ib_hook_share,locate_s,spread_s,interp_s,solid_forces_s\n");
   const double simulated = r.samples.back().t;
-  out.print("{},{},{},{},{:.4e},{:.4e},{:.2f},{:.1f},{:.3f},{:.3e},{:.3e},{:.3e},{:.3e}\n",
-            r.ranks, r.nodes, r.markers, r.steps, r.dt, simulated, r.loop_wall, r.loop_wall / simulated,
-            r.ib_hook_seconds / r.loop_wall, r.t_locate, r.t_spread, r.t_interp, r.t_forces);
+  out.print("{},{},{},{},{:.4e},{:.4e},{:.2f},{:.1f},{:.1f},{:.3f},{:.3e},{:.3e},{:.3e},{:.3e}\n",
+            r.ranks, r.nodes, r.markers, r.steps, r.dt, simulated, r.loop_wall,
+            r.loop_wall / simulated, r.loop_cpu / simulated, r.ib_hook_seconds / r.loop_wall,
+            r.t_locate, r.t_spread, r.t_interp, r.t_forces);
 }
 
 // The steady values: averages over the last `window` seconds (the coarse IB state keeps a small
@@ -117,7 +119,9 @@ FsiSpec fsi3_spec(const Context& ctx, const FsiLevel& level, double t_end) {
 
 void run_fsi1(const Context& ctx, Report& report, int rank) {
   const auto dir = ctx.refdata_dir / "turek_hron_fsi";
-  const auto ref = [&](const char* q) { return read_turek_hron_reference(dir, "FSI1", q, "TH2006").mean; };
+  const auto ref = [&](const char* q) {
+    return read_turek_hron_reference(dir, "FSI1", q, "TH2006").mean;
+  };
   const double u_bar = read_turek_hron_parameters(dir, "FSI1").U_bar;
   const double ux_ref = ref("ux_A"), uy_ref = ref("uy_A"), drag_ref = ref("drag"),
                lift_ref = ref("lift");
@@ -181,10 +185,24 @@ void run_fsi1(const Context& ctx, Report& report, int rank) {
              Check::at_most);
 }
 
+// Time average of y over t >= t_from (uniform samples).
+double time_mean(const std::vector<double>& t, const std::vector<double>& y, double t_from) {
+  double sum = 0;
+  int n = 0;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i] >= t_from) {
+      sum += y[i];
+      ++n;
+    }
+  return n > 0 ? sum / n : 0.0;
+}
+
 void run_fsi3(const Context& ctx, Report& report, int rank) {
   const auto dir = ctx.refdata_dir / "turek_hron_fsi";
   const bool full = env("VALSALVA_TUREK_HRON_FSI3") == "full";
-  const auto spec = fsi3_spec(ctx, kLevels[full ? 2 : 0], full ? 10.0 : 6.0);
+  const std::string level_env = env("VALSALVA_TUREK_HRON_FSI3_LEVEL");
+  const int level = !level_env.empty() ? std::stoi(level_env) : (full ? 2 : 0);
+  const auto spec = fsi3_spec(ctx, kLevels.at(level), full ? 10.0 : 6.0);
   const auto r = run_fsi(ctx, spec);
   std::vector<double> t, uy, drag, lift;
   for (const auto& s : r.samples) {
@@ -200,13 +218,17 @@ void run_fsi3(const Context& ctx, Report& report, int rank) {
     write_series(ctx, "fsi3_series.csv", r);
     auto out = fmt::output_file((ctx.out_dir / "fsi3_summary.csv").string());
     out.print(
-        "size_near,nodes,markers,dt,steps,t_end,periods,uy_mean,uy_amplitude,frequency,drag_mean,"
-        "drag_amplitude,lift_mean,lift_amplitude,wall_s,wall_per_simulated_s\n");
-    out.print("{},{},{},{:.4e},{},{:.3f},{},{:.5e},{:.5e},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.1f},"
-              "{:.1f}\n",
-              spec.level.size_near, r.nodes, r.markers, r.dt, r.steps, r.samples.back().t,
-              y.periods, y.mean, y.amplitude, y.frequency, d.mean, d.amplitude, l.mean,
-              l.amplitude, r.wall, r.loop_wall / r.samples.back().t);
+        "size_near,nodes,markers,dt,steps,t_end,periods,uy_mean,uy_amplitude,"
+        "uy_amplitude_period_mean,uy_amplitude_period_std,frequency,drag_mean,"
+        "drag_amplitude,drag_time_mean,lift_mean,lift_amplitude,wall_s,wall_per_simulated_s,"
+        "cpu_per_simulated_s\n");
+    out.print(
+        "{},{},{},{:.4e},{},{:.3f},{},{:.5e},{:.5e},{:.5e},{:.5e},{:.4f},{:.4f},{:.4f},{:.4f},"
+        "{:.4f},{:.4f},{:.1f},{:.1f},{:.1f}\n",
+        spec.level.size_near, r.nodes, r.markers, r.dt, r.steps, r.samples.back().t, y.periods,
+        y.mean, y.amplitude, y.amplitude_mean, y.amplitude_std, y.frequency, d.mean, d.amplitude,
+        time_mean(t, drag, spec.t_end - 1.5), l.mean, l.amplitude, r.wall,
+        r.loop_wall / r.samples.back().t, r.loop_cpu / r.samples.back().t);
     fmt::print(
         "FSI3 (size {}): {} steps, dt {:.3e}: uy_A {:.4e} +- {:.4e} at {:.3f} Hz ({} periods), "
         "drag {:.2f} +- {:.2f}, lift {:.2f} +- {:.2f}; {:.0f} s\n",
@@ -216,15 +238,17 @@ void run_fsi3(const Context& ctx, Report& report, int rank) {
   const auto uy_ref = read_turek_hron_reference(dir, "FSI3", "uy_A", "TH2006");
   const auto drag_ref = read_turek_hron_reference(dir, "FSI3", "drag", "TH2006");
   const auto lift_ref = read_turek_hron_reference(dir, "FSI3", "lift", "TH2006");
-  const auto level = fmt::format("size {}", spec.level.size_near);
-  report.add("FSI3 uy_A amplitude [m], " + level, y.amplitude, uy_ref.amplitude,
+  const auto size = fmt::format("size {}", spec.level.size_near);
+  report.add("FSI3 uy_A amplitude [m], " + size, y.amplitude, uy_ref.amplitude,
              0.1 * uy_ref.amplitude);
-  report.add("FSI3 uy_A frequency [Hz], " + level, y.frequency, uy_ref.frequency,
+  report.add("FSI3 uy_A amplitude [m], mean over the periods of the last 1.5 s, " + size,
+             y.amplitude_mean, uy_ref.amplitude, 0.1 * uy_ref.amplitude);
+  report.add("FSI3 uy_A frequency [Hz], " + size, y.frequency, uy_ref.frequency,
              0.1 * uy_ref.frequency);
-  report.add("FSI3 drag mean [N/m], " + level, d.mean, drag_ref.mean, 0.1 * drag_ref.mean);
-  report.add("FSI3 drag amplitude [N/m], " + level, d.amplitude, drag_ref.amplitude,
+  report.add("FSI3 drag mean [N/m], " + size, d.mean, drag_ref.mean, 0.1 * drag_ref.mean);
+  report.add("FSI3 drag amplitude [N/m], " + size, d.amplitude, drag_ref.amplitude,
              0.1 * drag_ref.amplitude);
-  report.add("FSI3 lift amplitude [N/m], " + level, l.amplitude, lift_ref.amplitude,
+  report.add("FSI3 lift amplitude [N/m], " + size, l.amplitude, lift_ref.amplitude,
              0.1 * lift_ref.amplitude);
 }
 
@@ -243,10 +267,12 @@ void run_timing(const Context& ctx, int rank) {
     write_timing(ctx, r);
     fmt::print(
         "FSI3 timing: {} ranks, {} nodes, {} markers, {} steps of {:.3e} s in {:.1f} s: {:.0f} s "
-        "per simulated second; IB hook {:.0f} %; per call locate {:.2e} s, spread {:.2e} s, "
+        "per simulated second (CPU {:.0f} s); IB hook {:.0f} %; per call locate {:.2e} s, spread "
+        "{:.2e} s, "
         "interpolate {:.2e} s, solid forces {:.2e} s\n",
         r.ranks, r.nodes, r.markers, r.steps, r.dt, r.wall, r.loop_wall / r.samples.back().t,
-        100 * r.ib_hook_seconds / r.loop_wall, r.t_locate, r.t_spread, r.t_interp, r.t_forces);
+        r.loop_cpu / r.samples.back().t, 100 * r.ib_hook_seconds / r.loop_wall, r.t_locate,
+        r.t_spread, r.t_interp, r.t_forces);
   }
 }
 
