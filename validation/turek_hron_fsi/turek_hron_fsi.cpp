@@ -175,14 +175,18 @@ void run_fsi1(const Context& ctx, Report& report, int rank) {
   report.add("FSI1 spread force balance |sum V f - sum F| / |sum F|", r.balance_error, 0, 1e-11,
              Check::at_most);
   if (ctx.quick) {
-    // Coarse mesh (size 0.02 = the bar's thickness, kernel support 0.08), 1 s from the
-    // developed profile: the drag is already at its coarse-mesh plateau (21.3-21.7 N/m from
-    // t = 1 to 6 s, fsi1_series.png), 49 % above TH2006 because the 4h kernel blocks the
-    // channel like a bar four times thicker; asserted within 60 % so that a regression of the
-    // coupling or the force balance shows. The marker z-velocity (plane strain) measured 0.8 %
-    // of the peak inflow velocity (the impulsive start included).
-    report.add("FSI1 quick drag [N/m], coarse mesh, within 60 % of TH2006", s.drag, drag_ref,
-               0.6 * drag_ref);
+    // Coarse mesh (size 0.02 = the bar's thickness, kernel support 0.08) to t = 1.4 s from the
+    // developed profile, drag averaged over the last 0.3 s: measured 22.30 N/m (+56 % on
+    // TH2006: the 4h kernel blocks the channel like a bar several times thicker; the finer
+    // meshes come down to +27 % and +22 %). The coarse mesh's own plateau, averaged over
+    // t = 1.75..2.5 s of the 2.5 s run, is 21.54 N/m (it stays within 21.3..21.7 up to 6 s):
+    // the quick value is checked against it within 10 % (a regression of the coupling, the
+    // force balance or the start-up shows) and against TH2006 within 70 %. The marker
+    // z-velocity (plane strain) measured 0.84 % of the peak inflow velocity.
+    report.add("FSI1 quick drag [N/m] vs the coarse mesh's plateau 21.54 (2.5 s run), 10 %", s.drag,
+               21.54, 0.1 * 21.54);
+    report.add("FSI1 quick drag [N/m], coarse mesh, within 70 % of TH2006", s.drag, drag_ref,
+               0.7 * drag_ref);
     report.add("FSI1 quick max marker |w| / U_max (plane strain)", r.max_w / (1.5 * u_bar), 0, 0.02,
                Check::at_most);
     return;
