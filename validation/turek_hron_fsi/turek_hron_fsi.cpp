@@ -18,6 +18,7 @@
 // Options (environment, so that the default run stays within the CPU budget):
 //   VALSALVA_TUREK_HRON_FSI3=full     FSI3 on the finest mesh to t = 10 s (about 70 CPU minutes)
 //   VALSALVA_TUREK_HRON_FSI3_LEVEL=i  FSI3 on level i (default 0, the coarse mesh)
+//   VALSALVA_TUREK_HRON_FSI3_T=T      FSI3 end time (default 6 s)
 //   VALSALVA_TUREK_HRON_FSI=fsi1|fsi3 only one of the two cases
 //   VALSALVA_TUREK_HRON_FSI_LEVEL=i   FSI1 on level i only (0, 1, 2), also the timing level
 //   VALSALVA_TUREK_HRON_FSI1_T=T      FSI1 end time (default 2.5 s; quick 1.4 s)
@@ -216,7 +217,9 @@ void run_fsi3(const Context& ctx, Report& report, int rank) {
   const bool full = env("VALSALVA_TUREK_HRON_FSI3") == "full";
   const std::string level_env = env("VALSALVA_TUREK_HRON_FSI3_LEVEL");
   const int level = !level_env.empty() ? std::stoi(level_env) : (full ? 2 : 0);
-  const auto spec = fsi3_spec(ctx, kLevels.at(level), full ? 10.0 : 6.0);
+  const std::string t_env = env("VALSALVA_TUREK_HRON_FSI3_T");
+  const auto spec =
+      fsi3_spec(ctx, kLevels.at(level), !t_env.empty() ? std::stod(t_env) : (full ? 10.0 : 6.0));
   const auto r = run_fsi(ctx, spec);
   std::vector<double> t, uy, drag, lift;
   for (const auto& s : r.samples) {
