@@ -15,6 +15,25 @@
 // frequency, drag and lift mean and amplitude against TH2006 within 10 % (fsi3_series.csv,
 // fsi3_summary.csv). Both use the per-step coupling (why: fsi1_level and fsi3_spec below).
 // Quick: FSI1 on the coarse mesh to t = 1.4 s.
+// Measured (1 rank; FSI1 levels run one at a time with VALSALVA_TUREK_HRON_FSI_LEVEL, the finest
+// to t = 2.0 s only; TH2006: ux_A 2.27e-5 m, uy_A 8.209e-4 m, drag 14.295, lift 0.7638 N/m):
+//   size   nodes  markers  ux_A      uy_A      drag   lift   drag spread (last window)
+//   0.02    3785   555    -3.23e-5  -3.56e-3  21.54  1.652  14 %
+//   0.014   6235   765     2.30e-5  -4.97e-4  18.13  1.087   4 %
+//   0.01   10525  1775     1.13e-4   1.88e-3  17.49  0.876   8 %
+// Drag and lift converge towards TH2006 at about first order in h (+51, +27, +22 %); uy_A and
+// ux_A do not converge: the slow bending mode has not decayed, and the bar's root lies within
+// the kernel half-width (2h) of the no-slip cylinder, whose zero velocity holds those markers
+// wherever the impulsive start left them (the split of the force between bar and cylinder
+// depends on that history; their sum, the reported drag and lift, does not).
+// FSI3 at size 0.02 to 6 s: uy_A amplitude 34.6 mm over the last period (+0.6 %), but 24..50 mm
+// from period to period (mean 38.1, std 8.3), 5.54 Hz (+4.5 %); forces spiky (drag 853 +- 748,
+// lift 2.5 +- 579: the bar is one element thick and the 4h kernel 0.08 wide). At size 0.014 the
+// flutter does not develop up to t = 10 s (uy_A within -4.5..+6.5 mm throughout, 8.8 Hz, drag
+// 411 +- 19 N/m, lift 15 +- 42): the coarse agreement is not evidence of accuracy.
+// Cost (idle machine, per step coupling, FSI3): size 0.02 47 s per simulated second at 1 rank,
+// 33 s at 2; size 0.01 362 s at 1 rank, 243 s at 2 (per stage: 580 s at 1 rank). The marker
+// location (RKPM kernel and moment matrix per marker, each step) is ~95 % of the IB share.
 // Options (environment, so that the default run stays within the CPU budget):
 //   VALSALVA_TUREK_HRON_FSI3=full     FSI3 on the finest mesh to t = 10 s (about 70 CPU minutes)
 //   VALSALVA_TUREK_HRON_FSI3_LEVEL=i  FSI3 on level i (default 0, the coarse mesh)
