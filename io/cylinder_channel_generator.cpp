@@ -38,6 +38,13 @@ void check(const CylinderChannelSpec& s) {
         "generate_cylinder_channel_mesh: layers = {}; at least 3 are needed so that a periodic "
         "node and its image are not neighbours",
         s.layers));
+  if (s.box_size != 0 &&
+      !(s.box_size > 0 && s.box_x0 < s.box_x1 && s.box_y0 < s.box_y1 && s.box_x0 >= 0 &&
+        s.box_x1 <= s.length && s.box_y0 >= 0 && s.box_y1 <= s.height && s.box_transition > 0))
+    throw std::invalid_argument(fmt::format(
+        "generate_cylinder_channel_mesh: refinement box [{}, {}] x [{}, {}] with size {} and "
+        "transition {} must be non-empty, inside the channel and have positive sizes",
+        s.box_x0, s.box_x1, s.box_y0, s.box_y1, s.box_size, s.box_transition));
 }
 
 }  // namespace
@@ -45,8 +52,8 @@ void check(const CylinderChannelSpec& s) {
 flow::Mesh generate_cylinder_channel_mesh(const CylinderChannelSpec& s) {
   check(s);
   const std::string source =
-      fmt::format("cylinder_channel(size_near={:g}, size_far={:g}, layers={})", s.size_near,
-                  s.size_far, s.layers);
+      fmt::format("cylinder_channel(size_near={:g}, size_far={:g}, layers={}, box_size={:g})",
+                  s.size_near, s.size_far, s.layers, s.box_size);
   GmshSession session;
   gmsh_call(source, [&] {
     namespace occ = gmsh::model::occ;
@@ -83,7 +90,23 @@ flow::Mesh generate_cylinder_channel_mesh(const CylinderChannelSpec& s) {
     gmsh::model::mesh::field::setNumber(threshold, "SizeMax", s.size_far);
     gmsh::model::mesh::field::setNumber(threshold, "DistMin", 0);
     gmsh::model::mesh::field::setNumber(threshold, "DistMax", s.grading_distance);
-    gmsh::model::mesh::field::setAsBackgroundMesh(threshold);
+    int background = threshold;
+    if (s.box_size > 0) {
+      const int box = gmsh::model::mesh::field::add("Box");
+      gmsh::model::mesh::field::setNumber(box, "VIn", s.box_size);
+      gmsh::model::mesh::field::setNumber(box, "VOut", s.size_far);
+      gmsh::model::mesh::field::setNumber(box, "XMin", s.box_x0);
+      gmsh::model::mesh::field::setNumber(box, "XMax", s.box_x1);
+      gmsh::model::mesh::field::setNumber(box, "YMin", s.box_y0);
+      gmsh::model::mesh::field::setNumber(box, "YMax", s.box_y1);
+      gmsh::model::mesh::field::setNumber(box, "ZMin", -1);
+      gmsh::model::mesh::field::setNumber(box, "ZMax", s.thickness + 1);
+      gmsh::model::mesh::field::setNumber(box, "Thickness", s.box_transition);
+      background = gmsh::model::mesh::field::add("Min");
+      gmsh::model::mesh::field::setNumbers(
+          background, "FieldsList", {static_cast<double>(threshold), static_cast<double>(box)});
+    }
+    gmsh::model::mesh::field::setAsBackgroundMesh(background);
 
     // Patches by the centre of mass of each boundary surface of the slab.
     int volume = -1;

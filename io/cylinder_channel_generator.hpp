@@ -7,6 +7,9 @@
 // gets consistent P1 weights. Deterministic (one thread, fixed seed).
 // Patches: inlet (x = 0), outlet (x = 2.2), wall (y = 0 and y = 0.41), cylinder, front (z = 0),
 // back (z = thickness), to be paired as periodic by the caller; region "fluid".
+// Optional refinement box (Turek–Hron: the elastic bar behind the cylinder and its swing): size
+// box_size inside [box_x0, box_x1] x [box_y0, box_y1], growing linearly to size_far over
+// box_transition outside it; the finer of the two size fields applies.
 #pragma once
 
 #include "flow/mesh.hpp"
@@ -14,17 +17,20 @@
 namespace valsalva::io {
 
 struct CylinderChannelSpec {
-  double length = 2.2, height = 0.41;        // m
-  double centre_x = 0.2, centre_y = 0.2;     // m
-  double diameter = 0.1;                     // m
-  double size_near = 0.01, size_far = 0.04;  // m, triangle edge lengths
-  double grading_distance = 0.3;             // m from the cylinder surface
-  double thickness = 0.03;                   // m, slab thickness in z
-  int layers = 3;                            // >= 3 so periodic images stay distinct
+  double length = 2.2, height = 0.41;                     // m
+  double centre_x = 0.2, centre_y = 0.2;                  // m
+  double diameter = 0.1;                                  // m
+  double size_near = 0.01, size_far = 0.04;               // m, triangle edge lengths
+  double grading_distance = 0.3;                          // m from the cylinder surface
+  double thickness = 0.03;                                // m, slab thickness in z
+  int layers = 3;                                         // >= 3 so periodic images stay distinct
+  double box_size = 0;                                    // m; 0 = no refinement box
+  double box_x0 = 0, box_x1 = 0, box_y0 = 0, box_y1 = 0;  // m
+  double box_transition = 0.1;                            // m
 };
 
 // Throws std::invalid_argument for an inconsistent spec (cylinder not inside the channel,
-// non-positive sizes, fewer than 3 layers).
+// non-positive sizes, fewer than 3 layers, an empty or outside refinement box).
 flow::Mesh generate_cylinder_channel_mesh(const CylinderChannelSpec& spec);
 
 }  // namespace valsalva::io

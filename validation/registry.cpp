@@ -22,6 +22,7 @@ Case tgv_les_case();
 Case womersley_case();
 Case womersley_periodic_case();
 Case ib_leakage_case();
+Case turek_hron_fsi_case();
 
 const std::vector<Case>& all_cases() {
   // clang-format off
@@ -43,6 +44,7 @@ const std::vector<Case>& all_cases() {
       womersley_case(),
       womersley_periodic_case(),
       ib_leakage_case(),
+      turek_hron_fsi_case(),
   };
   // clang-format on
   return cases;

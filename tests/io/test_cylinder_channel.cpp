@@ -84,3 +84,40 @@ TEST_CASE("cylinder channel: patches, volume, periodic slab metrics") {
   CHECK(again.num_cells() == mesh.num_cells());
   CHECK(again.nodes == mesh.nodes);
 }
+
+TEST_CASE("cylinder channel: refinement box") {
+  io::CylinderChannelSpec spec;
+  spec.size_near = 0.02;
+  spec.size_far = 0.08;
+  spec.box_size = 0.01;
+  spec.box_x0 = 0.3;
+  spec.box_x1 = 0.7;
+  spec.box_y0 = 0.15;
+  spec.box_y1 = 0.25;
+  const auto mesh = io::generate_cylinder_channel_mesh(spec);
+  CHECK_NOTHROW(flow::check_mesh(mesh));
+  // Node spacing inside the box: the mean length of the in-plane edges (z-extrusion edges
+  // excluded) between nodes in the box's core is about box_size, well below size_near.
+  double sum = 0;
+  int count = 0;
+  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
+    const auto cell = mesh.cell(c);
+    for (std::size_t i = 0; i < cell.size(); ++i)
+      for (std::size_t j = i + 1; j < cell.size(); ++j) {
+        const Eigen::Vector3d a = mesh.nodes[cell[i]], b = mesh.nodes[cell[j]];
+        const Eigen::Vector3d m = (a + b) / 2;
+        if (std::abs(a.z() - b.z()) > 1e-12 || m.x() < 0.4 || m.x() > 0.6 || m.y() < 0.17 ||
+            m.y() > 0.23)
+          continue;
+        sum += (a - b).norm();
+        ++count;
+      }
+  }
+  REQUIRE(count > 0);
+  MESSAGE("mean in-plane edge in the box ", sum / count);
+  CHECK(sum / count < 1.3 * spec.box_size);
+  CHECK(sum / count > 0.7 * spec.box_size);
+  spec.box_x1 = 3.0;  // outside the channel
+  CHECK_THROWS_WITH_AS(io::generate_cylinder_channel_mesh(spec),
+                       doctest::Contains("refinement box"), std::invalid_argument);
+}

@@ -12,16 +12,13 @@
 #include <cmath>
 #include <fstream>
 
-#include "flow/boundary_conditions.hpp"
 #include "flow/dual_metrics.hpp"
 #include "flow/local_mesh.hpp"
-#include "flow/poisson_weights.hpp"
-#include "flow/projection_rk4.hpp"
 #include "flow/run_diagnostics.hpp"
-#include "flow/wall_force.hpp"
 #include "io/cylinder_channel_generator.hpp"
 #include "io/probes.hpp"
 #include "validation/case.hpp"
+#include "validation/dfg_cylinder/cylinder_channel_flow.hpp"
 
 namespace valsalva::validation {
 
@@ -53,31 +50,15 @@ Result run_level(const Context& ctx, const Level& level, double t_end) {
   const auto metrics = flow::compute_dual_metrics(mesh);
   const auto local = flow::distribute(mesh, metrics, ctx.comm);
 
-  auto inlet = flow::boundary_spec("inlet", flow::BoundaryType::inlet);
-  inlet.profile = flow::InletProfile::plane_poiseuille;
-  inlet.across = Eigen::Vector3d(0, 1, 0);
-  inlet.flow_rate.mean = u_mean * height * spec.thickness;
-  auto bc = std::make_shared<flow::BoundaryConditions>(
-      local,
-      std::vector<flow::BoundarySpec>{
-          inlet, flow::boundary_spec("outlet", flow::BoundaryType::pressure_outlet),
-          flow::boundary_spec("wall", flow::BoundaryType::wall),
-          flow::boundary_spec("cylinder", flow::BoundaryType::wall)},
-      nu);
-  flow::ProjectionOptions options;
-  options.density = rho;
-  options.viscosity = nu;
-  options.poisson.tolerance = 1e-10;
-  options.boundary = bc;
-  options.poisson.dirichlet = bc->pressure_dirichlet();
-  flow::ProjectionRK4 solver(local, options, flow::poisson_weights(mesh, metrics, local));
+  flow::Waveform inflow;
+  inflow.mean = u_mean * height * spec.thickness;
+  auto channel = make_cylinder_channel_flow(mesh, metrics, local, rho, nu, inflow);
+  auto& solver = *channel.solver;
 
   flow::FlowState state;
   state.velocity.assign(local.num_local(), Eigen::Vector3d::Zero());
   state.pressure.assign(local.num_local(), 0.0);
-  bc->impose_pressure(state.pressure);
-  bc->hold_outlets(state.velocity);
-  bc->impose(state.velocity, 0.0);
+  impose_initial_boundary_values(*channel.bc, state);
 
   const double zc = spec.thickness / 2;
   io::Probes probes(
@@ -85,15 +66,7 @@ Result run_level(const Context& ctx, const Level& level, double t_end) {
       {{"front", Eigen::Vector3d(0.15, 0.2, zc)}, {"back", Eigen::Vector3d(0.25, 0.2, zc)}});
   flow::TensorField grad;
   auto coefficients = [&](Result& r) {
-    flow::gradient(local, state.velocity, grad);
-    flow::WallForceInput in;
-    in.density = rho;
-    in.dynamic_viscosity = rho * nu;
-    in.velocity = &state.velocity;
-    in.pressure = &state.pressure;
-    in.velocity_gradient = &grad;
-    in.laplacian_weights = &solver.laplacian_weights();
-    const Eigen::Vector3d f = flow::wall_force(local, "cylinder", in) / spec.thickness;
+    const Eigen::Vector3d f = cylinder_force(local, solver, state, rho, nu, grad) / spec.thickness;
     const double q = 0.5 * rho * u_mean * u_mean * d;
     r.cd = f.x() / q;
     r.cl = f.y() / q;

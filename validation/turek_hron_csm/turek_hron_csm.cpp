@@ -7,13 +7,12 @@
 #include <fmt/os.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include "structure/mesh_generators.hpp"
 #include "structure/static_solver.hpp"
 #include "validation/case.hpp"
+#include "validation/turek_hron_fsi/turek_hron_data.hpp"
 
 namespace valsalva::validation {
 
@@ -26,71 +25,14 @@ struct CsmParams {
   double ux_ref = 0, uy_ref = 0;
 };
 
-std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> out;
-  std::string cur;
-  bool quoted = false;
-  for (char c : line) {
-    if (c == '"')
-      quoted = !quoted;
-    else if (c == ',' && !quoted) {
-      out.push_back(cur);
-      cur.clear();
-    } else
-      cur += c;
-  }
-  out.push_back(cur);
-  return out;
-}
-
-double parse(const std::string& s, const std::filesystem::path& file, int line,
-             const std::string& what) {
-  try {
-    std::size_t pos = 0;
-    const double v = std::stod(s, &pos);
-    if (pos == s.size()) return v;
-  } catch (const std::exception&) {
-  }
-  throw std::runtime_error(
-      fmt::format("{}:{}: cannot read {} from '{}'", file.string(), line, what, s));
-}
-
 CsmParams read_params(const std::filesystem::path& dir, const std::string& name) {
-  CsmParams p;
-  bool have_params = false, have_ux = false, have_uy = false;
-  const auto pfile = dir / "turek_hron_parameters.csv",
-             rfile = dir / "turek_hron_reference_values.csv";
-  std::ifstream in(pfile);
-  if (!in) throw std::runtime_error(fmt::format("turek_hron_csm: cannot open {}", pfile.string()));
-  std::string line;
-  for (int ln = 1; std::getline(in, line); ++ln) {
-    const auto f = split_csv(line);
-    if (line.empty() || line[0] == '#' || f[0] != name) continue;
-    // case,rho_s,nu_s,mu_s,E_s,rho_f,nu_f,Ubar,Re,g,type
-    p.rho = parse(f.at(1), pfile, ln, "rho_s");
-    p.nu = parse(f.at(2), pfile, ln, "nu_s");
-    p.E = parse(f.at(4), pfile, ln, "E_s");
-    p.g = parse(f.at(9), pfile, ln, "g");
-    have_params = true;
-  }
-  std::ifstream rin(rfile);
-  if (!rin) throw std::runtime_error(fmt::format("turek_hron_csm: cannot open {}", rfile.string()));
-  for (int ln = 1; std::getline(rin, line); ++ln) {
-    const auto f = split_csv(line);
-    if (line.empty() || line[0] == '#' || f[0] != name || f.at(5) != "FF-page") continue;
-    if (f[1] == "ux_A") {
-      p.ux_ref = parse(f.at(2), rfile, ln, "ux_A");
-      have_ux = true;
-    }
-    if (f[1] == "uy_A") {
-      p.uy_ref = parse(f.at(2), rfile, ln, "uy_A");
-      have_uy = true;
-    }
-  }
-  if (!have_params || !have_ux || !have_uy)
-    throw std::runtime_error(fmt::format(
-        "turek_hron_csm: {} parameters or FF-page references missing in {}", name, dir.string()));
-  return p;
+  const auto t = read_turek_hron_parameters(dir, name);
+  return {t.rho_s,
+          t.nu_s,
+          t.E_s,
+          t.g,
+          read_turek_hron_reference(dir, name, "ux_A", "FF-page").mean,
+          read_turek_hron_reference(dir, name, "uy_A", "FF-page").mean};
 }
 
 // The bar [cylinder arc, 0.6] x [0.19, 0.21], clamped on the arc x = 0.2 + sqrt(r^2 - (y-0.2)^2).

@@ -1,0 +1,36 @@
+// The flow of the DFG / Turek–Hron cylinder channel on an io/cylinder_channel_generator slab:
+// plane-Poiseuille inlet carrying Q(t), pressure outlet (p = 0, do-nothing-like), no-slip
+// channel walls and cylinder; the projection solver with P1 Poisson weights. Shared by the
+// dfg_cylinder and turek_hron_fsi cases.
+#pragma once
+
+#include <memory>
+
+#include "flow/boundary_conditions.hpp"
+#include "flow/dual_metrics.hpp"
+#include "flow/projection_rk4.hpp"
+
+namespace valsalva::validation {
+
+struct CylinderChannelFlow {
+  std::shared_ptr<flow::BoundaryConditions> bc;
+  std::unique_ptr<flow::ProjectionRK4> solver;
+};
+
+CylinderChannelFlow make_cylinder_channel_flow(const flow::Mesh& mesh,
+                                               const flow::DualMetrics& metrics,
+                                               const flow::LocalMesh& local, double rho, double nu,
+                                               flow::Waveform inflow);
+
+// Boundary values into `state` (sized to the local mesh) at t = 0.
+void impose_initial_boundary_values(flow::BoundaryConditions& bc, flow::FlowState& state);
+
+// Force (N) of the fluid on the "cylinder" patch: the consistent residual force of
+// flow/wall_force.hpp, with the body-force density in the wall-node balance when given.
+// `grad` is scratch. Collective.
+Eigen::Vector3d cylinder_force(const flow::LocalMesh& local, const flow::ProjectionRK4& solver,
+                               const flow::FlowState& state, double rho, double nu,
+                               flow::TensorField& grad,
+                               const flow::VectorField* body_force = nullptr);
+
+}  // namespace valsalva::validation
