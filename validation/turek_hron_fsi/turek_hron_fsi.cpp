@@ -50,6 +50,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "validation/case.hpp"
@@ -65,7 +66,48 @@ std::string env(const char* name) {
   return v ? v : "";
 }
 
+// The options above, checked: a value that is not a number in range (or not one of the accepted
+// words) stops the case naming the variable, its value and what is accepted.
+[[noreturn]] void bad_option(const char* name, const std::string& value, const std::string& accepted) {
+  throw std::invalid_argument(
+      fmt::format("turek_hron_fsi: {}={} is not accepted (expected {})", name, value, accepted));
+}
+
+double env_real(const char* name, double fallback, double lo, double hi) {
+  const std::string v = env(name);
+  if (v.empty()) return fallback;
+  std::size_t used = 0;
+  double x = 0;
+  try {
+    x = std::stod(v, &used);
+  } catch (const std::exception&) {
+    bad_option(name, v, fmt::format("a number in [{}, {}]", lo, hi));
+  }
+  if (used != v.size() || !(x >= lo && x <= hi))
+    bad_option(name, v, fmt::format("a number in [{}, {}]", lo, hi));
+  return x;
+}
+
 const std::vector<FsiLevel> kLevels = {{0.02, 0.06, 5}, {0.014, 0.05, 5}, {0.01, 0.04, 5}};
+
+// A mesh level 0, 1 or 2 from `name`, or -1 when it is not set.
+int env_level(const char* name) {
+  const std::string v = env(name);
+  if (v.empty()) return -1;
+  if (v != "0" && v != "1" && v != "2") bad_option(name, v, "0, 1 or 2");
+  return std::stoi(v);
+}
+
+void check_choice(const char* name, const std::vector<std::string>& accepted) {
+  const std::string v = env(name);
+  if (v.empty()) return;
+  std::string list;
+  for (const auto& a : accepted) {
+    if (v == a) return;
+    list += (list.empty() ? "" : ", ") + a;
+  }
+  bad_option(name, v, list);
+}
 
 void write_series(const Context& ctx, const std::string& file, const FsiResult& r) {
   auto out = fmt::output_file((ctx.out_dir / file).string());
@@ -124,8 +166,7 @@ FsiResult fsi1_level(const Context& ctx, const FsiLevel& level, double t_end) {
   s.t_end = t_end;
   // From the developed profile by default; VALSALVA_TUREK_HRON_FSI1_RAMP=T: from rest with the
   // benchmark's inflow ramp over T s (the start-up's effect on the steady bar).
-  const std::string ramp = env("VALSALVA_TUREK_HRON_FSI1_RAMP");
-  s.ramp = ramp.empty() ? 0.0 : std::stod(ramp);
+  s.ramp = env_real("VALSALVA_TUREK_HRON_FSI1_RAMP", 0.0, 0.0, 100.0);
   s.steady_window = 0.5;  // progress report only (tolerance 0: never stops early)
   s.steady_tolerance = 0;
   s.sample_interval = 0.005;
@@ -164,15 +205,13 @@ void run_fsi1(const Context& ctx, Report& report, int rank) {
         "wall_s\n");
   }
   // VALSALVA_TUREK_HRON_FSI_LEVEL=i: level i only (0-based; one row of the table per run).
-  const std::string only = env("VALSALVA_TUREK_HRON_FSI_LEVEL");
-  const int first = only.empty() ? 0 : std::stoi(only);
-  const int n = ctx.quick ? 1 : (only.empty() ? static_cast<int>(kLevels.size()) : first + 1);
+  const int only = env_level("VALSALVA_TUREK_HRON_FSI_LEVEL");
+  const int first = only < 0 ? 0 : only;
+  const int n = ctx.quick ? 1 : (only < 0 ? static_cast<int>(kLevels.size()) : first + 1);
   FsiResult r;
   Steady s;
   for (int l = first; l < n; ++l) {
-    const double t_end = !env("VALSALVA_TUREK_HRON_FSI1_T").empty()
-                             ? std::stod(env("VALSALVA_TUREK_HRON_FSI1_T"))
-                             : (ctx.quick ? 1.4 : 2.5);
+    const double t_end = env_real("VALSALVA_TUREK_HRON_FSI1_T", ctx.quick ? 1.4 : 2.5, 0.01, 1000);
     r = fsi1_level(ctx, kLevels[l], t_end);
     s = steady_values(r, ctx.quick ? 0.3 : 0.75);
     if (rank == 0) {
@@ -233,12 +272,12 @@ double time_mean(const std::vector<double>& t, const std::vector<double>& y, dou
 
 void run_fsi3(const Context& ctx, Report& report, int rank) {
   const auto dir = ctx.refdata_dir / "turek_hron_fsi";
+  check_choice("VALSALVA_TUREK_HRON_FSI3", {"full"});
   const bool full = env("VALSALVA_TUREK_HRON_FSI3") == "full";
-  const std::string level_env = env("VALSALVA_TUREK_HRON_FSI3_LEVEL");
-  const int level = !level_env.empty() ? std::stoi(level_env) : (full ? 2 : 0);
-  const std::string t_env = env("VALSALVA_TUREK_HRON_FSI3_T");
-  const auto spec =
-      fsi3_spec(ctx, kLevels.at(level), !t_env.empty() ? std::stod(t_env) : (full ? 10.0 : 6.0));
+  const int level_env = env_level("VALSALVA_TUREK_HRON_FSI3_LEVEL");
+  const int level = level_env >= 0 ? level_env : (full ? 2 : 0);
+  const auto spec = fsi3_spec(ctx, kLevels[level],
+                              env_real("VALSALVA_TUREK_HRON_FSI3_T", full ? 10.0 : 6.0, 0.01, 1000));
   const auto r = run_fsi(ctx, spec);
   std::vector<double> t, uy, drag, lift;
   for (const auto& s : r.samples) {
@@ -294,8 +333,9 @@ void run_timing(const Context& ctx, Report& report, int rank) {
   spec.ramp = 0;  // full speed from the start: the cost of the periodic state
   spec.profile = true;
   spec.per_step = env("VALSALVA_TUREK_HRON_FSI_MODE") != "per_stage";
-  if (!env("VALSALVA_TUREK_HRON_FSI_LEVEL").empty())
-    spec.level = kLevels.at(std::stoul(env("VALSALVA_TUREK_HRON_FSI_LEVEL")));
+  if (const int level = env_level("VALSALVA_TUREK_HRON_FSI_LEVEL"); level >= 0)
+    spec.level = kLevels[level];
+  check_choice("VALSALVA_TUREK_HRON_FSI_CASE", {"FSI1", "FSI3"});
   if (env("VALSALVA_TUREK_HRON_FSI_CASE") == "FSI1")
     spec.p = read_turek_hron_parameters(ctx.refdata_dir / "turek_hron_fsi", "FSI1");
   const auto r = run_fsi(ctx, spec);
@@ -318,6 +358,8 @@ void run_timing(const Context& ctx, Report& report, int rank) {
 void run(const Context& ctx, Report& report) {
   int rank = 0;
   MPI_Comm_rank(ctx.comm, &rank);
+  check_choice("VALSALVA_TUREK_HRON_FSI", {"fsi1", "fsi3", "timing"});
+  check_choice("VALSALVA_TUREK_HRON_FSI_MODE", {"per_step", "per_stage"});
   if (env("VALSALVA_TUREK_HRON_FSI") == "timing") return run_timing(ctx, report, rank);
   const std::string only = env("VALSALVA_TUREK_HRON_FSI");
   if (only != "fsi3") run_fsi1(ctx, report, rank);
