@@ -127,7 +127,7 @@ double RunLoop::choose_dt(double remaining) {
           "time.cfl");
   }
   if (const auto& c = options_.coupling; c.max_dt) {
-    const double bound = c.max_dt();
+    const double bound = c.max_dt(step_);
     if (t.dt > 0 && options_.enforce_stability_limit && t.dt > bound)
       throw RunError(fmt::format("time.dt = {:.6g} s exceeds the largest time step {:.6g} s that "
                                  "{} admits at step {}: set time.dt <= {:.6g}, or time.dt = 0 "

@@ -58,7 +58,8 @@ struct OutputOptions {
 struct StepCoupling {
   BodyForce body_force;
   std::function<void(const FlowState&)> finish_step;  // collective, after each flow step
-  std::function<double()> max_dt;  // collective, s, at the current state; +inf = no bound
+  // Collective, s: the bound for the step after `step` steps, at the current state; +inf = none.
+  std::function<double(std::int64_t step)> max_dt;
   std::string max_dt_source;       // what sets max_dt, for the message when time.dt exceeds it
 };
 

@@ -42,12 +42,11 @@ ImmersedRun::ImmersedRun(ImmersedSetup setup, flow::LocalMesh& local, const fs::
   }
 }
 
-double ImmersedRun::max_dt() {
-  // Called by the run loop's time-step choice before step step_ + 1, on every rank; the
-  // schedule depends on the step number only, so a restart repeats it.
-  if (step_ % setup_.stability_check_every == 0 && step_ != evaluated_at_) {
+double ImmersedRun::max_dt(std::int64_t step) {
+  // The schedule depends on the step number only, so a restart repeats it.
+  if (step % setup_.stability_check_every == 0 && step != evaluated_at_) {
     dt_bound_ = setup_.dt_safety * ib_->stable_time_step();
-    evaluated_at_ = step_;
+    evaluated_at_ = step;
   }
   return dt_bound_;
 }
@@ -56,7 +55,7 @@ flow::StepCoupling ImmersedRun::coupling() {
   flow::StepCoupling c;
   c.body_force = ib_->body_force();
   c.finish_step = [this](const flow::FlowState& s) { ib_->finish_step(s); };
-  c.max_dt = [this] { return max_dt(); };
+  c.max_dt = [this](std::int64_t step) { return max_dt(step); };
   c.max_dt_source = fmt::format(
       "the explicit immersed-boundary coupling ({} x the bound 2 sqrt(2)/omega or 2/omega, "
       "omega^2 = lambda_max(Interp Spread K)/rho: stiffer solids or finer fluid meshes lower it; "
@@ -83,7 +82,6 @@ void ImmersedRun::write(double time, flow::FieldSet& fields) {
 }
 
 void ImmersedRun::after_step(double time, std::int64_t step) {
-  step_ = step;
   if (!root_ || step % setup_.log_every != 0) return;
   for (int b = 0; b < ib_->num_bodies(); ++b) {
     const int first = ib_->first_marker(b), n = ib_->body(b).num_nodes();
@@ -137,7 +135,6 @@ void ImmersedRun::restore(const CheckpointReader& in) {
   const auto bound = in.read_array("immersed_dt_bound", std::span(&row, 1));
   dt_bound_ = bound[0];
   evaluated_at_ = static_cast<std::int64_t>(bound[1]);
-  step_ = in.info().step;
 }
 
 }  // namespace valsalva::io

@@ -53,7 +53,7 @@ class ImmersedRun {
   int num_markers() const { return ib_->num_markers(); }
 
  private:
-  double max_dt();
+  double max_dt(std::int64_t step);
   ImmersedSetup setup_;
   flow::LocalMesh& local_;
   std::unique_ptr<ibm::ImmersedStructure> ib_;
@@ -61,7 +61,7 @@ class ImmersedRun {
   std::ofstream csv_;
   flow::VectorField force_density_;
   double dt_bound_ = 0;
-  std::int64_t step_ = 0, evaluated_at_ = 0;  // the bound is re-evaluated at fixed step numbers
+  std::int64_t evaluated_at_ = 0;  // step at which dt_bound_ was evaluated
   bool root_ = false;
 };
 
