@@ -15,9 +15,9 @@
 #include "io/scene.hpp"
 #include "io/scene_docs.hpp"
 #include "io/scene_keys_analysis.hpp"
-#include "io/scene_keys_structure.hpp"
 #include "io/scene_keys_boundary.hpp"
 #include "io/scene_keys_les.hpp"
+#include "io/scene_keys_structure.hpp"
 #include "validation/case.hpp"
 
 namespace valsalva::app {

@@ -60,7 +60,7 @@ struct StepCoupling {
   std::function<void(const FlowState&)> finish_step;  // collective, after each flow step
   // Collective, s: the bound for the step after `step` steps, at the current state; +inf = none.
   std::function<double(std::int64_t step)> max_dt;
-  std::string max_dt_source;       // what sets max_dt, for the message when time.dt exceeds it
+  std::string max_dt_source;  // what sets max_dt, for the message when time.dt exceeds it
 };
 
 struct RunOptions {
@@ -70,7 +70,7 @@ struct RunOptions {
   InitialCondition initial;
   std::vector<BoundarySpec> boundary;  // one per non-periodic patch
   StepCoupling coupling;
-  double velocity_limit = 50;          // m/s
+  double velocity_limit = 50;  // m/s
   // Tests only: let a time step beyond the stability limit through to exercise the guard.
   bool enforce_stability_limit = true;
 };

@@ -129,8 +129,9 @@ std::filesystem::path CheckpointWriter::write(const flow::FlowState& state, std:
 CheckpointArray nodal_checkpoint_array(const std::string& name, const flow::LocalMesh& local,
                                        const flow::ScalarField& field) {
   if (field.size() < static_cast<std::size_t>(local.num_owned))
-    throw std::invalid_argument(fmt::format("nodal_checkpoint_array {}: {} values for {} owned nodes",
-                                            name, field.size(), local.num_owned));
+    throw std::invalid_argument(
+        fmt::format("nodal_checkpoint_array {}: {} values for {} owned nodes", name, field.size(),
+                    local.num_owned));
   CheckpointArray a{name, local.global_nodes, 0, {}, {}};
   for (int i = 0; i < local.num_owned; ++i) {
     a.rows.push_back(local.dual_node[i]);

@@ -21,9 +21,9 @@ ImmersedRun::ImmersedRun(ImmersedSetup setup, flow::LocalMesh& local, const fs::
   } catch (const std::exception& e) {
     std::string ranges;
     for (int b = 0; b < ib_->num_bodies(); ++b)
-      ranges += fmt::format("{}'{}' markers {}..{}", b ? ", " : "", ib_->body(b).spec().name,
-                            ib_->first_marker(b),
-                            ib_->first_marker(b) + ib_->body(b).num_nodes() - 1);
+      ranges +=
+          fmt::format("{}'{}' markers {}..{}", b ? ", " : "", ib_->body(b).spec().name,
+                      ib_->first_marker(b), ib_->first_marker(b) + ib_->body(b).num_nodes() - 1);
     throw std::runtime_error(fmt::format("immersed structures ({}): {}", ranges, e.what()));
   }
   if (root_) {
@@ -93,9 +93,11 @@ void ImmersedRun::after_step(double time, std::int64_t step) {
     Eigen::Vector3d load = -t;
     for (int a : ib_->body(b).clamped_nodes()) load += ib_->forces().col(first + a);
     const double speed = ib_->velocities().middleCols(first, n).colwise().norm().maxCoeff();
-    const double disp = (ib_->positions().middleCols(first, n) - mesh.X).colwise().norm().maxCoeff();
+    const double disp =
+        (ib_->positions().middleCols(first, n) - mesh.X).colwise().norm().maxCoeff();
     csv_ << fmt::format(
-        "{},{:.12g},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.6e},{:.6e},"
+        "{},{:.12g},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.6e},{:.6e}"
+        ","
         "{:.9g},{:.6e}\n",
         step, time, ib_->body(b).spec().name, load.x(), load.y(), load.z(), f.x(), f.y(), f.z(),
         t.x(), t.y(), t.z(), speed, disp, ib_->last_min_det(), dt_bound_);

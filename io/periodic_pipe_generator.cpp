@@ -58,9 +58,8 @@ Disk triangulate_disk(double radius, double size, const std::string& source) {
 }  // namespace
 
 flow::Mesh generate_periodic_pipe_mesh(const PeriodicPipeSpec& s) {
-  for (const auto& [name, value] : {std::pair{"radius", s.radius},
-                                    {"length", s.length},
-                                    {"target_size", s.target_size}})
+  for (const auto& [name, value] :
+       {std::pair{"radius", s.radius}, {"length", s.length}, {"target_size", s.target_size}})
     if (!(value > 0.0) || !std::isfinite(value))
       throw std::invalid_argument(fmt::format(
           "generate_periodic_pipe_mesh: {} must be positive and finite, got {}", name, value));
@@ -94,12 +93,12 @@ flow::Mesh generate_periodic_pipe_mesh(const PeriodicPipeSpec& s) {
   std::vector<std::pair<int, int>> boundary;
   for (const auto& t : disk.triangles)
     for (int i = 0; i < 3; ++i)
-      if (sides[std::minmax(t[i], t[(i + 1) % 3])] == 1) boundary.emplace_back(t[i], t[(i + 1) % 3]);
+      if (sides[std::minmax(t[i], t[(i + 1) % 3])] == 1)
+        boundary.emplace_back(t[i], t[(i + 1) % 3]);
   for (int l = 0; l < s.layers; ++l) {
     for (const auto& t : disk.triangles) {
-      const std::array<flow::GlobalIndex, 6> prism{at(t[0], l),     at(t[1], l),
-                                                   at(t[2], l),     at(t[0], l + 1),
-                                                   at(t[1], l + 1), at(t[2], l + 1)};
+      const std::array<flow::GlobalIndex, 6> prism{
+          at(t[0], l), at(t[1], l), at(t[2], l), at(t[0], l + 1), at(t[1], l + 1), at(t[2], l + 1)};
       mesh.add_cell(flow::CellType::prism, prism);
     }
     for (const auto& [a, b] : boundary) {

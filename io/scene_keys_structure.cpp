@@ -82,7 +82,11 @@ void declare_structure_keys(Schema& s) {
   s.real3(k + ".size").required().above(0).unit_of("m").doc("Extent of the bar along x, y, z");
   s.when(k + ".size", k + ".mesh", {"bar"});
   s.real(k + ".radius").required().above(0).unit_of("m").doc("Mid-surface radius of the patch");
-  s.real(k + ".angle").required().in_range(0, 360).unit_of("deg").doc("Angular span, centred on +x");
+  s.real(k + ".angle")
+      .required()
+      .in_range(0, 360)
+      .unit_of("deg")
+      .doc("Angular span, centred on +x");
   s.real(k + ".height").required().above(0).unit_of("m").doc("Extent along the patch axis z");
   s.real(k + ".thickness").required().above(0).unit_of("m").doc("Shell thickness");
   for (const char* key : {".radius", ".angle", ".height", ".thickness"})
@@ -176,9 +180,9 @@ void place(const Scene& scene, const std::string& k, structure::SolidMesh& mesh)
   const double angle = scene.get<double>(k + ".rotation_angle") * std::numbers::pi / 180;
   if (angle != 0 && !(axis.norm() > 0))
     throw scene.error(k + ".rotation_axis", "the rotation axis is zero");
-  const Eigen::Matrix3d r =
-      angle == 0 ? Eigen::Matrix3d::Identity()
-                 : Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+  const Eigen::Matrix3d r = angle == 0
+                                ? Eigen::Matrix3d::Identity()
+                                : Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
   mesh.X = (r * mesh.X).colwise() + vec(scene, k + ".translate");
 }
 

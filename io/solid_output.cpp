@@ -64,8 +64,9 @@ std::string write_solid_h5(const std::filesystem::path& dir, const std::string& 
         fmt::format("write_solid_results: {} positions for a mesh of {} nodes", x.cols(), n));
   for (const auto& [name, v] : vectors)
     if (v->cols() != n)
-      throw std::invalid_argument(fmt::format(
-          "write_solid_results: field '{}' has {} values for a mesh of {} nodes", name, v->cols(), n));
+      throw std::invalid_argument(
+          fmt::format("write_solid_results: field '{}' has {} values for a mesh of {} nodes", name,
+                      v->cols(), n));
   const bool q2 = mesh.order == HexOrder::q2;
   const int nen = mesh.nodes_per_element();
   std::vector<std::int64_t> topo(static_cast<std::size_t>(ne) * nen);
@@ -116,12 +117,9 @@ std::string write_solid_h5(const std::filesystem::path& dir, const std::string& 
       item(h5name, "geometry", n, 3, "Float", 8), attrs);
 }
 
-std::filesystem::path write_solid_results(const std::filesystem::path& dir,
-                                          const std::string& basename,
-                                          const structure::SolidMesh& mesh,
-                                          const Eigen::Matrix3Xd& x,
-                                          const structure::NodalStress* stress,
-                                          const SolidVectors& vectors) {
+std::filesystem::path write_solid_results(
+    const std::filesystem::path& dir, const std::string& basename, const structure::SolidMesh& mesh,
+    const Eigen::Matrix3Xd& x, const structure::NodalStress* stress, const SolidVectors& vectors) {
   const std::string grid = write_solid_h5(dir, basename, mesh, x, stress, vectors);
   const auto xmf = dir / (basename + ".xmf");
   std::ofstream out(xmf);

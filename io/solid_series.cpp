@@ -18,9 +18,10 @@ std::filesystem::path SolidSeries::write(double time, const Eigen::Matrix3Xd& x,
                                          const SolidVectors& vectors) {
   const std::string step = fmt::format("{}_{:06d}", basename_, grids_.size());
   const std::string body = write_solid_h5(dir_, step, *mesh_, x, stress, vectors);
-  grids_.push_back(fmt::format(
-      "    <Grid Name=\"{}\" GridType=\"Uniform\">\n      <Time Value=\"{:.17g}\"/>\n{}    </Grid>\n",
-      step, time, body));
+  grids_.push_back(
+      fmt::format("    <Grid Name=\"{}\" GridType=\"Uniform\">\n      <Time "
+                  "Value=\"{:.17g}\"/>\n{}    </Grid>\n",
+                  step, time, body));
   // Written to a temporary name and renamed: a reader never sees half a file.
   const auto xmf = xmf_file();
   const auto tmp = dir_ / (basename_ + ".xmf.tmp");
@@ -31,8 +32,7 @@ std::filesystem::path SolidSeries::write(double time, const Eigen::Matrix3Xd& x,
                        basename_);
     for (const auto& g : grids_) out << g;
     out << "  </Grid>\n  </Domain>\n</Xdmf>\n";
-    if (!out)
-      throw std::runtime_error(fmt::format("solid output: cannot write {}", tmp.string()));
+    if (!out) throw std::runtime_error(fmt::format("solid output: cannot write {}", tmp.string()));
   }
   std::filesystem::rename(tmp, xmf);
   return dir_ / (step + ".h5");

@@ -37,8 +37,8 @@ TEST_CASE("periodic pipe: prisms and split tetrahedra, volume, wall, identical l
     for (flow::GlobalIndex f = 0; f < mesh.num_faces(); ++f)
       if (mesh.face_patches[f] == wall)
         for (auto n : mesh.face(f))
-          off = std::max(off, std::abs(std::hypot(mesh.nodes[n].x(), mesh.nodes[n].y()) -
-                                       spec.radius));
+          off = std::max(off,
+                         std::abs(std::hypot(mesh.nodes[n].x(), mesh.nodes[n].y()) - spec.radius));
     CHECK(off < 1e-9 * spec.radius);
     // Layer l is layer 0 shifted by l * length / layers, node by node.
     const auto per_layer = mesh.num_nodes() / (spec.layers + 1);

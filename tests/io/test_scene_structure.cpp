@@ -82,7 +82,8 @@ stresses = false
   CHECK(hi.z() == doctest::Approx(0.008).epsilon(1e-12));
   // The clamped set is the bar's y = 0 face, now at x = 0.01 after the rotation.
   CHECK(s.body.clamped_sets == std::vector<std::string>{"bottom"});
-  for (int a : s.mesh.node_set("bottom")) CHECK(s.mesh.X(0, a) == doctest::Approx(0.01).epsilon(1e-12));
+  for (int a : s.mesh.node_set("bottom"))
+    CHECK(s.mesh.X(0, a) == doctest::Approx(0.01).epsilon(1e-12));
   CHECK(s.body.tether_stiffness == 5.0);
   CHECK(s.material != nullptr);
   const auto& o = setup.options;
@@ -124,7 +125,8 @@ mesh = "bar"
 size = [0.001, 0.008, 0.006]
 elements = [1, 4, 3]
 parameters = { G = 1.0e4 }
-)").find("material 'neo_hookean' needs parameter 'K'") != std::string::npos);
+)")
+            .find("material 'neo_hookean' needs parameter 'K'") != std::string::npos);
   CHECK(error_of(R"(
 [structure.leaflet]
 mesh = "shell_patch"
@@ -134,7 +136,8 @@ height = 0.01
 thickness = 0.003
 elements = [4, 4, 1]
 parameters = { G = 1.0e4, K = 1.0e5 }
-)").find("key 'structure.leaflet.thickness': the shell is thicker than its diameter") !=
+)")
+            .find("key 'structure.leaflet.thickness': the shell is thicker than its diameter") !=
         std::string::npos);
   CHECK(error_of(R"(
 [structure.a-b]
@@ -142,5 +145,6 @@ mesh = "bar"
 size = [0.001, 0.008, 0.006]
 elements = [1, 4, 3]
 parameters = { G = 1.0e4, K = 1.0e5 }
-)").find("structure name 'a-b' is not a plain name") != std::string::npos);
+)")
+            .find("structure name 'a-b' is not a plain name") != std::string::npos);
 }

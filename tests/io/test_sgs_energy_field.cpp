@@ -19,8 +19,9 @@ TEST_CASE("resolved turbulent energy: statistics k where covered, |u|^2/2 elsewh
   const double rho = 2.0;
   // Time average (one bin) over the nodes with x <= 0.5.
   std::vector<io::PhaseStatistics> stats;
-  stats.emplace_back(local, io::PhaseStatisticsOptions{0.0, 1, 0.0, rho, "s"},
-                     io::nodes_in_box(local, Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(0.5, 2, 2)));
+  stats.emplace_back(
+      local, io::PhaseStatisticsOptions{0.0, 1, 0.0, rho, "s"},
+      io::nodes_in_box(local, Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(0.5, 2, 2)));
   // Two samples U +- a: mean U = (1, 2, 3), fluctuation a = (0.1, 0.2, 0.3) in every sample, so
   // k / rho = (0.01 + 0.04 + 0.09) / 2 = 0.07; uncovered nodes get |U + a|^2 / 2 of the current
   // velocity (here the second sample): (0.9^2 + 1.8^2 + 2.7^2) / 2 = 5.67.

@@ -41,8 +41,8 @@ int main(int argc, char** argv) {
       fmt::print(
           "cbc_study: {}^3, box {} M, model {}, scheme {}, spin-up {} tU0/M, stability {}, "
           "update {}, seed {}: {} steps, {:.1f} s\n",
-          spec.n, spec.box_in_m, spec.model, spec.scheme, spec.spinup, spec.stability,
-          spec.update, spec.seed, r.steps, r.wall_seconds);
+          spec.n, spec.box_in_m, spec.model, spec.scheme, spec.spinup, spec.stability, spec.update,
+          spec.seed, r.steps, r.wall_seconds);
       auto stations = r.stations;
       stations.insert(stations.begin(), r.initial);
       for (const auto& s : stations) {

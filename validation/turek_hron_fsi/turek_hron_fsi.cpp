@@ -68,7 +68,8 @@ std::string env(const char* name) {
 
 // The options above, checked: a value that is not a number in range (or not one of the accepted
 // words) stops the case naming the variable, its value and what is accepted.
-[[noreturn]] void bad_option(const char* name, const std::string& value, const std::string& accepted) {
+[[noreturn]] void bad_option(const char* name, const std::string& value,
+                             const std::string& accepted) {
   throw std::invalid_argument(
       fmt::format("turek_hron_fsi: {}={} is not accepted (expected {})", name, value, accepted));
 }
@@ -276,8 +277,8 @@ void run_fsi3(const Context& ctx, Report& report, int rank) {
   const bool full = env("VALSALVA_TUREK_HRON_FSI3") == "full";
   const int level_env = env_level("VALSALVA_TUREK_HRON_FSI3_LEVEL");
   const int level = level_env >= 0 ? level_env : (full ? 2 : 0);
-  const auto spec = fsi3_spec(ctx, kLevels[level],
-                              env_real("VALSALVA_TUREK_HRON_FSI3_T", full ? 10.0 : 6.0, 0.01, 1000));
+  const auto spec = fsi3_spec(
+      ctx, kLevels[level], env_real("VALSALVA_TUREK_HRON_FSI3_T", full ? 10.0 : 6.0, 0.01, 1000));
   const auto r = run_fsi(ctx, spec);
   std::vector<double> t, uy, drag, lift;
   for (const auto& s : r.samples) {

@@ -13,8 +13,8 @@
 // LES on the laminar flow: the sigma operator is zero for the pure shear du_z/dr, so nu_sgs
 // vanishes on the exact (parallel) initial field; over the run it only sees the discrete
 // transverse velocities, so here it is information (the 1e-8 check is made on the
-// periodic pipe, validation/womersley_periodic). Smagorinsky's spurious nu_sgs is reported. Table: levels.csv;
-// profiles.csv and curves.csv, plotted by plot.py into womersley_profiles.png.
+// periodic pipe, validation/womersley_periodic). Smagorinsky's spurious nu_sgs is reported. Table:
+// levels.csv; profiles.csv and curves.csv, plotted by plot.py into womersley_profiles.png.
 #include <fmt/format.h>
 
 #include <algorithm>

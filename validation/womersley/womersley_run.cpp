@@ -43,7 +43,8 @@ std::vector<double> gather_to_root(const std::vector<double>& mine, MPI_Comm com
 PhaseSteps phase_steps(const flow::Womersley& exact, double period, int phases, double cfl,
                        double h) {
   PhaseSteps s;
-  for (int k = 0; k < 1000; ++k) s.u_peak = std::max(s.u_peak, exact.velocity(0.0, period * k / 1000));
+  for (int k = 0; k < 1000; ++k)
+    s.u_peak = std::max(s.u_peak, exact.velocity(0.0, period * k / 1000));
   const double interval = period / phases;
   s.per_phase = static_cast<int>(std::ceil(interval / (cfl * h / s.u_peak)));
   s.dt = interval / s.per_phase;

@@ -78,7 +78,8 @@ PeriodicResult run_periodic_womersley(const PeriodicSetup& setup, MPI_Comm comm)
   const int n = local.num_local();
   state.velocity.assign(n, Eigen::Vector3d::Zero());
   state.pressure.assign(n, 0.0);
-  for (int j = 0; j < n; ++j) state.velocity[j].z() = exact.velocity(radius_of(local.position[j]), 0);
+  for (int j = 0; j < n; ++j)
+    state.velocity[j].z() = exact.velocity(radius_of(local.position[j]), 0);
   bc->impose(state.velocity, 0.0);
 
   const auto steps = phase_steps(exact, kPeriod, setup.phases, setup.cfl, h);

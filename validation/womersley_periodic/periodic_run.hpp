@@ -37,8 +37,8 @@ struct PeriodicResult {
   double radius = 0, h = 0, u_peak = 0, dt = 0, wall = 0;
   long nodes = 0;
   int steps = 0;
-  double max_error = 0, l2_error = 0;  // worst over the phases of the last period, / u_peak
-  double transverse = 0;               // max |u_x, u_y| / u_peak over all steps and nodes
+  double max_error = 0, l2_error = 0;          // worst over the phases of the last period, / u_peak
+  double transverse = 0;                       // max |u_x, u_y| / u_peak over all steps and nodes
   double max_nu_ratio = 0, mean_nu_ratio = 0;  // LES: over owned nodes and all RK stages
   double max_divergence = 0;
   // Last-period samples, gathered on rank 0: time, r, u_z, u_exact per owned node.

@@ -112,12 +112,12 @@ void run_case(const Context& ctx, Report& report) {
       run.change /= twin.result.u_peak;
     }
     if (rank != 0) continue;
-    csv << fmt::format("{},{},{},{},{},{},{:.6e},{:.6f},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},"
-                       "{:.6e},{:.3e},{:.1f}\n",
-                       run.label, run.setup.nodes_per_diameter, run.setup.split ? "tetra" : "prism",
-                       run.setup.les_model, r.nodes, r.steps, r.dt, r.u_peak, r.max_error,
-                       r.l2_error, r.transverse, r.max_nu_ratio, r.mean_nu_ratio, run.change,
-                       r.max_divergence, r.wall);
+    csv << fmt::format(
+        "{},{},{},{},{},{},{:.6e},{:.6f},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},"
+        "{:.6e},{:.3e},{:.1f}\n",
+        run.label, run.setup.nodes_per_diameter, run.setup.split ? "tetra" : "prism",
+        run.setup.les_model, r.nodes, r.steps, r.dt, r.u_peak, r.max_error, r.l2_error,
+        r.transverse, r.max_nu_ratio, r.mean_nu_ratio, run.change, r.max_divergence, r.wall);
     csv.flush();
     fmt::print(
         "womersley_periodic {}: {} nodes, {} steps dt {:.3e} s, max error {:.3e} L2 {:.3e}, "
@@ -136,8 +136,8 @@ void run_case(const Context& ctx, Report& report) {
              Check::at_most);
   report.add(where + ", sigma: max nu_sgs / nu over all steps and stages",
              sigma.result.max_nu_ratio, 0.0, 1e-8, Check::at_most);
-  report.add(where + ", sigma: max |u_sigma - u_none| / u_peak at the end", sigma.change, 0.0,
-             1e-8, Check::at_most);
+  report.add(where + ", sigma: max |u_sigma - u_none| / u_peak at the end", sigma.change, 0.0, 1e-8,
+             Check::at_most);
   report.add(where + ", smagorinsky: max nu_sgs / nu (reported)", smag.result.max_nu_ratio, 0.0,
              20.0, Check::at_most);
   report.add(where + ", smagorinsky: mean nu_sgs / nu (reported)", smag.result.mean_nu_ratio, 0.0,
@@ -171,8 +171,8 @@ void run_case(const Context& ctx, Report& report) {
              Check::at_most);
   report.add("Wo 17, prisms D/20: L2 axial error / u_peak", none.l2_error, 0.0, 0.01,
              Check::at_most);
-  report.add("Wo 17, prisms D/40: max axial error / u_peak", find(runs, "prism_d40").result.max_error,
-             0.0, 0.01, Check::at_most);
+  report.add("Wo 17, prisms D/40: max axial error / u_peak",
+             find(runs, "prism_d40").result.max_error, 0.0, 0.01, Check::at_most);
   report.add("Wo 17, prisms D/40: L2 axial error / u_peak", find(runs, "prism_d40").result.l2_error,
              0.0, 0.01, Check::at_most);
   const auto order = [&](const std::string& a, const std::string& b, bool l2) {
