@@ -146,14 +146,17 @@ void declare_flow_keys(Schema& s) {
       .doc("Whether output.interval is simulated time or a whole number of time steps");
   s.string_list("output.fields")
       .def(std::vector<std::string>{"velocity", "pressure", "vorticity"})
-      .values({"velocity", "pressure", "vorticity", "q_criterion", "sgs_energy_fraction"})
+      .values({"velocity", "pressure", "vorticity", "q_criterion", "sgs_energy_fraction",
+               "pope_sgs_fraction"})
       .unit_of("-")
       .doc(
           "Fields to write; vorticity is the curl of the nodal velocity gradient, q_criterion "
           "1/2 (|W|^2 - |S|^2) of it (vortex cores where > 0); with [les] a model, nu_sgs/nu too, "
           "and on request sgs_energy_fraction = k_sgs / (k_res + k_sgs) with Yoshizawa's "
           "k_sgs = (nu_sgs / (0.094 Delta))^2 and k_res the [statistics] k / rho where a section "
-          "covers the node (bin with >= 2 samples), else |u|^2 / 2 (les/sgs_energy.hpp); with "
+          "covers the node (bin with >= 2 samples), else |u|^2 / 2 (les/sgs_energy.hpp), and "
+          "pope_sgs_fraction = Pope's a-priori estimate 3/2 C (Delta / (pi L))^(2/3) with C = 1.5 "
+          "and L = les.integral_length (les/pope_estimate.hpp); with "
           "immersed structures, their force density (and the Lagrangian meshes in structures/)");
   // Checkpoints for `valsalva run --restart`: HDF5 files in <run dir>/checkpoints (see
   // io/checkpoint.hpp), also written on SIGINT/SIGTERM.

@@ -8,6 +8,7 @@
 
 #include "io/scene_keys.hpp"
 #include "io/sgs_energy_field.hpp"
+#include "les/pope_estimate.hpp"
 #include "les/sgs_energy.hpp"
 #include "les/subgrid_viscosity.hpp"
 
@@ -38,6 +39,15 @@ void declare_les_keys(Schema& s) {
           "stages (4x cheaper: 6-7 % of a step instead of 20-23 % at 48^3; the TGV Re 1600 peak "
           "-dE/dt at 64^3 moves by 0.65 % and the CBC resolved energy by 0.2-0.4 %, "
           "validation/tgv_les and bench_les_cost); stage = at every RK stage");
+  s.real("les.integral_length")
+      .def(0.0)
+      .at_least(0)
+      .note("0 = not given")
+      .unit_of("m")
+      .doc(
+          "Integral length scale L of the turbulence for the output field pope_sgs_fraction "
+          "(Pope's estimate of the subgrid share of the turbulent energy; a resolved LES has "
+          "<= 0.2), e.g. the jet or vessel radius downstream of a valve; needed by that field");
 }
 
 struct LesSetup::Shared {
@@ -46,6 +56,7 @@ struct LesSetup::Shared {
   bool energy_fraction = false;             // output.fields has sgs_energy_fraction
   const flow::ScalarField* last = nullptr;  // the solver's nu_sgs array, filled last
   flow::ScalarField ratio, resolved, fraction;
+  flow::ScalarField pope;  // pope_sgs_fraction (from the mesh alone), empty when not asked
   const flow::LocalMesh* local = nullptr;
 };
 
@@ -58,6 +69,7 @@ void LesSetup::add_fields(flow::FieldSet& set, double time, const flow::VectorFi
   if (sh.last)
     for (std::size_t i = 0; i < sh.ratio.size(); ++i) sh.ratio[i] = (*sh.last)[i] * scale;
   set.scalars.emplace_back(sh.nu > 0 ? "nu_sgs_over_nu" : "nu_sgs", &sh.ratio);
+  if (!sh.pope.empty()) set.scalars.emplace_back("pope_sgs_fraction", &sh.pope);
   if (!sh.energy_fraction) return;
   resolved_turbulent_energy(*sh.local, velocity, statistics, time, sh.resolved);
   sh.fraction.assign(sh.resolved.size(), 0.0);
@@ -69,17 +81,22 @@ void LesSetup::add_fields(flow::FieldSet& set, double time, const flow::VectorFi
 
 namespace {
 
-bool wants_energy_fraction(const Scene& scene) {
+bool wants_field(const Scene& scene, const char* name) {
   const auto fields = scene.get<std::vector<std::string>>("output.fields");
-  return std::find(fields.begin(), fields.end(), "sgs_energy_fraction") != fields.end();
+  return std::find(fields.begin(), fields.end(), name) != fields.end();
 }
 
 }  // namespace
 
 void check_les_scene(const Scene& scene) {
-  if (scene.get<std::string>("les.model") == "none" && wants_energy_fraction(scene))
-    throw scene.error("output.fields", "sgs_energy_fraction needs a subgrid model",
-                      "les.model = sigma, wale or smagorinsky, or drop sgs_energy_fraction");
+  for (const char* field : {"sgs_energy_fraction", "pope_sgs_fraction"})
+    if (scene.get<std::string>("les.model") == "none" && wants_field(scene, field))
+      throw scene.error("output.fields", fmt::format("{} needs a subgrid model", field),
+                        fmt::format("les.model = sigma, wale or smagorinsky, or drop {}", field));
+  if (wants_field(scene, "pope_sgs_fraction") && !(scene.get<double>("les.integral_length") > 0))
+    throw scene.error("les.integral_length",
+                      "pope_sgs_fraction in output.fields needs the integral length scale",
+                      "les.integral_length = L > 0 in m");
 }
 
 void LesSetup::resume(const flow::ScalarField& nu_sgs) const {
@@ -91,7 +108,7 @@ LesSetup les_setup(const Scene& scene, const flow::LocalMesh& local) {
   LesSetup out;
   out.model = scene.get<std::string>("les.model");
   if (out.model == "none") return out;
-  const bool fraction = wants_energy_fraction(scene);
+  const bool fraction = wants_field(scene, "sgs_energy_fraction");
   const double c = scene.get<double>("les.constant");
   try {
     out.shared = std::make_shared<LesSetup::Shared>(LesSetup::Shared{
@@ -103,11 +120,17 @@ LesSetup les_setup(const Scene& scene, const flow::LocalMesh& local) {
         {},
         {},
         {},
+        {},
         &local});
   } catch (const std::invalid_argument& e) {
     throw scene.error("les.constant", e.what(), "a finite value > 0, or 0 for the default");
   }
   out.constant = out.shared->model.model().constant;
+  if (wants_field(scene, "pope_sgs_fraction")) {
+    const double L = scene.get<double>("les.integral_length");
+    for (double delta : out.shared->model.filter_width())
+      out.shared->pope.push_back(les::pope_subgrid_fraction(delta, L));
+  }
   out.subgrid_viscosity = [sh = out.shared](int stage, const flow::TensorField& grad,
                                             flow::ScalarField& nu_sgs) {
     sh->model(stage, grad, nu_sgs);

@@ -20,8 +20,9 @@ struct LesSetup {
   // For flow::ProjectionOptions::subgrid_viscosity; empty for les.model = "none".
   std::function<void(int, const flow::TensorField&, flow::ScalarField&)> subgrid_viscosity;
   // Appends nu_sgs / nu (or nu_sgs when nu = 0) of the last RK stage to `set` (zero before the
-  // first stage), and sgs_energy_fraction when output.fields asks for it (les/sgs_energy.hpp,
-  // resolved energy from `statistics` or `velocity`, io/sgs_energy_field.hpp); a no-op for
+  // first stage), and sgs_energy_fraction / pope_sgs_fraction when output.fields asks for them
+  // (les/sgs_energy.hpp, resolved energy from `statistics` or `velocity`,
+  // io/sgs_energy_field.hpp; les/pope_estimate.hpp with les.integral_length); a no-op for
   // "none". The pointers stay valid until the next call.
   void add_fields(flow::FieldSet& set, double time, const flow::VectorField& velocity,
                   const std::vector<PhaseStatistics>& statistics = {}) const;
@@ -35,7 +36,8 @@ struct LesSetup {
 };
 
 // Scene checks that need no mesh partition (valsalva check, and run before the run directory is
-// touched): output.fields asking for sgs_energy_fraction without a model is a SceneError.
+// touched): output.fields asking for sgs_energy_fraction or pope_sgs_fraction without a model,
+// or pope_sgs_fraction without les.integral_length, is a SceneError.
 void check_les_scene(const Scene& scene);
 
 // [les] for `local` (filter width = cube root of the dual volume, LocalMesh::h). Throws

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace valsalva::les {
@@ -48,6 +49,30 @@ double SpectrumTable::operator()(double k) const {
   i = std::min(i, logk_.size() - 2);
   const double t = (lk - logk_[i]) / (logk_[i + 1] - logk_[i]);
   return std::exp(logE_[i] + t * (logE_[i + 1] - logE_[i]));
+}
+
+double table_moment(const SpectrumTable& E, double p) {
+  const auto& k = E.k();
+  const auto& e = E.E();
+  double sum = 0.0;
+  for (std::size_t i = 0; i + 1 < k.size(); ++i) {
+    // On the segment E = e_i (k / k_i)^a, so k^p E integrates to a power of exponent a + p + 1.
+    const double ratio = k[i + 1] / k[i];
+    const double a = std::log(e[i + 1] / e[i]) / std::log(ratio), q = a + p + 1.0;
+    const double base = e[i] * std::pow(k[i], p + 1.0);
+    sum += std::abs(q) < 1e-12 ? base * std::log(ratio) : base * (std::pow(ratio, q) - 1.0) / q;
+  }
+  return sum;
+}
+
+LargeScales large_scales(const SpectrumTable& E) {
+  LargeScales s;
+  s.energy = table_moment(E, 0.0);
+  const double u2 = 2.0 * s.energy / 3.0;
+  s.u_rms = std::sqrt(u2);
+  s.integral_length = std::numbers::pi / (2.0 * u2) * table_moment(E, -1.0);
+  s.turnover_time = s.integral_length / s.u_rms;
+  return s;
 }
 
 }  // namespace valsalva::les

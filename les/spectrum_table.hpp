@@ -27,4 +27,15 @@ class SpectrumTable {
   std::string source_;
 };
 
+// Exact integral of k^p E(k) over the table's range [k_first, k_last] (power law per segment).
+double table_moment(const SpectrumTable& E, double p);
+
+// Large-scale quantities of an isotropic spectrum over the table's range: kinetic energy
+// K = int E dk, u' = sqrt(2K/3), longitudinal integral scale L11 = pi / (2 u'^2) int E / k dk
+// (Pope, Turbulent Flows, eq. 6.213) and the large-eddy turnover time L11 / u'.
+struct LargeScales {
+  double energy = 0, u_rms = 0, integral_length = 0, turnover_time = 0;
+};
+LargeScales large_scales(const SpectrumTable& E);
+
 }  // namespace valsalva::les

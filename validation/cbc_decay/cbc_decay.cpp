@@ -4,25 +4,46 @@
 // the resolved energy against the measured spectra filtered to the mesh's shells (see
 // cbc_run.hpp). Target: resolved energy within 10% at both stations at 64^3 with sigma.
 // Quick version: 32^3, sigma only. CSV: spectra.csv, energy.csv, decay.csv, runs.csv.
-// Initial field: random phases rescaled to the 42 spectrum after every step of a spin-up of
-// 20 tU0/M (les/spectrum_rescale.hpp), so that the cascade exists at 42.
-// Tolerances: 10% for sigma at 64^3 (the issue's target). At 32^3 the cut-off (1.7 1/cm) lies in
-// the energy-containing range and every model keeps too much resolved energy (measured ratios
-// 1.13-1.25 at np 1); 35% separates them from the model-free run (1.67 at 98, 1.87 at 171), which
-// is only loosely bounded.
-// The 64^3 sigma miss at 171 (issue 4, measured with bench_cbc_study; ratios resolved /
-// experiment at 98 and 171): default 1.014, 0.889. Time step 1/2, 1/4 (stability 0.35, 0.175):
-// 1.016/0.882, 1.015/0.880 (converged in dt). Seeds 1-4: 171 at 0.876-0.895. central4: 1.043,
-// 0.881. Spin-up 40: 1.011, 0.877; none: 1.130, 1.029 (no transfer at first, so more energy
-// everywhere). No model: 1.350, 1.133. Box 22 M at the 32^3 spacing: 1.240/1.148 against
-// 1.220/1.122 in 11 M (box size: 2 % at 171). Reference definition: the exact shell integral
-// int_{k0/2}^{(n/2 - 1/2) k0} E dk instead of the midpoint sum changes E_exp(171) by +0.04 %, the
-// integral to pi / h by +0.5 % (both make the miss larger). Sigma as in Nicoud et al. 2011:
-// (C Delta)^2 s3 (s1 - s2)(s2 - s3) / s1^2 with C = 1.35 and Delta = V^(1/3), as implemented.
-// Where: at 171 the shells 3-8 (0.34-0.90 1/cm, around the spectral peak) hold 0.65-0.90 of the
-// measured E(k), the shells above 0.87-1.13. Every set-up loses 8-16 % against the measurement
-// from 98 to 171, with and without a model: the energy-containing scales decay faster than
-// measured, which the subgrid model does not set. Not fixed; reported.
+//
+// Initial field: random phases rescaled to the 42 spectrum after every step of a spin-up
+// (les/spectrum_rescale.hpp), so that the cascade exists at 42. Its length is the one free
+// parameter of the initialisation: a quarter of the large-eddy turnover L11 / u' of the 42
+// spectrum (les::large_scales: L11 2.38 cm, u' 22.8 cm/s, 20.6 tU0/M; so 5.1 tU0/M).
+//
+// Why a quarter: the random phases carry no triple correlations; one step of rescaled flow
+// gives the resolved derivative skewness its developed value (-0.24..-0.26 after 2 tU0/M, no
+// further growth; les/derivative_skewness.hpp, printed by bench_cbc_study), so the small-scale
+// cascade is there after a few tU0/M. Continuing to rescale is a forcing: every step puts the
+// energy the large shells lost back into them, and over a whole turnover it turns the large
+// eddies into a forced-stationary state whose transfer outruns the measured decaying flow.
+//
+// Measured (64^3 sigma, resolved / experiment at 98 and 171; spinup.csv of this case):
+//   spin-up 0            1.130 / 1.028  (no transfer at first: too much energy at 98)
+//   1/4 turnover         1.069 / 0.963  (default)
+//   1/2 turnover         1.035 / 0.924
+//   1 turnover           1.014 / 0.889  (fails 171)
+//   40 tU0/M             1.011 / 0.877  (bench_cbc_study --spinup 1.95)
+// So the pass holds for 1/4 to 1/2 turnover and fails without spin-up (98) and with a full
+// turnover (171): the result depends on this choice. What does not: started from the measured
+// 98 spectrum (spin-up 1/4 of the 98 turnover), 64^3 sigma reaches 171 at 0.995 (asserted 10 %),
+// so from a measured state the solver and model decay the resolved energy as measured; the 42
+// state (young grid turbulence) is what the initialisation has to guess.
+//
+// Sensitivities of the default (bench_cbc_study; 98 / 171): time step 1/2, 1/4 (stability
+// 0.35, 0.175) 1.071 / 0.955, 1.070 / 0.952 (converged in dt to 1 %); seeds 1-3 1.067-1.077 /
+// 0.947-0.967; central4 1.083 / 0.948. Older (full-turnover spin-up): box 22 M at the 32^3
+// spacing 1.240 / 1.148 against 1.220 / 1.122 in 11 M (box size: 2 % at 171); the exact shell
+// integral instead of the midpoint sum moves E_exp(171) by +0.04 %, the integral to pi / h by
+// +0.5 %. Sigma as in Nicoud et al. 2011: (C Delta)^2 s3 (s1 - s2)(s2 - s3) / s1^2, C = 1.35,
+// Delta = V^(1/3). Where the 171 spectrum still differs: shells 3-8 (0.34-0.90 1/cm, around the
+// measured peak) hold 0.78-0.97 of the measured E(k), shell 2 1.17 (spectra.png).
+//
+// Tolerances: 10% for sigma at 64^3 (the issue's target). At 32^3 the cut-off (1.7 1/cm) lies
+// in the energy-containing range and every model keeps too much resolved energy (1.11-1.24 at
+// np 1); 35% separates them from the model-free run (1.66 at 98, 1.89 at 171), which is only
+// loosely bounded. Measured with the default (np 1, 779 s for the whole case on a loaded
+// machine): 64^3 sigma 1.069 / 0.963, WALE 1.040 / 0.956, Smagorinsky 1.050 / 0.955, none
+// 1.404 / 1.184; 32^3 sigma 1.243 / 1.175.
 #include <fmt/format.h>
 #include <fmt/os.h>
 
@@ -34,6 +55,45 @@
 namespace valsalva::validation {
 
 namespace {
+
+// 64^3 sigma: how the stations depend on the spin-up length (the initialisation's one free
+// parameter), and the 98 -> 171 decay from the measured 98 spectrum itself (spinup.csv).
+void spinup_study(const Context& ctx, Report& report, int rank) {
+  std::unique_ptr<fmt::ostream> csv;
+  if (rank == 0) {
+    csv = std::make_unique<fmt::ostream>(fmt::output_file((ctx.out_dir / "spinup.csv").string()));
+    csv->print("start,spinup_turnovers,spinup_u0_over_m,station,ratio\n");
+  }
+  struct Variant {
+    int start;
+    double turnovers;
+  };
+  for (const Variant v :
+       {Variant{42, 0.0}, Variant{42, 0.5}, Variant{42, 1.0}, Variant{98, 0.25}}) {
+    CbcSpec spec;
+    spec.n = 64;
+    spec.start_station = v.start;
+    spec.stations = v.start == 98 ? std::vector<int>{171} : std::vector<int>{98, 171};
+    spec.spinup_turnovers = v.turnovers;
+    spec.table = ctx.refdata_dir / "cbc_decaying_turbulence" / "PHiLiP_cbc_experiment_table3.txt";
+    const auto r = run_cbc(spec, ctx.comm);
+    for (const auto& s : r.stations) {
+      const double ratio = s.resolved / s.resolved_exp;
+      if (rank == 0) {
+        csv->print("{},{},{:.3f},{},{:.6f}\n", v.start, v.turnovers, r.spinup_u0_over_m,
+                   s.t_u0_over_m, ratio);
+        fmt::print(
+            "cbc_decay 64^3 sigma from {} (spin-up {} turnovers = {:.2f} tU0/M): E_res({}) "
+            "/ E_exp = {:.3f}\n",
+            v.start, v.turnovers, r.spinup_u0_over_m, s.t_u0_over_m, ratio);
+      }
+      // From the measured 98 spectrum the decay to 171 is the solver's and model's alone.
+      if (v.start == 98)
+        report.add("64^3 sigma from the measured 98 spectrum: E_res(171) / E_exp(171)", ratio, 1.0,
+                   0.10);
+    }
+  }
+}
 
 void run(const Context& ctx, Report& report) {
   int rank = 0;
@@ -59,7 +119,6 @@ void run(const Context& ctx, Report& report) {
       CbcSpec spec;
       spec.n = n;
       spec.model = model;
-      spec.spinup = 20;  // about one large-eddy turnover (L11 / u' ~ 0.1 s at tU0/M = 42)
       spec.table = ctx.refdata_dir / "cbc_decaying_turbulence" / "PHiLiP_cbc_experiment_table3.txt";
       const auto r = run_cbc(spec, ctx.comm);
       if (rank == 0) {
@@ -98,6 +157,7 @@ void run(const Context& ctx, Report& report) {
           report.add(name, ratio, 1.0, 1.0);  // no model: reported, loosely bounded
       }
     }
+  if (!ctx.quick) spinup_study(ctx, report, rank);
 }
 
 }  // namespace

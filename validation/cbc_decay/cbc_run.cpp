@@ -15,6 +15,7 @@
 #include "flow/run_diagnostics.hpp"
 #include "io/box_generator.hpp"
 #include "les/cbc_data.hpp"
+#include "les/derivative_skewness.hpp"
 #include "les/energy_spectrum.hpp"
 #include "les/random_field.hpp"
 #include "les/spectrum_rescale.hpp"
@@ -103,7 +104,8 @@ CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
   // Initial field: the 42 spectrum on shells 1 .. n/2 - 1, the same on every rank.
   const std::size_t n3 = static_cast<std::size_t>(spec.n) * spec.n * spec.n;
   std::vector<double> u0(n3), v0(n3), w0(n3);
-  const auto e42 = table(42);
+  const int start_station = spec.start_station;
+  const auto e42 = table(start_station);
   les::random_solenoidal_field([&](double k) { return e42(k); }, spec.n, length, spec.seed, u0, v0,
                                w0);
   flow::FlowState state;
@@ -154,9 +156,16 @@ CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
   };
   // Spin-up: the random phases have no triple correlations (no energy transfer); run and rescale
   // back to the 42 spectrum after every step, then restart the clock at tU0/M = 42.
-  if (spec.spinup > 0) {
-    advance_to(spec.spinup * time_scale, [&] {
+  auto skewness = [&](const std::vector<double>& field) {
+    return les::derivative_skewness({field.data(), n3}, {field.data() + n3, n3},
+                                    {field.data() + 2 * n3, n3}, spec.n, length);
+  };
+  r.spinup_u0_over_m = spec.spinup_turnovers * les::large_scales(e42).turnover_time / time_scale;
+  if (r.spinup_u0_over_m > 0) {
+    advance_to(r.spinup_u0_over_m * time_scale, [&] {
       auto field = gather(local, idx, spec.n, state.velocity);
+      r.spinup_time_u0_over_m.push_back(state.time / time_scale);
+      r.spinup_skewness.push_back(skewness(field));
       les::rescale_to_spectrum([&](double k) { return e42(k); }, spec.n, length, {field.data(), n3},
                                {field.data() + n3, n3}, {field.data() + 2 * n3, n3});
       for (int a = 0; a < local.num_local(); ++a)
@@ -166,18 +175,22 @@ CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
     state.time = 0;
   }
 
-  r.initial = measure(local, idx, spec.n, length, state.velocity, e42, 42);
+  r.initial = measure(local, idx, spec.n, length, state.velocity, e42, start_station);
   auto energy = [&] {
     return flow::kinetic_energy(local, 1.0, state.velocity) / (length * length * length);
   };
-  r.time_u0_over_m.push_back(42);
+  r.time_u0_over_m.push_back(start_station);
   r.energy.push_back(energy());
+  r.skewness.push_back(skewness(gather(local, idx, spec.n, state.velocity)));
   for (int station : spec.stations) {
-    if (station <= 42) throw std::invalid_argument("run_cbc: stations must be after tU0/M = 42");
-    advance_to((station - 42) * time_scale, [&] {
+    if (station <= start_station)
+      throw std::invalid_argument(fmt::format(
+          "run_cbc: station {} is not after the start at tU0/M = {}", station, start_station));
+    advance_to((station - start_station) * time_scale, [&] {
       ++r.steps;
-      r.time_u0_over_m.push_back(42 + state.time / time_scale);
+      r.time_u0_over_m.push_back(start_station + state.time / time_scale);
       r.energy.push_back(energy());
+      r.skewness.push_back(skewness(gather(local, idx, spec.n, state.velocity)));
       if (!std::isfinite(r.energy.back()))
         throw std::runtime_error(fmt::format("run_cbc: {} {}^3 blew up at tU0/M = {:.2f}",
                                              spec.model, spec.n, r.time_u0_over_m.back()));

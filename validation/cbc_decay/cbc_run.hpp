@@ -35,8 +35,11 @@ struct CbcSpec {
   std::string update = "step";      // les.update: nu_sgs per "step" or per RK "stage"
   std::string scheme = "central2";  // flow::make_convection_scheme
   double stability = 0.7;           // dt = stability / (RK4 Gershgorin rate), see run_diagnostics
-  std::vector<int> stations = {98, 171};  // tU0/M after the initial 42
-  double spinup = 0;  // tU0/M units of rescaled spin-up before 42 (les/spectrum_rescale.hpp)
+  int start_station = 42;           // tU0/M of the initial spectrum (42, or 98 for studies)
+  std::vector<int> stations = {98, 171};  // tU0/M after start_station
+  // Rescaled spin-up before the start (les/spectrum_rescale.hpp), in large-eddy turnovers
+  // L11 / u' of the initial spectrum (les::large_scales; 20.6 tU0/M at 42). See cbc_decay.cpp.
+  double spinup_turnovers = 0.25;
   std::uint64_t seed = 1971;
   std::filesystem::path table;  // PHiLiP_cbc_experiment_table3.txt
 };
@@ -52,7 +55,10 @@ struct CbcResult {
   CbcStation initial;                          // tU0/M = 42 (after construction, before any step)
   std::vector<CbcStation> stations;            // spec.stations
   std::vector<double> time_u0_over_m, energy;  // every step: 1/2 <u.u> [m^2/s^2]
+  std::vector<double> skewness;                // every step: les::derivative_skewness
+  std::vector<double> spinup_time_u0_over_m, spinup_skewness;  // before the rescaling
   int steps = 0, spinup_steps = 0;
+  double spinup_u0_over_m = 0;  // the spin-up length in tU0/M
   double wall_seconds = 0;
   double step_seconds = 0, sgs_seconds = 0;  // thread CPU time: steps, inside the subgrid hook
   std::int64_t nodes = 0;
