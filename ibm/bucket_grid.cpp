@@ -45,6 +45,12 @@ std::array<int, 3> BucketGrid::cell_of(const Eigen::Vector3d& x) const {
 void BucketGrid::in_box(const Eigen::Vector3d& centre, double radius, std::vector<int>& out) const {
   out.clear();
   if (points_.empty()) return;
+  // A box beyond the grid would be clamped onto its boundary buckets and scan them for nothing
+  // (periodic images of a support mostly lie outside).
+  const Eigen::Vector3d upper = lower_ + cell_ * Eigen::Vector3d(dims_[0], dims_[1], dims_[2]);
+  if (((centre.array() + radius) < lower_.array()).any() ||
+      ((centre.array() - radius) > upper.array()).any())
+    return;
   const auto lo = cell_of(centre - Eigen::Vector3d::Constant(radius));
   const auto hi = cell_of(centre + Eigen::Vector3d::Constant(radius));
   for (int k = lo[2]; k <= hi[2]; ++k)

@@ -74,16 +74,20 @@ void DiracTransfer::locate(std::span<const Eigen::Vector3d> markers) {
   weights_.clear();
 
   // Nearest owned node of every marker on this rank, then the rank with the nearest overall.
+  // The search takes ghosts too, so that it stops as soon as any node is near (a marker of
+  // another rank's region no longer scans every ring up to the reach): owned nodes are numbered
+  // first and ties go to the lower index, so a ghost comes out only when every owned node is
+  // strictly farther, and then the ghost's owner is strictly nearer and this rank cannot win.
   const double reach = options_.kernel.width * h_max_;
   mine_.resize(markers.size());
   best_.resize(markers.size());
   nearest_.resize(markers.size());
   const int num_owned = mesh.num_owned;
   for (std::size_t i = 0; i < markers.size(); ++i) {
-    const auto found = grid_.nearest(markers[i], reach, [&](int n) { return n < num_owned; });
-    nearest_[i] = found.index;
-    mine_[i] = {found.index >= 0 ? found.distance : std::numeric_limits<double>::max(),
-                mesh.comm.rank()};
+    const auto found = grid_.nearest(markers[i], reach, [](int) { return true; });
+    const bool owned = found.index >= 0 && found.index < num_owned;
+    nearest_[i] = owned ? found.index : -1;
+    mine_[i] = {owned ? found.distance : std::numeric_limits<double>::max(), mesh.comm.rank()};
   }
   if (!markers.empty())
     VALSALVA_MPI(MPI_Allreduce(mine_.data(), best_.data(), static_cast<int>(markers.size()),

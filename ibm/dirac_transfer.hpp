@@ -49,7 +49,7 @@ class DiracTransfer {
     int marker = 0;          // index in the replicated marker array
     double h = 0.0;          // local mesh size used
     double width = 0.0;      // support width used, in units of h (grown if M was ill-conditioned)
-    double rcond = 0.0;      // reciprocal condition number of the scaled moment matrix
+    double rcond = 0.0;      // 1-norm reciprocal condition number of the scaled moment matrix
     int begin = 0, end = 0;  // range in weights()
   };
 

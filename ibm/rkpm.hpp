@@ -16,8 +16,10 @@
 namespace valsalva::ibm {
 
 struct RkpmResult {
-  double rcond = 0;  // reciprocal condition number of the scaled M (smallest/largest eigenvalue)
-  bool ok = false;   // rcond >= the threshold passed in
+  // Reciprocal condition number of the scaled M in the 1-norm, 1 / (|M|_1 |M^-1|_1): between 1/4
+  // and 1 times the smallest/largest eigenvalue ratio; 0 when M is not positive definite.
+  double rcond = 0;
+  bool ok = false;  // rcond >= the threshold passed in
 };
 
 // `offset[j]` = x_j - X, `psi[j]` the base kernel at offset[j], `volume[j]` = V_j. Writes the
