@@ -1,17 +1,45 @@
-// Lid-driven cavity (flow-solver issue, verification 4): unit square, lid y = 1 moving at U = 1
-// in +x (wall velocity), the other three sides no-slip, a periodic slab of 3 hexahedral cells
-// in z. Run from rest to steady state (max_j |u_j^{n+1} - u_j^n| / dt below a tolerance), then
-// the centreline profiles u(y) at x = 1/2 and v(x) at y = 1/2 are compared with the table of
-// U. Ghia, K.N. Ghia, C.T. Shin, J. Comput. Phys. 48 (1982) 387-411 (129^2 multigrid, stream
-// function-vorticity; validation/refdata/ghia1982_cavity, see its SOURCE.txt for the known
-// typos, none of which is in the Re 100 columns used here). The computed profile is the nodal
-// line (N even: x = 1/2 and y = 1/2 are node lines), interpolated linearly at Ghia's points.
-// Corner nodes belong to the side walls (a stationary wall wins over the moving lid), as in
-// Ghia's discretisation where the lid velocity starts inside the corners.
+// Lid-driven cavity (flow-solver issue, verification 4), Re = 100 and Re = 1000: unit square, lid
+// y = 1 moving at U = 1 in +x (wall velocity), the other three sides no-slip, a periodic slab of 3
+// hexahedral cells in z, uniform mesh (io/box_generator has no wall stretching). Each level runs
+// to steady state, the coarsest from rest and every finer one from the previous level's steady
+// field interpolated bilinearly (only the time to get there depends on the start: Re 100 at 96^2
+// takes t = 3.3, 24^2 from rest t = 13.5). Time step: 0.8 of the RK4 stability limit of
+// flow::stability_rates, refreshed every 20 steps (viscous-limited at Re 100, dt ~ h^2 / nu;
+// convection and viscosity both count at Re 1000). Steady: max_j |u_j^{n+1} - u_j^n| / dt below
+// 1e-4 U^2/L (quick 1e-3); the measured decay rate of that rate near the end (Re 100: ~1 /s;
+// Re 1000: 0.07, 0.13, 0.26 /s at 32^2, 64^2, 128^2) puts the remaining distance to the steady
+// state at 1e-4 U (Re 100) and 1.4e-3, 8e-4, 4e-4 U (Re 1000).
+// The centreline profiles u(y) at x = 1/2 and v(x) at y = 1/2 (N even: nodal lines) are
+// interpolated linearly at the points of U. Ghia, K.N. Ghia, C.T. Shin, J. Comput. Phys. 48
+// (1982) 387-411 (129^2 multigrid, stream function-vorticity; validation/refdata/
+// ghia1982_cavity; of the typos its SOURCE.txt names, v(Re 1000, x = 0.5) is checked to be the
+// consensus 0.02526, Re 3200 is not used). Corner nodes belong to the side walls (a stationary
+// wall wins over the moving lid), as in Ghia's discretisation where the lid velocity starts
+// inside the corners. Metric: max over both lines of |u - u_Ghia| / U on the finest level, the
+// issue's target 1 %; plus the h -> 0 Richardson estimate of the two finest levels (order 2).
+//
+// Measured (`valsalva validate cavity`, 1 rank, machine shared with two other jobs; wall s):
+//   Re 100   N = 24: 2.63 %   48: 1.13 %   96: 0.98 % (pass)   h -> 0: 0.93 %   1.6 / 11.5 / 82 s
+//   Re 1000  N = 32: 41.6 %   64: 8.13 %  128: 3.00 % (FAIL)   h -> 0: 1.64 %   5 / 21 / 215 s
+//            (VALSALVA_CAVITY_RE1000=256: N = 256: RE1000_256_DEV, RE1000_256_WALL s)
+// total ~6 min. Self-convergence orders (max |profile_2N - profile_N| at Ghia's points): Re 100
+// 3.35, Re 1000 2.78. Both maxima sit in v(x) near the right wall (Re 100 at x = 0.8594, Re 1000
+// at x = 0.9453-0.9531: the wall layer there is a few cells thick at 64^2, where v overshoots).
+// Why Re 1000 stays above 1 %: the deviation does not tend to zero but to Ghia's own error.
+// O. Botella, R. Peyret, Comput. Fluids 27 (1998) 421-433 (Chebyshev, N = 160) give at Ghia's
+// points v(0.9453) = -0.41038 (Ghia -0.39188), v(0.9531) = -0.35532 (-0.33714), v(0.9063) =
+// -0.52644 (-0.51550), u(0.1719) = -0.38857 (-0.38289): Ghia is off by up to 1.85 % of U. Our
+// 64^2/128^2 Richardson profile agrees with those values to 0.57 % of U (0.21 % more than 0.05 L
+// from the walls) and deviates from Ghia by 1.64 %; our own error at x = 0.9453 (5.2 % at 64^2,
+// 1.2 % at 128^2) falls as h^2. No converging solver meets 1 % against this table at Re 1000; the
+// check is kept at the issue's 1 % and fails. (Re 100: Ghia's table is off by ~0.9 % of U, v
+// extrema 0.17527/-0.24533 against 0.1796/-0.2538 of spectral solutions, so the 1 % passes with
+// little margin.)
 #include <fmt/format.h>
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -169,7 +197,8 @@ LevelResult run_level(const Context& ctx, int n, double re, double tolerance, do
       throw std::runtime_error(
           fmt::format("cavity Re {:g} N = {}: non-finite velocity at step {}", re, n, r.steps));
     if (history.is_open() && r.steps % 50 == 0)
-      history << fmt::format("{},{:.6g},{:.6g},{:.6e}\n", r.steps, state.time, dt, r.change);
+      history << fmt::format("{},{:.6g},{:.6g},{:.6e}\n", r.steps, state.time, dt, r.change)
+              << std::flush;  // a long level can be followed while it runs
     if (r.change < tolerance * lid * lid || state.time >= t_max) break;
   }
   r.time = state.time;
@@ -218,6 +247,7 @@ LevelResult run_level(const Context& ctx, int n, double re, double tolerance, do
         "cavity Re {:g} N = {}: {} steps to t = {:.2f} (max |du/dt| {:.2e}), wall {:.1f} s, max "
         "deviation from Ghia: u {:.4f} U, v {:.4f} U\n",
         re, n, r.steps, r.time, r.change, r.wall, r.dev_u, r.dev_v);
+    std::fflush(stdout);
   }
   return r;
 }
@@ -345,8 +375,8 @@ void run_cases(const Context& ctx, Report& report) {
   re1000.tolerance = ctx.quick ? 1e-3 : 1e-4;
   re1000.t_max = 400;
   // The issue's 1 % on the finest level (not reached, see the header: Ghia's own error at
-  // x = 0.9453 is 1.85 % of U). Quick (64^2): measured 8.0 %, 2.4 % of it Ghia's error and the
-  // rest our h^2 error (4 x the 1.4 % at 128^2); 10 % catches a 25 % degradation.
+  // x = 0.9453 is 1.85 % of U). Quick (64^2): measured 8.0 % at x = 0.9531, = Ghia's 1.8 % there +
+  // our 6.2 % (the 128^2 error there x 5, still pre-asymptotic); 10 % catches a 25 % degradation.
   re1000.bound = ctx.quick ? 0.10 : 0.01;
   // Measured 2.78 (32/64/128).
   re1000.min_order = 1.8;
