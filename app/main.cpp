@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <CLI/CLI.hpp>
+#include <cstdio>
 #include <exception>
 
 #include "app/command_compare_piv.hpp"
@@ -10,6 +11,9 @@
 #include "app/commands.hpp"
 
 int main(int argc, char** argv) {
+  // Line-buffered stdout, so that a run or validation case redirected to a file (or piped to
+  // tee) can be followed while it runs (the status line flushes itself after each '\r').
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   MPI_Init(&argc, &argv);
   int rank = 0, size = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
