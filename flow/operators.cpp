@@ -120,14 +120,15 @@ void convection(const LocalMesh& mesh, const VectorField& u, const VectorField& 
 }
 
 void viscous(const LocalMesh& mesh, const std::vector<double>& weights, double nu,
-             const VectorField& v, const TensorField& grad, VectorField& out) {
+             const VectorField& v, const TensorField& grad, VectorField& out, bool correction) {
   check_size(mesh, v.size(), "v");
   check_size(mesh, grad.size(), "grad");
   out.assign(mesh.num_local(), Eigen::Vector3d::Zero());
   for (int e = 0; e < mesh.num_owned_edges; ++e) {
     const auto [j, k] = mesh.edges[e];
-    const Eigen::Vector3d t = mesh.edge_normal[e] - weights[e] * mesh.edge_vector[e];
-    const Eigen::Vector3d f = weights[e] * (v[k] - v[j]) + 0.5 * (grad[j] + grad[k]) * t;
+    Eigen::Vector3d f = weights[e] * (v[k] - v[j]);
+    if (correction)
+      f += 0.5 * (grad[j] + grad[k]) * (mesh.edge_normal[e] - weights[e] * mesh.edge_vector[e]);
     out[j] += f;
     out[k] -= f;
   }

@@ -49,7 +49,11 @@ void convection(const LocalMesh& mesh, const VectorField& u, const VectorField& 
 
 // Viscous term nu lap(v) for constant nu, per unit volume, componentwise Laplacian with the
 // same correction; `grad` is the velocity gradient tensor.
+// correction = false: no non-orthogonal correction (the P1 stiffness weights of
+// flow::poisson_weights on tetrahedra, whose two-point flux is already the median-dual flux of
+// the piecewise-linear field); the boundary-face flux grad v . A is kept either way.
 void viscous(const LocalMesh& mesh, const std::vector<double>& weights, double nu,
-             const VectorField& v, const TensorField& grad, VectorField& out);
+             const VectorField& v, const TensorField& grad, VectorField& out,
+             bool correction = true);
 
 }  // namespace valsalva::flow

@@ -38,7 +38,7 @@ void ProjectionRK4::momentum_rhs(const VectorField& u, VectorField& rhs, int sta
     viscous_stress(mesh_, weights_, nu_eff_, u, grad_u_, rhs);
   } else if (options_.viscosity > 0) {
     gradient(mesh_, u, grad_u_);
-    viscous(mesh_, weights_, options_.viscosity, u, grad_u_, rhs);
+    viscous(mesh_, viscous_weights(), options_.viscosity, u, grad_u_, rhs, viscous_correction());
   } else {
     rhs.assign(mesh_.num_local(), Eigen::Vector3d::Zero());
   }

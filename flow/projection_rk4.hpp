@@ -35,6 +35,11 @@ struct ProjectionOptions {
   double density = 1.0;             // kg/m^3
   double viscosity = 0.0;           // kinematic, m^2/s
   std::string scheme = "central2";  // convective scheme (flow::make_convection_scheme)
+  // Laminar viscous term with the Poisson matrix's edge weights and no non-orthogonal
+  // correction (flow::viscous with correction = false): on all-tetrahedral meshes with the P1
+  // weights of flow::poisson_weights this is the median-dual flux of the piecewise-linear
+  // velocity. false: two-point weights + correction with nodal gradients (flow::viscous).
+  bool stiffness_viscous = false;
   PoissonOptions poisson;
   // LES: fills nu_sgs [m^2/s] at owned and ghost nodes from the velocity gradient of RK stage
   // `stage` = 0..3 (owned + ghosts valid; nu_sgs is sized by the solver and holds the values of
@@ -72,6 +77,12 @@ class ProjectionRK4 {
   void momentum_rhs(const VectorField& u, VectorField& rhs, int stage = 0);
 
   const std::vector<double>& laplacian_weights() const { return weights_; }
+  // The edge weights of the laminar viscous term and whether it has the non-orthogonal
+  // correction (see ProjectionOptions::stiffness_viscous): what flow::wall_force needs.
+  const std::vector<double>& viscous_weights() const {
+    return options_.stiffness_viscous ? poisson_weights_ : weights_;
+  }
+  bool viscous_correction() const { return !options_.stiffness_viscous; }
 
   // The last pressure increment dp (the warm start of the next Poisson solve): saved in
   // checkpoints so that a restarted run repeats the uninterrupted one bit for bit.

@@ -9,7 +9,7 @@ namespace valsalva::validation {
 CylinderChannelFlow make_cylinder_channel_flow(const flow::Mesh& mesh,
                                                const flow::DualMetrics& metrics,
                                                const flow::LocalMesh& local, double rho, double nu,
-                                               flow::Waveform inflow) {
+                                               flow::Waveform inflow, bool stiffness_viscous) {
   auto inlet = flow::boundary_spec("inlet", flow::BoundaryType::inlet);
   inlet.profile = flow::InletProfile::plane_poiseuille;
   inlet.across = Eigen::Vector3d(0, 1, 0);
@@ -26,6 +26,7 @@ CylinderChannelFlow make_cylinder_channel_flow(const flow::Mesh& mesh,
   options.density = rho;
   options.viscosity = nu;
   options.poisson.tolerance = 1e-10;
+  options.stiffness_viscous = stiffness_viscous;
   options.boundary = out.bc;
   options.poisson.dirichlet = out.bc->pressure_dirichlet();
   out.solver = std::make_unique<flow::ProjectionRK4>(local, options,
@@ -49,7 +50,8 @@ Eigen::Vector3d cylinder_force(const flow::LocalMesh& local, const flow::Project
   in.velocity = &state.velocity;
   in.pressure = &state.pressure;
   in.velocity_gradient = &grad;
-  in.laplacian_weights = &solver.laplacian_weights();
+  in.laplacian_weights = &solver.viscous_weights();
+  in.stiffness_weights = !solver.viscous_correction();
   in.body_force = body_force;
   return flow::wall_force(local, "cylinder", in);
 }
