@@ -2,7 +2,7 @@
 
 Usage: /usr/bin/python3 plot.py OUT_DIR   (reads spectra.csv, energy.csv, decay.csv)
 Writes spectra.png (E(k) at tU0/M = 42, 98, 171 per mesh, every model, the measured spectrum
-filtered to the mesh's shells) and energy.png (resolved energy vs tU0/M).
+filtered to the mesh's shells) and energy.png (resolved energy vs tU0/M; dots: the shell-filtered energy the check compares).
 """
 import csv
 import sys
@@ -65,11 +65,15 @@ for ax, n in zip(axes[0], meshes):
         t = [float(r["t_u0_over_m"]) for r in decay if int(r["n"]) == n and r["model"] == model]
         e = [float(r["energy"]) * 1e4 for r in decay if int(r["n"]) == n and r["model"] == model]
         ax.plot(t, e, color=colours.get(model, "k"), label=f"{model} (all modes)")
+        # What the check compares: the shells 1 .. n/2 - 1 at the stations.
+        st = [(int(r["station"]), float(r["resolved"]) * 1e4) for r in energy
+              if int(r["n"]) == n and r["model"] == model]
+        ax.plot([p[0] for p in st], [p[1] for p in st], "o", color=colours.get(model, "k"), ms=4)
     pts = [(int(r["station"]), float(r["resolved_exp"]) * 1e4) for r in energy
            if int(r["n"]) == n and r["model"] == models[0]]
     ax.plot([p[0] for p in pts], [p[1] for p in pts], "ks", mfc="none",
             label="experiment, filtered")
-    ax.set_title(f"resolved energy, {n}^3")
+    ax.set_title(f"resolved energy, {n}^3 (dots: shells 1 .. n/2 - 1, as compared)")
     ax.set_xlabel("tU0/M")
     ax.set_ylabel("1/2 <u.u> [cm^2/s^2]")
     ax.grid(True, alpha=0.3)
