@@ -101,13 +101,14 @@ CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
   const auto data = les::read_cbc_table3(spec.table.string());
   auto table = [&](int station) { return data.at(station).table(les::Extrapolation::power_law); };
 
-  // Initial field: the 42 spectrum on shells 1 .. n/2 - 1, the same on every rank.
+  // Initial field: the start station's spectrum (42 unless a study asks otherwise) on shells
+  // 1 .. n/2 - 1, the same on every rank.
   const std::size_t n3 = static_cast<std::size_t>(spec.n) * spec.n * spec.n;
   std::vector<double> u0(n3), v0(n3), w0(n3);
   const int start_station = spec.start_station;
-  const auto e42 = table(start_station);
-  les::random_solenoidal_field([&](double k) { return e42(k); }, spec.n, length, spec.seed, u0, v0,
-                               w0);
+  const auto start_spectrum = table(start_station);
+  les::random_solenoidal_field([&](double k) { return start_spectrum(k); }, spec.n, length,
+                               spec.seed, u0, v0, w0);
   flow::FlowState state;
   for (int a = 0; a < local.num_local(); ++a) {
     state.velocity.emplace_back(u0[idx[a]], v0[idx[a]], w0[idx[a]]);
@@ -155,19 +156,21 @@ CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
     }
   };
   // Spin-up: the random phases have no triple correlations (no energy transfer); run and rescale
-  // back to the 42 spectrum after every step, then restart the clock at tU0/M = 42.
+  // back to the start spectrum after every step, then restart the clock at the start station.
   auto skewness = [&](const std::vector<double>& field) {
     return les::derivative_skewness({field.data(), n3}, {field.data() + n3, n3},
                                     {field.data() + 2 * n3, n3}, spec.n, length);
   };
-  r.spinup_u0_over_m = spec.spinup_turnovers * les::large_scales(e42).turnover_time / time_scale;
+  r.spinup_u0_over_m =
+      spec.spinup_turnovers * les::large_scales(start_spectrum).turnover_time / time_scale;
   if (r.spinup_u0_over_m > 0) {
     advance_to(r.spinup_u0_over_m * time_scale, [&] {
       auto field = gather(local, idx, spec.n, state.velocity);
       r.spinup_time_u0_over_m.push_back(state.time / time_scale);
       r.spinup_skewness.push_back(skewness(field));
-      les::rescale_to_spectrum([&](double k) { return e42(k); }, spec.n, length, {field.data(), n3},
-                               {field.data() + n3, n3}, {field.data() + 2 * n3, n3});
+      les::rescale_to_spectrum([&](double k) { return start_spectrum(k); }, spec.n, length,
+                               {field.data(), n3}, {field.data() + n3, n3},
+                               {field.data() + 2 * n3, n3});
       for (int a = 0; a < local.num_local(); ++a)
         state.velocity[a] = {field[idx[a]], field[n3 + idx[a]], field[2 * n3 + idx[a]]};
       ++r.spinup_steps;
@@ -175,7 +178,7 @@ CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
     state.time = 0;
   }
 
-  r.initial = measure(local, idx, spec.n, length, state.velocity, e42, start_station);
+  r.initial = measure(local, idx, spec.n, length, state.velocity, start_spectrum, start_station);
   auto energy = [&] {
     return flow::kinetic_energy(local, 1.0, state.velocity) / (length * length * length);
   };
