@@ -9,6 +9,7 @@
 
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "validation/bench/bench_util.hpp"
 #include "validation/cbc_decay/cbc_run.hpp"
@@ -34,7 +35,8 @@ int main(int argc, char** argv) {
     spec.seed = std::stoull(get("seed", "1971"));
     spec.box_in_m = std::stod(get("box", "11"));
     spec.start_station = std::stoi(get("start", "42"));
-    if (spec.start_station == 98) spec.stations = {171};
+    std::erase_if(spec.stations, [&](int s) { return s <= spec.start_station; });
+    spec.record_skewness = true;
     const bool spectra = get("spectra", "0") != "0";
     spec.table = std::string(VALSALVA_SOURCE_DIR) +
                  "/validation/refdata/cbc_decaying_turbulence/PHiLiP_cbc_experiment_table3.txt";

@@ -166,8 +166,10 @@ CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
   if (r.spinup_u0_over_m > 0) {
     advance_to(r.spinup_u0_over_m * time_scale, [&] {
       auto field = gather(local, idx, spec.n, state.velocity);
-      r.spinup_time_u0_over_m.push_back(state.time / time_scale);
-      r.spinup_skewness.push_back(skewness(field));
+      if (spec.record_skewness) {
+        r.spinup_time_u0_over_m.push_back(state.time / time_scale);
+        r.spinup_skewness.push_back(skewness(field));
+      }
       les::rescale_to_spectrum([&](double k) { return start_spectrum(k); }, spec.n, length,
                                {field.data(), n3}, {field.data() + n3, n3},
                                {field.data() + 2 * n3, n3});
@@ -184,7 +186,8 @@ CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
   };
   r.time_u0_over_m.push_back(start_station);
   r.energy.push_back(energy());
-  r.skewness.push_back(skewness(gather(local, idx, spec.n, state.velocity)));
+  if (spec.record_skewness)
+    r.skewness.push_back(skewness(gather(local, idx, spec.n, state.velocity)));
   for (int station : spec.stations) {
     if (station <= start_station)
       throw std::invalid_argument(fmt::format(
@@ -193,7 +196,8 @@ CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
       ++r.steps;
       r.time_u0_over_m.push_back(start_station + state.time / time_scale);
       r.energy.push_back(energy());
-      r.skewness.push_back(skewness(gather(local, idx, spec.n, state.velocity)));
+      if (spec.record_skewness)
+        r.skewness.push_back(skewness(gather(local, idx, spec.n, state.velocity)));
       if (!std::isfinite(r.energy.back()))
         throw std::runtime_error(fmt::format("run_cbc: {} {}^3 blew up at tU0/M = {:.2f}",
                                              spec.model, spec.n, r.time_u0_over_m.back()));

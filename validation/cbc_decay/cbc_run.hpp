@@ -41,7 +41,8 @@ struct CbcSpec {
   // L11 / u' of the initial spectrum (les::large_scales; 20.6 tU0/M at 42). See cbc_decay.cpp.
   double spinup_turnovers = 0.25;
   std::uint64_t seed = 1971;
-  std::filesystem::path table;  // PHiLiP_cbc_experiment_table3.txt
+  bool record_skewness = false;  // derivative skewness every step (one gather + 6 FFTs each)
+  std::filesystem::path table;   // PHiLiP_cbc_experiment_table3.txt
 };
 
 struct CbcStation {
@@ -55,7 +56,7 @@ struct CbcResult {
   CbcStation initial;                          // tU0/M = 42 (after construction, before any step)
   std::vector<CbcStation> stations;            // spec.stations
   std::vector<double> time_u0_over_m, energy;  // every step: 1/2 <u.u> [m^2/s^2]
-  std::vector<double> skewness;                // every step: les::derivative_skewness
+  std::vector<double> skewness;  // every step with spec.record_skewness: les::derivative_skewness
   std::vector<double> spinup_time_u0_over_m, spinup_skewness;  // before the rescaling
   int steps = 0, spinup_steps = 0;
   double spinup_u0_over_m = 0;  // the spin-up length in tU0/M
