@@ -58,7 +58,8 @@ int mesh_info(const std::filesystem::path& mesh_file, double scale) {
   return 0;
 }
 
-int validate(const std::string& case_name, bool list, bool quick, const std::string& out) {
+int validate(const std::string& case_name, bool list, bool quick, const std::string& out,
+             const std::vector<std::string>& settings, bool show_options) {
   const int rank = world_rank();
   if (list || case_name.empty()) {
     if (rank == 0)
@@ -70,7 +71,16 @@ int validate(const std::string& case_name, bool list, bool quick, const std::str
   if (!c)
     throw std::runtime_error(fmt::format(
         "validate: unknown case '{}' (valsalva validate --list shows the cases)", case_name));
+  if (show_options) {
+    if (rank == 0) {
+      if (c->options.empty()) fmt::print("{} has no options\n", c->name);
+      for (const auto& o : c->options)
+        fmt::print("--set {}=VALUE  {}: {}\n", o.key, o.accepted(), o.help);
+    }
+    return 0;
+  }
   validation::Context ctx;
+  ctx.options = validation::parse_case_options(*c, settings);
   ctx.quick = quick;
   ctx.out_dir = out.empty() ? std::filesystem::path("validation-results") / case_name
                             : std::filesystem::path(out);

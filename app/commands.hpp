@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace valsalva::app {
 
@@ -12,7 +13,10 @@ int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std
               const std::string& restart = {}, bool quiet = false);
 int check_scene(const std::filesystem::path& scene_file);
 int mesh_info(const std::filesystem::path& mesh_file, double scale);
-int validate(const std::string& case_name, bool list, bool quick, const std::string& out);
+// `settings`: the case options as "key=value" (--set); `show_options` prints the case's
+// options instead of running it.
+int validate(const std::string& case_name, bool list, bool quick, const std::string& out,
+             const std::vector<std::string>& settings = {}, bool show_options = false);
 int docs_scenes();
 
 }  // namespace valsalva::app

@@ -46,6 +46,12 @@ int main(int argc, char** argv) {
   val->add_flag("--list", list, "List the cases");
   val->add_flag("--quick", quick, "Short version of the case");
   val->add_option("--out", out, "Output folder (default: validation-results/<case>)");
+  std::vector<std::string> case_settings;
+  bool case_options = false;
+  val->add_option("--set", case_settings,
+                  "Case option KEY=VALUE (repeatable; --options lists the case's options)")
+      ->allow_extra_args(false);
+  val->add_flag("--options", case_options, "List the case's options and exit");
 
   auto* docs = cli.add_subcommand("docs-scenes", "Print the scene-key reference (docs/scenes.md)");
 
@@ -66,7 +72,8 @@ int main(int argc, char** argv) {
     if (*run) code = valsalva::app::run_scene(scene, overwrite, out, restart, quiet);
     if (*check) code = valsalva::app::check_scene(scene);
     if (*info) code = valsalva::app::mesh_info(mesh_file, scale);
-    if (*val) code = valsalva::app::validate(case_name, list, quick, out);
+    if (*val)
+      code = valsalva::app::validate(case_name, list, quick, out, case_settings, case_options);
     if (*docs) code = valsalva::app::docs_scenes();
     if (*piv) code = compare_piv();
     if (*psd_cmd) code = psd();

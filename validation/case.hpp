@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,14 @@ struct Context {
   std::filesystem::path
       case_dir;  // validation/<case>/ in the source tree (reference data, plot.py)
   std::filesystem::path refdata_dir;  // validation/refdata (copies of ../shared/refdata)
+  // Case options from `valsalva validate CASE --set key=value` (keys checked against
+  // Case::options before the case runs); the accessors check the values.
+  std::map<std::string, std::string> options;
+
+  // The value of `key` (already checked against its CaseOption), or `fallback` when not set.
+  std::string option(const std::string& key, const std::string& fallback = "") const;
+  double option_real(const std::string& key, double fallback) const;
+  int option_int(const std::string& key, int fallback) const;
 };
 
 class Report {
@@ -53,11 +62,36 @@ class Report {
   std::vector<Metric> metrics_;
 };
 
+// An option a case accepts (`--set key=value`): for runs beyond the default one (a single
+// level, a longer run, a timing run), so that the default stays within the CPU budget. The
+// value is checked when the command line is read, before the case runs.
+struct CaseOption {
+  enum class Kind { real, integer, choice };
+  std::string key;
+  std::string help;  // what it does and the default
+  Kind kind = Kind::choice;
+  double lo = 0, hi = 0;             // real, integer: the accepted range
+  std::vector<std::string> choices;  // choice: the accepted words
+
+  static CaseOption real(std::string key, std::string help, double lo, double hi);
+  static CaseOption integer(std::string key, std::string help, int lo, int hi);
+  static CaseOption choice(std::string key, std::string help, std::vector<std::string> words);
+  // What the value must be ("a number in [0, 100]", "one of fsi1, fsi3").
+  std::string accepted() const;
+};
+
 struct Case {
   std::string name;
   std::string description;
   std::function<void(const Context&, Report&)> run;
+  std::vector<CaseOption> options = {};
 };
+
+// The options map of `case_def` from "key=value" strings; std::invalid_argument for a string
+// without '=', an empty or repeated key, a key the case does not accept (naming the case and
+// listing its keys) or a value outside what the option accepts.
+std::map<std::string, std::string> parse_case_options(const Case& case_def,
+                                                      const std::vector<std::string>& settings);
 
 const std::vector<Case>& all_cases();
 const Case* find_case(const std::string& name);

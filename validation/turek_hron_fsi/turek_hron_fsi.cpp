@@ -15,7 +15,7 @@
 // frequency, drag and lift mean and amplitude against TH2006 within 10 % (fsi3_series.csv,
 // fsi3_summary.csv). Both use the per-step coupling (why: fsi1_level and fsi3_spec below).
 // Quick: FSI1 on the coarse mesh to t = 1.4 s.
-// Measured (1 rank; FSI1 levels run one at a time with VALSALVA_TUREK_HRON_FSI_LEVEL, the finest
+// Measured (1 rank; FSI1 levels run one at a time with --set fsi1_level=i, the finest
 // to t = 2.0 s only; TH2006: ux_A 2.27e-5 m, uy_A 8.209e-4 m, drag 14.295, lift 0.7638 N/m):
 //   size   nodes  markers  ux_A      uy_A      drag   lift   drag spread (last window)
 //   0.02    3785   555    -3.23e-5  -3.56e-3  21.54  1.652  14 %
@@ -34,21 +34,20 @@
 // Cost (idle machine, per step coupling, FSI3): size 0.02 47 s per simulated second at 1 rank,
 // 33 s at 2; size 0.01 362 s at 1 rank, 243 s at 2 (per stage: 580 s at 1 rank). The marker
 // location (RKPM kernel and moment matrix per marker, each step) is ~95 % of the IB share.
-// Options (environment, so that the default run stays within the CPU budget):
-//   VALSALVA_TUREK_HRON_FSI3=full     FSI3 on the finest mesh to t = 10 s (about 70 CPU minutes)
-//   VALSALVA_TUREK_HRON_FSI3_LEVEL=i  FSI3 on level i (default 0, the coarse mesh)
-//   VALSALVA_TUREK_HRON_FSI3_T=T      FSI3 end time (default 6 s)
-//   VALSALVA_TUREK_HRON_FSI=fsi1|fsi3 only one of the two cases
-//   VALSALVA_TUREK_HRON_FSI_LEVEL=i   FSI1 on level i only (0, 1, 2), also the timing level
-//   VALSALVA_TUREK_HRON_FSI1_T=T      FSI1 end time (default 2.5 s; quick 1.4 s)
-//   VALSALVA_TUREK_HRON_FSI1_RAMP=T   FSI1 from rest with the inflow ramp over T s
-//   VALSALVA_TUREK_HRON_FSI=timing    only FSI3 cost: 300 steps at the coarse mesh with the
-//                                     per-part profile (timing.csv), no FSI1.
+// Options (`valsalva validate turek_hron_fsi --set key=value`; `--options` lists them), so that
+// the default run stays within the CPU budget:
+//   part=fsi1|fsi3|timing   only one of the two cases, or the cost run: 300 FSI3 steps at the
+//                           coarse mesh with the per-part profile (timing.csv), no FSI1
+//   fsi1_level=i            FSI1 on level i only (0, 1, 2), also the timing run's level
+//   fsi1_t_end=T            FSI1 end time (default 2.5 s; quick 1.4 s)
+//   fsi1_ramp=T             FSI1 from rest with the inflow ramp over T s
+//   fsi3_level=i            FSI3 on level i (default 0, the coarse mesh)
+//   fsi3_t_end=T            FSI3 end time (default 6 s; level 2 to 10 s is about 70 CPU minutes)
+//   timing_coupling=per_step|per_stage, timing_case=FSI3|FSI1   the timing run's set-up
 #include <fmt/format.h>
 #include <fmt/os.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -61,54 +60,8 @@ namespace valsalva::validation {
 
 namespace {
 
-std::string env(const char* name) {
-  const char* v = std::getenv(name);
-  return v ? v : "";
-}
-
-// The options above, checked: a value that is not a number in range (or not one of the accepted
-// words) stops the case naming the variable, its value and what is accepted.
-[[noreturn]] void bad_option(const char* name, const std::string& value,
-                             const std::string& accepted) {
-  throw std::invalid_argument(
-      fmt::format("turek_hron_fsi: {}={} is not accepted (expected {})", name, value, accepted));
-}
-
-double env_real(const char* name, double fallback, double lo, double hi) {
-  const std::string v = env(name);
-  if (v.empty()) return fallback;
-  std::size_t used = 0;
-  double x = 0;
-  try {
-    x = std::stod(v, &used);
-  } catch (const std::exception&) {
-    bad_option(name, v, fmt::format("a number in [{}, {}]", lo, hi));
-  }
-  if (used != v.size() || !(x >= lo && x <= hi))
-    bad_option(name, v, fmt::format("a number in [{}, {}]", lo, hi));
-  return x;
-}
-
 const std::vector<FsiLevel> kLevels = {{0.02, 0.06, 5}, {0.014, 0.05, 5}, {0.01, 0.04, 5}};
-
-// A mesh level 0, 1 or 2 from `name`, or -1 when it is not set.
-int env_level(const char* name) {
-  const std::string v = env(name);
-  if (v.empty()) return -1;
-  if (v != "0" && v != "1" && v != "2") bad_option(name, v, "0, 1 or 2");
-  return std::stoi(v);
-}
-
-void check_choice(const char* name, const std::vector<std::string>& accepted) {
-  const std::string v = env(name);
-  if (v.empty()) return;
-  std::string list;
-  for (const auto& a : accepted) {
-    if (v == a) return;
-    list += (list.empty() ? "" : ", ") + a;
-  }
-  bad_option(name, v, list);
-}
+const int kLastLevel = static_cast<int>(kLevels.size()) - 1;
 
 void write_series(const Context& ctx, const std::string& file, const FsiResult& r) {
   auto out = fmt::output_file((ctx.out_dir / file).string());
@@ -165,9 +118,9 @@ FsiResult fsi1_level(const Context& ctx, const FsiLevel& level, double t_end) {
   s.p = read_turek_hron_parameters(ctx.refdata_dir / "turek_hron_fsi", "FSI1");
   s.level = level;
   s.t_end = t_end;
-  // From the developed profile by default; VALSALVA_TUREK_HRON_FSI1_RAMP=T: from rest with the
-  // benchmark's inflow ramp over T s (the start-up's effect on the steady bar).
-  s.ramp = env_real("VALSALVA_TUREK_HRON_FSI1_RAMP", 0.0, 0.0, 100.0);
+  // From the developed profile by default; fsi1_ramp=T: from rest with the benchmark's inflow
+  // ramp over T s (the start-up's effect on the steady bar).
+  s.ramp = ctx.option_real("fsi1_ramp", 0.0);
   s.steady_window = 0.5;  // progress report only (tolerance 0: never stops early)
   s.steady_tolerance = 0;
   s.sample_interval = 0.005;
@@ -205,14 +158,14 @@ void run_fsi1(const Context& ctx, Report& report, int rank) {
         "err_ux,err_uy,err_drag,err_lift,drag_spread_last_window,max_marker_w,balance_error,"
         "wall_s\n");
   }
-  // VALSALVA_TUREK_HRON_FSI_LEVEL=i: level i only (0-based; one row of the table per run).
-  const int only = env_level("VALSALVA_TUREK_HRON_FSI_LEVEL");
+  // fsi1_level=i: level i only (0-based; one row of the table per run).
+  const int only = ctx.option_int("fsi1_level", -1);
   const int first = only < 0 ? 0 : only;
   const int n = ctx.quick ? 1 : (only < 0 ? static_cast<int>(kLevels.size()) : first + 1);
   FsiResult r;
   Steady s;
   for (int l = first; l < n; ++l) {
-    const double t_end = env_real("VALSALVA_TUREK_HRON_FSI1_T", ctx.quick ? 1.4 : 2.5, 0.01, 1000);
+    const double t_end = ctx.option_real("fsi1_t_end", ctx.quick ? 1.4 : 2.5);
     r = fsi1_level(ctx, kLevels[l], t_end);
     s = steady_values(r, ctx.quick ? 0.3 : 0.75);
     if (rank == 0) {
@@ -273,12 +226,8 @@ double time_mean(const std::vector<double>& t, const std::vector<double>& y, dou
 
 void run_fsi3(const Context& ctx, Report& report, int rank) {
   const auto dir = ctx.refdata_dir / "turek_hron_fsi";
-  check_choice("VALSALVA_TUREK_HRON_FSI3", {"full"});
-  const bool full = env("VALSALVA_TUREK_HRON_FSI3") == "full";
-  const int level_env = env_level("VALSALVA_TUREK_HRON_FSI3_LEVEL");
-  const int level = level_env >= 0 ? level_env : (full ? 2 : 0);
-  const auto spec = fsi3_spec(
-      ctx, kLevels[level], env_real("VALSALVA_TUREK_HRON_FSI3_T", full ? 10.0 : 6.0, 0.01, 1000));
+  const int level = ctx.option_int("fsi3_level", 0);
+  const auto spec = fsi3_spec(ctx, kLevels[level], ctx.option_real("fsi3_t_end", 6.0));
   const auto r = run_fsi(ctx, spec);
   std::vector<double> t, uy, drag, lift;
   for (const auto& s : r.samples) {
@@ -333,11 +282,9 @@ void run_timing(const Context& ctx, Report& report, int rank) {
   spec.max_steps = 300;
   spec.ramp = 0;  // full speed from the start: the cost of the periodic state
   spec.profile = true;
-  spec.per_step = env("VALSALVA_TUREK_HRON_FSI_MODE") != "per_stage";
-  if (const int level = env_level("VALSALVA_TUREK_HRON_FSI_LEVEL"); level >= 0)
-    spec.level = kLevels[level];
-  check_choice("VALSALVA_TUREK_HRON_FSI_CASE", {"FSI1", "FSI3"});
-  if (env("VALSALVA_TUREK_HRON_FSI_CASE") == "FSI1")
+  spec.per_step = ctx.option("timing_coupling", "per_step") == "per_step";
+  spec.level = kLevels[ctx.option_int("fsi1_level", 0)];
+  if (ctx.option("timing_case") == "FSI1")
     spec.p = read_turek_hron_parameters(ctx.refdata_dir / "turek_hron_fsi", "FSI1");
   const auto r = run_fsi(ctx, spec);
   // The cost is the result; the one check is the spreading's force balance.
@@ -359,10 +306,8 @@ void run_timing(const Context& ctx, Report& report, int rank) {
 void run(const Context& ctx, Report& report) {
   int rank = 0;
   MPI_Comm_rank(ctx.comm, &rank);
-  check_choice("VALSALVA_TUREK_HRON_FSI", {"fsi1", "fsi3", "timing"});
-  check_choice("VALSALVA_TUREK_HRON_FSI_MODE", {"per_step", "per_stage"});
-  if (env("VALSALVA_TUREK_HRON_FSI") == "timing") return run_timing(ctx, report, rank);
-  const std::string only = env("VALSALVA_TUREK_HRON_FSI");
+  const std::string only = ctx.option("part");
+  if (only == "timing") return run_timing(ctx, report, rank);
   if (only != "fsi3") run_fsi1(ctx, report, rank);
   if (!ctx.quick && only != "fsi1") run_fsi3(ctx, report, rank);
 }
@@ -370,10 +315,30 @@ void run(const Context& ctx, Report& report) {
 }  // namespace
 
 Case turek_hron_fsi_case() {
-  return {"turek_hron_fsi",
-          "Turek-Hron FSI1 (steady) and FSI3 (periodic): immersed elastic bar behind a "
-          "body-fitted cylinder, tip displacement, drag, lift vs TH2006",
-          run};
+  return {
+      "turek_hron_fsi",
+      "Turek-Hron FSI1 (steady) and FSI3 (periodic): immersed elastic bar behind a "
+      "body-fitted cylinder, tip displacement, drag, lift vs TH2006",
+      run,
+      {CaseOption::choice("part",
+                          "one case only, or 300 FSI3 steps with the cost profile (default: "
+                          "both cases)",
+                          {"fsi1", "fsi3", "timing"}),
+       CaseOption::integer("fsi1_level",
+                           "FSI1 on that mesh only (default: all three); also the timing "
+                           "run's mesh (default 0)",
+                           0, kLastLevel),
+       CaseOption::real("fsi1_t_end", "FSI1 end time in s (default 2.5; quick 1.4)", 0.01, 1000),
+       CaseOption::real("fsi1_ramp",
+                        "FSI1 from rest with the inflow ramped over that many s (default 0: "
+                        "from the developed profile)",
+                        0, 100),
+       CaseOption::integer("fsi3_level", "FSI3 mesh (default 0)", 0, kLastLevel),
+       CaseOption::real("fsi3_t_end", "FSI3 end time in s (default 6)", 0.01, 1000),
+       CaseOption::choice("timing_coupling", "the timing run's coupling (default per_step)",
+                          {"per_step", "per_stage"}),
+       CaseOption::choice("timing_case", "the timing run's parameters (default FSI3)",
+                          {"FSI1", "FSI3"})}};
 }
 
 }  // namespace valsalva::validation
