@@ -57,6 +57,16 @@ DiracTransfer::DiracTransfer(flow::LocalMesh& mesh, const TransferOptions& optio
       if (!known) periods_.push_back(period);
     }
   }
+  boundary_normal_.assign(mesh.position.size(), Eigen::Vector3d::Zero());
+  boundary_patch_.assign(mesh.position.size(), -1);
+  std::vector<double> largest(mesh.position.size(), 0.0);
+  for (const auto& b : mesh.boundary) {
+    boundary_normal_[b.node] += b.area;
+    if (b.area.norm() > largest[b.node])
+      largest[b.node] = b.area.norm(), boundary_patch_[b.node] = b.patch;
+  }
+  for (auto& n : boundary_normal_)
+    if (n.norm() > 0) n.normalize();
   images_.assign(1, Eigen::Vector3d::Zero());
   for (const auto& p : periods_) {
     const std::size_t n = images_.size();
@@ -141,6 +151,8 @@ std::string DiracTransfer::build_support(int marker, const Eigen::Vector3d& x, i
         volume_.push_back(mesh.volume[n]);
       }
     }
+    if (attempt == 0)
+      if (auto outside = check_inside(marker, x, h); !outside.empty()) return outside;
     phi_.resize(candidates_.size());
     result = rkpm_correct(offset_, psi_, volume_, radius, options_.min_rcond, phi_);
     if (result.ok) break;
@@ -157,6 +169,27 @@ std::string DiracTransfer::build_support(int marker, const Eigen::Vector3d& x, i
   s.end = static_cast<int>(weights_.size());
   supports_.push_back(s);
   return {};
+}
+
+std::string DiracTransfer::check_inside(int marker, const Eigen::Vector3d& x, double h) const {
+  // The nearest boundary node of the support (candidates_ / offset_ of the first attempt).
+  int nearest = -1;
+  double best = std::numeric_limits<double>::max();
+  for (std::size_t k = 0; k < candidates_.size(); ++k) {
+    if (boundary_patch_[candidates_[k]] < 0 || offset_[k].squaredNorm() >= best) continue;
+    best = offset_[k].squaredNorm();
+    nearest = static_cast<int>(k);
+  }
+  if (nearest < 0) return {};
+  const int node = candidates_[nearest];
+  const double beyond = -offset_[nearest].dot(boundary_normal_[node]);
+  if (beyond <= options_.max_outside * h) return {};
+  const auto& at = mesh_->position[node];
+  return fmt::format(
+      "{} lies {:.6g} m ({:.3g} h) beyond the fluid boundary '{}' (outward normal of its node at "
+      "({:.6g}, {:.6g}, {:.6g}) m); up to {:.3g} h is accepted: move the structure into the fluid",
+      where(marker, x), beyond, beyond / h, mesh_->patch_names[boundary_patch_[node]], at.x(),
+      at.y(), at.z(), options_.max_outside);
 }
 
 void DiracTransfer::check_sizes(const char* what, std::size_t marker_values,

@@ -36,6 +36,12 @@ struct TransferOptions {
   double min_rcond = 1e-6;     // smallest accepted reciprocal condition number of scaled M
   int max_growth = 2;          // an ill-conditioned M widens the support at most this often
   double growth_factor = 1.5;  // by this factor each time
+  // A marker farther than this (in units of the local h) beyond the fluid boundary is refused:
+  // the distance along the outward normal of the nearest boundary node in its support. Some
+  // slack is needed because a curved wall's chord polygon lies inside the true wall (a marker
+  // on the true wall, 2 h from a node of a wall of radius 8 h, is 0.25 h beyond the chord
+  // plane there), and a clamped leaflet edge is often placed on the wall itself.
+  double max_outside = 0.5;
 };
 
 class DiracTransfer {
@@ -59,7 +65,8 @@ class DiracTransfer {
   // Collective. Assigns every marker to its evaluating rank and builds the corrected kernel
   // there. Throws the same error on every rank, naming the marker index and position, when a
   // marker is outside the fluid mesh, when its support reaches the outermost ghost layer or is
-  // wider than a period, or when its moment matrix stays ill-conditioned after growing.
+  // wider than a period, when it lies more than max_outside h beyond the fluid boundary, or
+  // when its moment matrix stays ill-conditioned after growing.
   void locate(std::span<const Eigen::Vector3d> markers);
 
   // Collective. `marker_force` (components per marker, replicated) -> `density` (components per
@@ -90,6 +97,12 @@ class DiracTransfer {
   int outer_layer_ = 0;                   // outermost ghost layer of the distribution (0: none)
   std::vector<Eigen::Vector3d> periods_;  // independent periodic shifts seen on local edges
   std::vector<Eigen::Vector3d> images_;   // all sums of -1/0/+1 times each period (0 first)
+  // Boundary nodes: outward unit normal (sum of the node's boundary areas) and the patch of its
+  // largest boundary face; zero normal and -1 for interior nodes.
+  std::vector<Eigen::Vector3d> boundary_normal_;
+  std::vector<int> boundary_patch_;
+  // The error for a marker beyond the fluid boundary (see max_outside), or "".
+  std::string check_inside(int marker, const Eigen::Vector3d& x, double h) const;
   int num_markers_ = 0;
   std::vector<MarkerSupport> supports_;
   std::vector<Weight> weights_;

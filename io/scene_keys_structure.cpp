@@ -30,6 +30,14 @@ void declare_structure_keys(Schema& s) {
       .above(0)
       .unit_of("h")
       .doc("Support width of the kernel in units of the local fluid mesh size");
+  s.real("immersed.max_outside")
+      .def(0.5)
+      .at_least(0)
+      .unit_of("h")
+      .doc(
+          "A marker farther than this beyond the fluid boundary (along the outward normal of "
+          "the nearest boundary node in its support) stops the run naming the marker and the "
+          "patch; the slack covers a curved wall's chord polygon and edges clamped on the wall");
   s.choice("immersed.coupling", {"per_stage", "per_step"})
       .def("per_stage")
       .unit_of("-")
@@ -217,6 +225,7 @@ ImmersedSetup read_immersed_setup(const Scene& scene, const flow::Mesh& mesh) {
   auto& o = out.options;
   o.transfer.kernel.type = ibm::parse_kernel_type(scene.get<std::string>("immersed.kernel"));
   o.transfer.kernel.width = scene.get<double>("immersed.kernel_width");
+  o.transfer.max_outside = scene.get<double>("immersed.max_outside");
   o.mode = scene.get<std::string>("immersed.coupling") == "per_step" ? ibm::CouplingMode::per_step
                                                                      : ibm::CouplingMode::per_stage;
   o.fluid_density = scene.get<double>("flow.density");

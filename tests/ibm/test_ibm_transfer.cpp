@@ -250,14 +250,23 @@ TEST_CASE("errors name the marker: outside the mesh, too few ghost layers, ill-c
   CHECK_THROWS_WITH_AS(transfer.locate(x), doctest::Contains("marker 303 at (5, 0.1, 0.1)"),
                        std::runtime_error);
 
-  // 0.9 cells outside the xmin wall the 4h support holds only the coplanar wall nodes, so M is
-  // singular; one growth (x1.5) reaches the first interior layer.
+  // 0.9 cells beyond the xmin wall: refused by default (max_outside 0.5 h), naming the patch.
   const std::vector<Vec> outside{Vec(-0.9 * cell, 0.41, 0.27)};
-  transfer.locate(outside);
+  CHECK_THROWS_WITH_AS(transfer.locate(outside),
+                       doctest::Contains("marker 0 at (-0.09, 0.41, 0.27) m lies 0.09 m (1.12 h) "
+                                         "beyond the fluid boundary 'xmin'"),
+                       std::runtime_error);
+  // 0.3 cells beyond (0.37 h): accepted, like a clamped edge drawn on a curved wall.
+  transfer.locate(std::vector<Vec>{Vec(-0.3 * cell, 0.41, 0.27)});
+  CHECK(local.comm.sum(static_cast<std::int64_t>(transfer.supports().size())) == 1);
+  // Accepted that far out, the 4h support holds only the coplanar wall nodes, so M is singular;
+  // one growth (x1.5) reaches the first interior layer.
+  ibm::DiracTransfer lenient(local, {{}, 1e-6, 2, 1.5, 2.0});
+  lenient.locate(outside);
   int grown = 0;
-  for (const auto& s : transfer.supports()) grown += s.width == doctest::Approx(6.0);
+  for (const auto& s : lenient.supports()) grown += s.width == doctest::Approx(6.0);
   CHECK(local.comm.sum(static_cast<std::int64_t>(grown)) == 1);
-  ibm::DiracTransfer rigid(local, {{}, 1e-6, 0});
+  ibm::DiracTransfer rigid(local, {{}, 1e-6, 0, 1.5, 2.0});
   CHECK_THROWS_WITH_AS(rigid.locate(outside),
                        doctest::Contains("marker 0 at (-0.09, 0.41, 0.27) m: the kernel's moment "
                                          "matrix is ill-conditioned"),
