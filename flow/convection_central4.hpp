@@ -20,6 +20,13 @@
 // values misses. On uniform hexahedra this is the classical 4th-order centred difference
 // (7/12, -1/12 weights). On irregular meshes the order drops (measured, tests/flow).
 //
+// Not energy-conserving: the Hermite term and the product term are not skew-symmetric, and the
+// 4th-order mass flux u~.S is not the projection's divergence. Tried and not kept: subtracting
+// u_j/2 times the divergence of that mass flux (the usual skew correction of collocated
+// schemes; the truncation order stays 3.99) stops the no-model TGV Re 1600 from blowing up at
+// 48^3 (max -dE/dt error 0.27 of the peak), but with sigma at 64^3 it moves the peak from
+// -1.1 % to -6.1 % (bench_tgv_re1600, validation/tgv_les), so the LES case would fail.
+//
 // Form::deconvolution (the architecture text taken literally; kept to measure it):
 //   phi_j  = ubar_j - G_j m1_j / V_j - 1/2 H_j : M2_j / V_j
 //            (m1 = int (x - x_j) dV: O(h) on non-centred duals, 0 on symmetric ones;
