@@ -360,7 +360,8 @@ void BoundaryConditions::impose(VectorField& u, double t) {
         double shape = 0;
         const double q = imposed_inflow(p, t);
         const double w = profile(P, p, mesh_.position[j], q, t, shape);
-        const double delta = (-q - sums_[2 * p]) / sums_[2 * p + 1];
+        const double delta =
+            specs_[P.spec].unscaled_profile ? 0.0 : (-q - sums_[2 * p]) / sums_[2 * p + 1];
         u[j] = (w + delta * shape) * P.inward;
         break;
       }

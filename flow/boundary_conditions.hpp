@@ -58,6 +58,9 @@ struct BoundarySpec {
   // plane_poiseuille: unit vector across the channel (between its two walls); the profile is
   // 6 (Q/A) s (1 - s), s in [0, 1] the patch position along it (a slab or 2D channel inlet).
   Eigen::Vector3d across = Eigen::Vector3d::Zero();
+  // inlet: impose the profile's nodal values as they are, without scaling the discrete flux to
+  // Q(t) (studies: the nodal interpolant of an exact solution as Dirichlet data).
+  bool unscaled_profile = false;
   double pressure = 0;          // pressure_outlet, Pa
   double convection_speed = 0;  // convective_outlet, m/s; 0 = inflow / outflow area
 };

@@ -124,7 +124,7 @@ StepReport ProjectionRK4::step(FlowState& state, double dt) {
   // Projection: lap(dp) = rho div(v*) / dt, warm-started from the previous increment.
   divergence(mesh_, stage_, div_);
   for (auto& d : div_) d *= rho / dt;
-  if (bc) {
+  if (bc && options_.pressure_damping) {
     // Pressure damping (Rhie & Chow, AIAA J. 21, 1983, in its node-centred form): the divergence
     // of v* takes the face-velocity correction dt/rho (avg(grad p^n) - grad p^n|_face), i.e.
     // f += div(grad p^n) - lap(p^n) with the wide divergence of the wide gradient and the

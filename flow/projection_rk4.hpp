@@ -40,6 +40,8 @@ struct ProjectionOptions {
   // weights of flow::poisson_weights this is the median-dual flux of the piecewise-linear
   // velocity. false: two-point weights + correction with nodal gradients (flow::viscous).
   bool stiffness_viscous = false;
+  // The pressure damping term of step() (with boundary conditions); false only for studies.
+  bool pressure_damping = true;
   PoissonOptions poisson;
   // LES: fills nu_sgs [m^2/s] at owned and ghost nodes from the velocity gradient of RK stage
   // `stage` = 0..3 (owned + ghosts valid; nu_sgs is sized by the solver and holds the values of

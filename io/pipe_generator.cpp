@@ -11,11 +11,20 @@
 namespace valsalva::io {
 
 flow::Mesh generate_pipe_mesh(double radius, double length, double target_size) {
+  return generate_pipe_mesh(radius, length, target_size, PipeMeshOptions{});
+}
+
+flow::Mesh generate_pipe_mesh(double radius, double length, double target_size,
+                              const PipeMeshOptions& options) {
   for (const auto& [name, value] :
        {std::pair{"radius", radius}, {"length", length}, {"target_size", target_size}})
     if (!(value > 0.0) || !std::isfinite(value))
       throw std::invalid_argument(
           fmt::format("generate_pipe_mesh: {} must be positive and finite, got {}", name, value));
+  if (options.wall_size > 0 && !(options.wall_distance > 0 && std::isfinite(options.wall_distance)))
+    throw std::invalid_argument(fmt::format(
+        "generate_pipe_mesh: wall_distance must be positive and finite with a wall_size, got {}",
+        options.wall_distance));
   const std::string source =
       fmt::format("pipe(radius={:g}, length={:g}, size={:g})", radius, length, target_size);
   GmshSession session;
@@ -46,6 +55,19 @@ flow::Mesh generate_pipe_mesh(double radius, double length, double target_size) 
     gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {volume}), "fluid");
     gmsh::option::setNumber("Mesh.MeshSizeMax", target_size);
     gmsh::option::setNumber("Mesh.MeshSizeMin", 0.0);
+    gmsh::option::setNumber("Mesh.Algorithm3D", options.algorithm3d);
+    if (options.wall_size > 0) {
+      // The wall distance of the cylinder is R - sqrt(x^2 + y^2): an exact MathEval field.
+      const int field = gmsh::model::mesh::field::add("MathEval");
+      gmsh::model::mesh::field::setString(
+          field, "F",
+          fmt::format("Min({1:.17g}, {0:.17g} + ({1:.17g} - {0:.17g}) * Max(0, {2:.17g} - "
+                      "Sqrt(x * x + y * y)) / {3:.17g})",
+                      options.wall_size, target_size, radius, options.wall_distance));
+      gmsh::model::mesh::field::setAsBackgroundMesh(field);
+      // The bulk keeps target_size: the small wall size must not spread inwards.
+      gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+    }
     generate_deterministic_mesh(3);
   });
   return mesh_from_gmsh_model(source);

@@ -11,4 +11,17 @@ namespace valsalva::io {
 // Throws std::invalid_argument for non-positive or non-finite arguments.
 flow::Mesh generate_pipe_mesh(double radius, double length, double target_size);
 
+// Study knobs of the Gmsh 3D mesher (the defaults are generate_pipe_mesh's). Measured on the
+// Womersley pipe (bench_womersley_study --mesh_stats 1): Delaunay tetrahedra come out coarser
+// than target_size, median edge 1.23 (D/10) to 1.29 (D/20) target_size; HXT 1.35 at D/20;
+// Frontal and the Netgen optimiser need Netgen, which this Gmsh lacks.
+struct PipeMeshOptions {
+  int algorithm3d = 1;  // Mesh.Algorithm3D: 1 Delaunay, 4 Frontal, 10 HXT
+  // wall_size > 0: a wall-graded size, wall_size at the wall growing linearly to target_size at
+  // the distance wall_distance (> 0) from it, m.
+  double wall_size = 0, wall_distance = 0;
+};
+flow::Mesh generate_pipe_mesh(double radius, double length, double target_size,
+                              const PipeMeshOptions& options);
+
 }  // namespace valsalva::io

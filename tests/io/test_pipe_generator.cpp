@@ -73,3 +73,28 @@ TEST_CASE("pipe mesh is deterministic and rejects bad arguments") {
   CHECK_THROWS_AS(io::generate_pipe_mesh(1.0, -1.0, 0.1), std::invalid_argument);
   CHECK_THROWS_AS(io::generate_pipe_mesh(1.0, 1.0, NAN), std::invalid_argument);
 }
+
+TEST_CASE("pipe mesh: wall-graded size refines only near the wall") {
+  const double r = 0.5, length = 1.0, h = 0.1;
+  io::PipeMeshOptions graded;
+  graded.wall_size = 0.5 * h, graded.wall_distance = h;
+  const flow::Mesh uniform = io::generate_pipe_mesh(r, length, h);
+  const flow::Mesh mesh = io::generate_pipe_mesh(r, length, h, graded);
+  CHECK_NOTHROW(flow::check_mesh(mesh));
+  // Half the size on the wall surface: about 4x its nodes; the core r < r - 2h keeps size h.
+  const auto count = [&](const flow::Mesh& m, bool wall) {
+    int n = 0;
+    for (const auto& x : m.nodes) {
+      const double s = std::hypot(x.x(), x.y());
+      n += wall ? (std::abs(s - r) < 1e-9 && x.z() > h && x.z() < length - h)
+                : (s < r - 2 * h && x.z() > h && x.z() < length - h);
+    }
+    return n;
+  };
+  MESSAGE("wall nodes ", count(uniform, true), " -> ", count(mesh, true), ", core nodes ",
+          count(uniform, false), " -> ", count(mesh, false));
+  CHECK(count(mesh, true) > 3 * count(uniform, true));
+  CHECK(count(mesh, false) < 1.3 * count(uniform, false));
+  graded.wall_distance = 0;
+  CHECK_THROWS_AS(io::generate_pipe_mesh(r, length, h, graded), std::invalid_argument);
+}

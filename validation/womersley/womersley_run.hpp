@@ -20,6 +20,7 @@
 #include "flow/boundary_conditions.hpp"
 #include "flow/local_mesh.hpp"
 #include "flow/womersley.hpp"
+#include "io/pipe_generator.hpp"
 
 namespace valsalva::validation {
 
@@ -34,6 +35,13 @@ struct WomersleySetup {
   int sample_period = 3;  // 3 = the 4th period
   double poisson_tolerance = 1e-10;
   int max_steps = 0;  // > 0: stop after that many steps (no sampling; rank tests)
+  // Study knobs (bench_womersley_study): the solver options and the sampled region.
+  bool stiffness_viscous = false;  // flow::ProjectionOptions::stiffness_viscous
+  bool pressure_damping = true;    // flow::ProjectionOptions::pressure_damping
+  bool sample_whole_pipe = false;  // sample every node, not only the mid-length slab
+  bool unscaled_inlet = false;     // flow::BoundarySpec::unscaled_profile
+  double mesh_size_factor = 1;     // Gmsh's size = factor * D / nodes_per_diameter
+  io::PipeMeshOptions mesh;        // wall sizes are given in units of that Gmsh size
 };
 
 struct PhaseSample {
@@ -41,7 +49,10 @@ struct PhaseSample {
   double max_error = 0;   // max |u_z - u_exact| / u_peak over the slab
   double l2_error = 0;    // volume-weighted RMS of u_z - u_exact over the slab / u_peak
   double transverse = 0;  // max |u_x, u_y| / u_peak over the slab
-  std::vector<double> x, y, r, u, exact;  // slab nodes (owned, gathered on rank 0)
+  // Mean flux over the middle third, sum V_j u_z / (L / 3), of the run and of the exact nodal
+  // values, and the imposed Q(t), m^3/s.
+  double mean_flux = 0, exact_mean_flux = 0, flow_rate = 0;
+  std::vector<double> x, y, z, r, u, exact, ux, uy;  // slab nodes (owned, gathered on rank 0)
 };
 
 struct WomersleyResult {

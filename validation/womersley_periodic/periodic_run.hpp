@@ -30,6 +30,10 @@ struct PeriodicSetup {
   double cfl = 0.4;
   int phases = 8;
   int periods = 4;
+  // Studies: after every step, add the uniform axial velocity to the non-wall nodes that makes
+  // the mean flux sum V_j u_z / length equal Q(t) (a flow-rate driven pipe, as the inlet-driven
+  // one of validation/womersley, instead of the exact pressure gradient alone).
+  bool flux_driven = false;
 };
 
 struct PeriodicResult {
@@ -41,6 +45,9 @@ struct PeriodicResult {
   double transverse = 0;                       // max |u_x, u_y| / u_peak over all steps and nodes
   double max_nu_ratio = 0, mean_nu_ratio = 0;  // LES: over owned nodes and all RK stages
   double max_divergence = 0;
+  // Per sampled phase: the mean flux sum V_j u_z / length of the run and of the exact nodal
+  // values, and Q(t) of the exact solution, m^3/s (studies: the flux error of the P1 field).
+  std::vector<double> mean_flux, exact_mean_flux, flow_rate;
   // Last-period samples, gathered on rank 0: time, r, u_z, u_exact per owned node.
   std::vector<double> samples;
   // Final velocity (3 per node) by dual node (global order, on every rank).

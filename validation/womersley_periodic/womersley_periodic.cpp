@@ -15,6 +15,9 @@
 // weight, not consistent where S_jk is not parallel to the edge, but dp stays at round-off here).
 // Measured against the exact solution (flow/womersley.hpp): max and L2 error of u_z over all
 // nodes at 8 phases of the 4th period, on D/10, D/20, D/40, and the observed order.
+// Driven by the exact pressure gradient, the run carries no imposed flow rate: its flux misses
+// Q(t) by up to 1.1 % of pi R^2 u_peak at D/20 while the core stays exact; the inlet-driven pipe
+// must carry Q, see validation/womersley's header (PeriodicSetup::flux_driven, a study option).
 // Tables: levels.csv; samples.csv, plotted by plot.py into womersley_periodic.png.
 #include <fmt/format.h>
 
