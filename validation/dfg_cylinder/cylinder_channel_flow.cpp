@@ -2,7 +2,6 @@
 #include "validation/dfg_cylinder/cylinder_channel_flow.hpp"
 
 #include "flow/poisson_weights.hpp"
-#include "flow/wall_force.hpp"
 
 namespace valsalva::validation {
 
@@ -40,9 +39,11 @@ void impose_initial_boundary_values(flow::BoundaryConditions& bc, flow::FlowStat
   bc.impose(state.velocity, 0.0);
 }
 
-Eigen::Vector3d cylinder_force(const flow::LocalMesh& local, const flow::ProjectionRK4& solver,
-                               const flow::FlowState& state, double rho, double nu,
-                               flow::TensorField& grad, const flow::VectorField* body_force) {
+flow::WallForceInput cylinder_force_input(const flow::LocalMesh& local,
+                                          const flow::ProjectionRK4& solver,
+                                          const flow::FlowState& state, double rho, double nu,
+                                          flow::TensorField& grad,
+                                          const flow::VectorField* body_force) {
   flow::gradient(local, state.velocity, grad);
   flow::WallForceInput in;
   in.density = rho;
@@ -53,7 +54,14 @@ Eigen::Vector3d cylinder_force(const flow::LocalMesh& local, const flow::Project
   in.laplacian_weights = &solver.viscous_weights();
   in.stiffness_weights = !solver.viscous_correction();
   in.body_force = body_force;
-  return flow::wall_force(local, "cylinder", in);
+  return in;
+}
+
+Eigen::Vector3d cylinder_force(const flow::LocalMesh& local, const flow::ProjectionRK4& solver,
+                               const flow::FlowState& state, double rho, double nu,
+                               flow::TensorField& grad, const flow::VectorField* body_force) {
+  return flow::wall_force(local, "cylinder",
+                          cylinder_force_input(local, solver, state, rho, nu, grad, body_force));
 }
 
 }  // namespace valsalva::validation

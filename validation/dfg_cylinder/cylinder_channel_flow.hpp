@@ -11,6 +11,7 @@
 #include "flow/boundary_conditions.hpp"
 #include "flow/dual_metrics.hpp"
 #include "flow/projection_rk4.hpp"
+#include "flow/wall_force.hpp"
 
 namespace valsalva::validation {
 
@@ -27,6 +28,14 @@ CylinderChannelFlow make_cylinder_channel_flow(const flow::Mesh& mesh,
 
 // Boundary values into `state` (sized to the local mesh) at t = 0.
 void impose_initial_boundary_values(flow::BoundaryConditions& bc, flow::FlowState& state);
+
+// The flow::wall_force input of `state` for the residual force with the solver's viscous
+// weights; fills `grad` (the velocity gradient), whose lifetime the input borrows.
+flow::WallForceInput cylinder_force_input(const flow::LocalMesh& local,
+                                          const flow::ProjectionRK4& solver,
+                                          const flow::FlowState& state, double rho, double nu,
+                                          flow::TensorField& grad,
+                                          const flow::VectorField* body_force = nullptr);
 
 // Force (N) of the fluid on the "cylinder" patch: the consistent residual force of
 // flow/wall_force.hpp, with the body-force density in the wall-node balance when given.
