@@ -12,11 +12,11 @@
 // dfg_2d2.csv (2D-1 also with the pressure / viscous / convective parts of c_L and dp
 // extrapolated to the wall from probes off it), force histories in dfg_2d*_history.csv.
 //
-// Developer settings (environment; the finest-level checks then do not apply):
-// VALSALVA_DFG_PART=2d1|2d2 one benchmark, VALSALVA_DFG_LEVEL=0|1|2 one level,
-// VALSALVA_DFG_SIGMA the time-step fraction, VALSALVA_DFG_SIZE_NEAR / _SIZE_FAR / _DZ (m) one
-// level of these sizes and layer height, VALSALVA_DFG_CENTRE_Y (m; 0.205 is the symmetric
-// channel, where c_L = 0 exactly and the measured c_L is the mesh's own asymmetry error).
+// Options (`valsalva validate dfg_cylinder --set key=value`, `--options` lists them; the
+// finest-level checks then do not apply except for part): part=2d1|2d2 one benchmark,
+// level=0|1|2 one level, sigma the time-step fraction, size_near / size_far / dz (m) one level of
+// these sizes and layer height, centre_y (m; 0.205 is the symmetric channel, where c_L = 0
+// exactly and the measured c_L is the mesh's own asymmetry error).
 //
 // Discretisation choices, each measured (2D-1, c_D; details in the report of the change):
 // - Viscous term with the P1 stiffness weights (ProjectionOptions::stiffness_viscous). With the
@@ -163,32 +163,24 @@ struct LevelRun {
 // Sizes shrink by 2 and then by sqrt(2) (the finest that fits the run time), the far field
 // with them: refining only near the cylinder does not converge (size_near 0.01: size_far 0.04
 // -> 0.02 moves c_D by 1 %). Quick: the coarse level.
-// Developer settings (environment, see the header): the value of VALSALVA_DFG_<name>, or
-// `fallback` when unset.
-bool dev_set(const char* name) {
-  return std::getenv((std::string("VALSALVA_DFG_") + name).c_str());
-}
-double dev_real(const char* name, double fallback) {
-  const char* v = std::getenv((std::string("VALSALVA_DFG_") + name).c_str());
-  return v ? std::stod(v) : fallback;
-}
-
-// LEVEL=i one level only; SIZE_NEAR, SIZE_FAR, DZ (m) a level of their own (SIZE_FAR defaults
-// to 0.04, DZ to SIZE_FAR).
+// level=i one level only; size_near, size_far, dz (m) a level of their own (size_far defaults
+// to 0.04, dz to size_far).
 std::vector<Level> dfg_levels(const Context& ctx) {
   const std::vector<Level> levels{{0.01, 0.04}, {0.005, 0.02}, {0.0035, 0.014}};
-  if (dev_set("SIZE_NEAR")) {
-    const double far = dev_real("SIZE_FAR", 0.04);
-    return {{dev_real("SIZE_NEAR", 0.01), far, dev_real("DZ", far)}};
+  if (!ctx.option("size_near").empty()) {
+    const double far = ctx.option_real("size_far", 0.04);
+    return {{ctx.option_real("size_near", 0.01), far, ctx.option_real("dz", far)}};
   }
   if (ctx.quick) return {levels[0]};
-  if (!dev_set("LEVEL")) return levels;
-  return {levels.at(static_cast<std::size_t>(dev_real("LEVEL", 0)))};
+  if (ctx.option("level").empty()) return levels;
+  return {levels.at(static_cast<std::size_t>(ctx.option_int("level", 0)))};
 }
 
 // The finest-level checks apply only to the default full run (not to a developer setting).
 bool default_levels(const Context& ctx) {
-  return !ctx.quick && !dev_set("SIZE_NEAR") && !dev_set("LEVEL") && !dev_set("SIGMA");
+  for (const char* key : {"level", "sigma", "size_near", "size_far", "dz", "centre_y"})
+    if (!ctx.option(key).empty()) return false;
+  return !ctx.quick;
 }
 
 // 2D-1 steady state: stop once c_D and c_L change by less than this over one time unit.
@@ -301,7 +293,7 @@ LevelRun run_level(const Context& ctx, const Level& level, const Benchmark& b) {
   spec.size_near = level.size_near;
   spec.size_far = level.size_far;
   spec.thickness = spec.layers * (level.dz > 0 ? level.dz : level.size_far);
-  spec.centre_y = dev_real("CENTRE_Y", spec.centre_y);  // 0.205: symmetric, c_L = 0 exactly
+  spec.centre_y = ctx.option_real("centre_y", spec.centre_y);  // 0.205: symmetric, c_L = 0 exactly
   auto mesh = io::generate_cylinder_channel_mesh(spec);
   mesh.periodic.push_back({"front", "back", Eigen::Vector3d(0, 0, spec.thickness)});
   const auto metrics = flow::compute_dual_metrics(mesh);
@@ -348,7 +340,7 @@ LevelRun run_level(const Context& ctx, const Level& level, const Benchmark& b) {
 
   const auto weights = flow::laplacian_weights(local);
   std::vector<double> scratch;
-  const double sigma = dev_real("SIGMA", kSigma);
+  const double sigma = ctx.option_real("sigma", kSigma);
   LevelRun r;
   r.history.push_back(sample());
   double next_sample = b.sample_dt, next_check = b.t_min;
@@ -593,9 +585,9 @@ void run_2d2(const Context& ctx, Report& report, int rank) {
 void run_dfg(const Context& ctx, Report& report) {
   int rank = 0;
   MPI_Comm_rank(ctx.comm, &rank);
-  const char* part = std::getenv("VALSALVA_DFG_PART");  // 2d1 | 2d2: one benchmark only
-  if (!part || std::string(part) != "2d2") run_2d1(ctx, report, rank);
-  if (!part || std::string(part) != "2d1") run_2d2(ctx, report, rank);
+  const std::string part = ctx.option("part");  // 2d1 | 2d2: one benchmark only
+  if (part != "2d2") run_2d1(ctx, report, rank);
+  if (part != "2d1") run_2d2(ctx, report, rank);
 }
 
 }  // namespace
@@ -604,7 +596,20 @@ Case dfg_cylinder_case() {
   return {"dfg_cylinder",
           "DFG flow around a cylinder 2D-1 (Re 20, steady) and 2D-2 (Re 100, shedding): c_D, c_L, "
           "dp, St on three tetrahedral slab meshes",
-          run_dfg};
+          run_dfg,
+          {CaseOption::choice("part", "one benchmark only (default: both)", {"2d1", "2d2"}),
+           CaseOption::integer("level", "one mesh level only (default: all three)", 0, 2),
+           CaseOption::real("sigma", "time-step fraction of the stability limit (default 0.5)",
+                            0.01, 1),
+           CaseOption::real("size_near", "one level of this size near the cylinder, m", 1e-3, 0.05),
+           CaseOption::real("size_far", "with size_near: the far-field size, m (default 0.04)",
+                            1e-3, 0.1),
+           CaseOption::real("dz", "with size_near: the slab layer height, m (default size_far)",
+                            1e-3, 0.1),
+           CaseOption::real("centre_y",
+                            "cylinder centre height, m (default 0.2; 0.205 is the symmetric "
+                            "channel, where c_L = 0 exactly)",
+                            0.1, 0.31)}};
 }
 
 }  // namespace valsalva::validation
