@@ -411,7 +411,7 @@ void BoundaryConditions::stabilize_backflow(const VectorField& u, VectorField& r
     const auto& P = patches_[b.patch];
     if (P.spec < 0 || specs_[P.spec].type != BoundaryType::pressure_outlet) continue;
     const double flux = u[b.node].dot(b.area);
-    if (flux < 0) rhs[b.node] += 0.5 * flux / mesh_.volume[b.node] * u[b.node];
+    if (flux < 0) rhs[b.node] += flux / mesh_.volume[b.node] * u[b.node];
   }
 }
 
