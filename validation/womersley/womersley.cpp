@@ -39,7 +39,8 @@
 // core offset reaches its plateau within D/2 of the inlet). The pressure damping is needed:
 // without it 32 % max, transverse 14 % of u_peak. The pressure outlet blew up at t = 0.85 -
 // 0.89 s (flow reversal) on two D/10 meshes (0.78 h with L = 4 D, where the convective outlet
-// ran; graded 0.47 h at the wall).
+// ran; graded 0.47 h at the wall). With the whole backflow term since (flow/boundary_conditions
+// .hpp) the first runs its 4 periods (10.28 % max); the graded one was not re-run.
 // LES on the laminar flow: the sigma operator is zero for the pure shear du_z/dr, so nu_sgs
 // vanishes on the exact (parallel) initial field; over the run it only sees the discrete
 // transverse velocities, so here it is information (the 1e-8 check is made on the
