@@ -19,6 +19,7 @@
 #include <fstream>
 #include <numbers>
 #include <set>
+#include <stdexcept>
 #include <string>
 
 #include "io/periodic_pipe_generator.hpp"
@@ -124,6 +125,8 @@ int main(int argc, char** argv) {
     s.mesh.wall_size = std::stod(get("wall_size", "0"));
     s.mesh.wall_distance = std::stod(get("wall_distance", "0"));
     const std::string outlet = get("outlet", "pressure");
+    if (outlet != "pressure" && outlet != "convective")
+      throw std::invalid_argument("--outlet " + outlet + ": expected pressure or convective");
     s.outlet = outlet == "convective" ? valsalva::flow::BoundaryType::convective_outlet
                                       : valsalva::flow::BoundaryType::pressure_outlet;
     const std::string csv = get("csv", "");
