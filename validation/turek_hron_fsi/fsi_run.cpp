@@ -115,6 +115,7 @@ FsiResult run_fsi(const Context& ctx, const FsiSpec& spec) {
   const auto material = structure::make_st_venant_kirchhoff(p.E_s, p.nu_s);
   ibm::ImmersedOptions ib_options;
   ib_options.fluid_density = rho;
+  ib_options.transfer.kernel = spec.kernel;
   if (spec.per_step) ib_options.mode = ibm::CouplingMode::per_step;
   ib_options.box =
       ibm::PeriodicBox{Vec::Zero(), Vec(kLength, kHeight, depth), {false, false, true}};

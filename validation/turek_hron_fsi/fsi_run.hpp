@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "ibm/kernels.hpp"
 #include "validation/case.hpp"
 #include "validation/turek_hron_fsi/turek_hron_data.hpp"
 
@@ -45,6 +46,7 @@ struct FsiSpec {
   int max_steps = 0;        // > 0: stop after this many steps (timing runs)
   bool profile = false;     // time spreading, interpolation and solid forces separately
   bool per_step = false;    // classic explicit IB coupling instead of per RK stage
+  ibm::KernelShape kernel;  // base kernel and support width in h (the scene default: peskin4, 4)
 };
 
 struct FsiSample {
