@@ -28,6 +28,7 @@ struct TgvSpec {
   double dt_max = 0;  // > 0: dt is also at most this (a time error below the spatial one)
   std::string scheme = "central2";  // flow::make_convection_scheme
   bool stiffness_viscous = false;   // flow::ProjectionOptions::stiffness_viscous
+  bool fourth_order_operators = false;  // flow::ProjectionOptions::fourth_order_operators
   flow::PoissonOptions poisson;
 };
 
@@ -51,9 +52,10 @@ TgvResult run_taylor_green(const TgvSpec& spec, MPI_Comm comm);
 
 // Volume-weighted L2 norms over owned nodes of (discrete - exact) for each term of the
 // momentum equation evaluated on the exact TGV fields at t = 0: convection div(u u) with
-// spec.scheme, viscous nu lap u, pressure gradient grad p / rho.
+// spec.scheme, viscous nu lap u, pressure gradient grad p / rho, and the divergence of u (exact:
+// 0); with the operators of spec.fourth_order_operators.
 struct TgvTermErrors {
-  double convection = 0, viscous = 0, pressure_gradient = 0;
+  double convection = 0, viscous = 0, pressure_gradient = 0, divergence = 0;
 };
 TgvTermErrors taylor_green_term_errors(const TgvSpec& spec, MPI_Comm comm);
 
