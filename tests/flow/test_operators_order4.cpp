@@ -8,7 +8,8 @@
 //   tetrahedra perturbed by 20% of h: first order for grad and div, an O(1) viscous error as
 //     the 2nd-order operator's (the point truncation error of edge operators on irregular
 //     meshes converges slowly, Diskin & Thomas, NASA 2011); bounds from the measured values;
-// plus np = N against one rank (the edge corrections use the first ghost layer's gradients).
+// plus np = N against one rank (the edge corrections use the first ghost layer's gradients)
+// and the refusals (fewer than 2 ghost layers, an LES model).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -17,6 +18,7 @@
 #include "field_test_utils.hpp"
 #include "flow/operators_order4.hpp"
 #include "flow/poisson_weights.hpp"
+#include "flow/projection_rk4.hpp"
 
 using namespace valsalva;
 using flow::ScalarField;
@@ -201,4 +203,23 @@ TEST_CASE("4th-order operators: np = N reproduces one rank") {
         1e-9);
   CHECK(test::max_abs_difference(by_node(m.local, test::flatten(f.visc), 3),
                                  by_node(serial.local, test::flatten(s.visc), 3)) < 1e-9);
+}
+
+TEST_CASE("4th-order operators: refused with one ghost layer and with an LES model") {
+  const auto mesh = io::generate_box(test::periodic_box("hexa", 6));
+  const auto metrics = flow::compute_dual_metrics(mesh);
+  int size = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  if (size > 1) {
+    const auto thin = flow::distribute(mesh, metrics, MPI_COMM_WORLD, {1, "metis"});
+    CHECK_THROWS_WITH_AS(flow::Order4Operators(thin, flow::laplacian_weights(thin)),
+                         doctest::Contains("at least 2 ghost layers"), std::invalid_argument);
+  }
+  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  flow::ProjectionOptions options;
+  options.fourth_order_operators = true;
+  options.subgrid_viscosity = [](int, const TensorField&, ScalarField&) {};
+  CHECK_THROWS_WITH_AS(flow::ProjectionRK4(local, options),
+                       doctest::Contains("no full-stress (LES) viscous term"),
+                       std::invalid_argument);
 }
