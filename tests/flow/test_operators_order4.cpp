@@ -4,7 +4,7 @@
 //   uniform hexahedra and Kuhn-split tetrahedra: observed L2 and max orders >= 3.5 for all
 //     three (symmetric node stars), and below the 2nd-order operators' errors;
 //     Measured L2 orders: hexa 3.98 (grad), 3.98 (div), 3.97 (viscous); split tetra 3.85, 3.93,
-//     3.93 (2nd-order operators 1.95-1.99); n 32 errors 13x (hexa grad) to 44x (tetra div) lower;
+//     3.93 (2nd-order operators 1.95-1.99); n 32 errors 24x (tetra grad) to 130x (hexa grad) lower;
 //   tetrahedra perturbed by 20% of h: first order for grad and div, an O(1) viscous error as
 //     the 2nd-order operator's (the point truncation error of edge operators on irregular
 //     meshes converges slowly, Diskin & Thomas, NASA 2011); bounds from the measured values;
