@@ -19,9 +19,14 @@
 //   perturbed tetra n 16 3.17e-2 / 8.1e-2, n 32 5.53e-3 / 1.75e-2, n 64 1.23e-3 / 5.05e-3:
 //           orders 2.16 / 1.80 (32 -> 64); at n 32 the same as central2 (5.4e-3) and central4
 //           with the 2nd-order operators (6.0e-3): the edge corrections need symmetric stars.
-//   (n 64 with dt 0.0125 (16/n)^2 on all meshes; the tetra constant is now 0.05, which changes
-//   the n 32 tetra error by 1e-4 relative.) n 128 (the full case's 4th level) not yet measured:
-//   hexa needs 5120 steps there (~30 min on the shared machine).
+//   `valsalva validate taylor_green --quick` (16, 32, 64; 259 s on the shared machine) gives
+//   the same to 3 digits with the tetra dt constant 0.05: tetra 4.27e-6 at n 64, orders
+//   3.98 / 3.98, perturbed 2.18 / 1.74; hexa time check (n 32, dt/2) 0.934, tetra 0.9994.
+//   Truncation orders (n 32 -> 64): viscous 3.99 hexa, 3.98 tetra; pressure gradient 3.98
+//   both; convection 3.99 / 3.98. Perturbed tetra: pressure gradient 0.99, viscous O(1)
+//   (2.0e-3, the P1 weights' error).
+//   n 128 (the full case's 4th level) not yet measured: hexa needs 5120 steps there
+//   (~30 min on the shared machine).
 //   build/bin/bench_taylor_green_study --cell hexa|tetra [--perturbation 0.2] --n N --cfl 0.1
 //     --dt_max DT
 // CSV: errors.csv (error vs h and vs wall time), terms.csv; plot.py makes taylor_green.png.
