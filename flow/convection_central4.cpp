@@ -35,21 +35,8 @@ ConvectionCentral4::ConvectionCentral4(const LocalMesh& mesh, Form form)
   }
 }
 
-void ConvectionCentral4::local_gradient(const VectorField& v, TensorField& grad) const {
-  std::fill(grad.begin(), grad.end(), Eigen::Matrix3d::Zero());
-  // All local edges: complete sums at owned and layer-1 ghost nodes.
-  for (std::size_t e = 0; e < mesh_.edges.size(); ++e) {
-    const auto [j, k] = mesh_.edges[e];
-    const Eigen::Matrix3d f = 0.5 * (v[k] - v[j]) * mesh_.edge_normal[e].transpose();
-    grad[j] += f;
-    grad[k] += f;
-  }
-  for (int i = 0; i < mesh_.num_local(); ++i)
-    grad[i] = grad[i] * mesh_.gradient_correction[i].transpose() / mesh_.volume[i];
-}
-
 void ConvectionCentral4::deconvolve(const VectorField& u) {
-  local_gradient(u, grad_);
+  local_gradient(mesh_, u, grad_);
   for (int i = 0; i < mesh_.num_owned; ++i) hessian_[i].fill(Eigen::Matrix3d::Zero());
   for (int e = 0; e < mesh_.num_owned_edges; ++e) {
     const auto [j, k] = mesh_.edges[e];
@@ -78,7 +65,7 @@ void ConvectionCentral4::apply(const VectorField& u, VectorField& conv) {
                                 std::to_string(mesh_.num_local()) + " nodes");
   conv.assign(mesh_.num_local(), Eigen::Vector3d::Zero());
   if (form_ == Form::edge4) {
-    local_gradient(u, grad_);
+    local_gradient(mesh_, u, grad_);
     for (int e = 0; e < mesh_.num_owned_edges; ++e) {
       const auto [j, k] = mesh_.edges[e];
       const Eigen::Vector3d& s = mesh_.edge_normal[e];
@@ -91,7 +78,7 @@ void ConvectionCentral4::apply(const VectorField& u, VectorField& conv) {
     }
   } else {
     deconvolve(u);
-    local_gradient(nodal_, grad_);
+    local_gradient(mesh_, nodal_, grad_);
     for (int e = 0; e < mesh_.num_owned_edges; ++e) {
       const auto [j, k] = mesh_.edges[e];
       const Eigen::Vector3d uf =

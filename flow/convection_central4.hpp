@@ -59,8 +59,6 @@ class ConvectionCentral4 final : public ConvectionScheme {
   }
 
  private:
-  // Velocity gradient (i, j) = d u_i / d x_j at owned and layer-1 ghost nodes, no halo.
-  void local_gradient(const VectorField& v, TensorField& grad) const;
   void deconvolve(const VectorField& u);  // nodal_ from u (owned, then halo-inserted)
 
   const LocalMesh& mesh_;

@@ -71,6 +71,30 @@ void gradient(const LocalMesh& mesh, const VectorField& u, TensorField& grad) {
   finish_field(mesh, grad, 9);
 }
 
+void local_gradient(const LocalMesh& mesh, const ScalarField& phi, VectorField& grad) {
+  grad.assign(mesh.num_local(), Eigen::Vector3d::Zero());
+  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
+    const auto [j, k] = mesh.edges[e];
+    const Eigen::Vector3d f = 0.5 * (phi[k] - phi[j]) * mesh.edge_normal[e];
+    grad[j] += f;
+    grad[k] += f;
+  }
+  for (int i = 0; i < mesh.num_local(); ++i)
+    grad[i] = mesh.gradient_correction[i] * grad[i] / mesh.volume[i];
+}
+
+void local_gradient(const LocalMesh& mesh, const VectorField& u, TensorField& grad) {
+  grad.assign(mesh.num_local(), Eigen::Matrix3d::Zero());
+  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
+    const auto [j, k] = mesh.edges[e];
+    const Eigen::Matrix3d f = 0.5 * (u[k] - u[j]) * mesh.edge_normal[e].transpose();
+    grad[j] += f;
+    grad[k] += f;
+  }
+  for (int i = 0; i < mesh.num_local(); ++i)
+    grad[i] = grad[i] * mesh.gradient_correction[i].transpose() / mesh.volume[i];
+}
+
 void divergence(const LocalMesh& mesh, const VectorField& u, ScalarField& div) {
   check_size(mesh, u.size(), "u");
   div.assign(mesh.num_local(), 0.0);

@@ -37,6 +37,12 @@ void gradient(const LocalMesh& mesh, const ScalarField& phi, VectorField& grad);
 void gradient(const LocalMesh& mesh, const VectorField& u, TensorField& grad);
 void divergence(const LocalMesh& mesh, const VectorField& u, ScalarField& div);
 
+// The same gradients at owned and layer-1 ghost nodes from local values only (a loop over all
+// local edges instead of a halo exchange; layer-2 and deeper values are partial): for the
+// 4th-order operators, whose edge corrections need G at both ends. `grad` is resized.
+void local_gradient(const LocalMesh& mesh, const ScalarField& phi, VectorField& grad);
+void local_gradient(const LocalMesh& mesh, const VectorField& u, TensorField& grad);
+
 // Laplacian per unit volume; `grad` is the gradient of phi (from gradient()), used by the
 // non-orthogonal correction.
 void laplacian(const LocalMesh& mesh, const std::vector<double>& weights, const ScalarField& phi,

@@ -24,6 +24,27 @@ ProjectionRK4::ProjectionRK4(const LocalMesh& mesh, ProjectionOptions options,
     throw std::invalid_argument("flow::ProjectionRK4: density must be > 0 (got " +
                                 std::to_string(options.density) + ") and viscosity >= 0 (got " +
                                 std::to_string(options.viscosity) + ")");
+  if (options.fourth_order_operators) {
+    if (options.subgrid_viscosity)
+      throw std::invalid_argument(
+          "flow::ProjectionRK4: the 4th-order operators have no full-stress (LES) viscous term; "
+          "run an LES without fourth_order_operators");
+    order4_ = std::make_unique<Order4Operators>(mesh, poisson_weights_);
+  }
+}
+
+void ProjectionRK4::pressure_gradient(const ScalarField& p, VectorField& grad) {
+  if (order4_)
+    order4_->gradient(p, grad);
+  else
+    gradient(mesh_, p, grad);
+}
+
+void ProjectionRK4::projection_divergence(const VectorField& u, ScalarField& div) {
+  if (order4_)
+    order4_->divergence(u, div);
+  else
+    divergence(mesh_, u, div);
 }
 
 void ProjectionRK4::momentum_rhs(const VectorField& u, VectorField& rhs, int stage) {
@@ -38,7 +59,10 @@ void ProjectionRK4::momentum_rhs(const VectorField& u, VectorField& rhs, int sta
     viscous_stress(mesh_, weights_, nu_eff_, u, grad_u_, rhs);
   } else if (options_.viscosity > 0) {
     gradient(mesh_, u, grad_u_);
-    viscous(mesh_, viscous_weights(), options_.viscosity, u, grad_u_, rhs, viscous_correction());
+    if (order4_)
+      order4_->viscous(options_.viscosity, u, grad_u_, rhs);
+    else
+      viscous(mesh_, viscous_weights(), options_.viscosity, u, grad_u_, rhs, viscous_correction());
   } else {
     rhs.assign(mesh_.num_local(), Eigen::Vector3d::Zero());
   }
@@ -103,7 +127,7 @@ StepReport ProjectionRK4::step(FlowState& state, double dt) {
         "flow::ProjectionRK4: pressure outlets need poisson.dirichlet = "
         "BoundaryConditions::pressure_dirichlet()");
   // Predictor with the old pressure gradient, fixed over the stages.
-  gradient(mesh_, state.pressure, grad_p_);
+  pressure_gradient(state.pressure, grad_p_);
   stage_ = state.velocity;
   double alpha_prev = 0;  // the stage velocity stands at t^n + alpha_prev dt
   int stage = 0;
@@ -122,7 +146,7 @@ StepReport ProjectionRK4::step(FlowState& state, double dt) {
     if (bc) bc->impose(stage_, state.time + alpha * dt);  // v* is mass-corrected too
   }
   // Projection: lap(dp) = rho div(v*) / dt, warm-started from the previous increment.
-  divergence(mesh_, stage_, div_);
+  projection_divergence(stage_, div_);
   for (auto& d : div_) d *= rho / dt;
   if (bc && options_.pressure_damping) {
     // Pressure damping (Rhie & Chow, AIAA J. 21, 1983, in its node-centred form): the divergence
@@ -140,7 +164,7 @@ StepReport ProjectionRK4::step(FlowState& state, double dt) {
   }
   StepReport report;
   report.poisson = poisson_.solve(div_, dp_);
-  gradient(mesh_, dp_, grad_p_);
+  pressure_gradient(dp_, grad_p_);
   for (int i = 0; i < n; ++i) {
     state.velocity[i] = stage_[i] - dt / rho * grad_p_[i];
     state.pressure[i] += dp_[i];
@@ -149,7 +173,7 @@ StepReport ProjectionRK4::step(FlowState& state, double dt) {
   // projection there); Dirichlet values are restored and the mass is corrected again.
   if (bc) bc->hold_outlets(state.velocity), bc->impose(state.velocity, state.time + dt);
   state.time += dt;
-  divergence(mesh_, state.velocity, div_);
+  projection_divergence(state.velocity, div_);
   double worst = 0;
   for (int i = 0; i < mesh_.num_owned; ++i) worst = std::max(worst, std::abs(div_[i]));
   report.max_divergence = mesh_.comm.max(worst);

@@ -21,6 +21,7 @@
 #include "flow/convection_scheme.hpp"
 #include "flow/local_mesh.hpp"
 #include "flow/operators.hpp"
+#include "flow/operators_order4.hpp"
 #include "flow/pressure_poisson.hpp"
 
 namespace valsalva::flow {
@@ -42,6 +43,12 @@ struct ProjectionOptions {
   bool stiffness_viscous = false;
   // The pressure damping term of step() (with boundary conditions); false only for studies.
   bool pressure_damping = true;
+  // 4th-order laminar viscous term, pressure gradient and divergence (flow/operators_order4.hpp;
+  // the viscous term with the Poisson matrix's edge weights): with central4, a 4th-order
+  // velocity on uniform hexahedra and split tetrahedra (validation/taylor_green). The Poisson
+  // matrix, the pressure damping term and an LES (full-stress) viscous term stay 2nd order;
+  // with a subgrid model the option is refused. Needs 2 ghost layers.
+  bool fourth_order_operators = false;
   PoissonOptions poisson;
   // LES: fills nu_sgs [m^2/s] at owned and ghost nodes from the velocity gradient of RK stage
   // `stage` = 0..3 (owned + ghosts valid; nu_sgs is sized by the solver and holds the values of
@@ -82,9 +89,9 @@ class ProjectionRK4 {
   // The edge weights of the laminar viscous term and whether it has the non-orthogonal
   // correction (see ProjectionOptions::stiffness_viscous): what flow::wall_force needs.
   const std::vector<double>& viscous_weights() const {
-    return options_.stiffness_viscous ? poisson_weights_ : weights_;
+    return options_.stiffness_viscous || order4_ ? poisson_weights_ : weights_;
   }
-  bool viscous_correction() const { return !options_.stiffness_viscous; }
+  bool viscous_correction() const { return !options_.stiffness_viscous && !order4_; }
 
   // The last pressure increment dp (the warm start of the next Poisson solve): saved in
   // checkpoints so that a restarted run repeats the uninterrupted one bit for bit.
@@ -109,12 +116,16 @@ class ProjectionRK4 {
   ProjectionOptions options_;
   std::vector<double> weights_, poisson_weights_;
   std::unique_ptr<ConvectionScheme> convection_;
+  std::unique_ptr<Order4Operators> order4_;  // only with options.fourth_order_operators
   PressurePoisson poisson_;
   ScalarField dp_, div_;            // dp_ is kept between steps: warm start of the next solve
   ScalarField div_grad_p_, lap_p_;  // pressure damping with boundary conditions (step())
   // Owned values of the Poisson matrix's operator applied to p (per unit volume), plus the
   // boundary-face flux of grad p.
   void matrix_laplacian(const ScalarField& p, const VectorField& grad_p, ScalarField& out) const;
+  // The pressure gradient and the divergence of the projection: 2nd or 4th order.
+  void pressure_gradient(const ScalarField& p, VectorField& grad);
+  void projection_divergence(const VectorField& u, ScalarField& div);
   VectorField grad_p_, rhs_, conv_, stage_;
   TensorField grad_u_;
   ScalarField nu_sgs_, nu_eff_;  // LES only: subgrid and total viscosity

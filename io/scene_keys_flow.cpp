@@ -31,6 +31,15 @@ void declare_flow_keys(Schema& s) {
           "Convective scheme: central2 = 2nd-order centred, kinetic-energy conserving; central4 = "
           "4th-order centred edge scheme (Hermite face values, 4th order on uniform hexahedra and "
           "split tetrahedra, lower on irregular meshes; needs partition.ghost_layers >= 2)");
+  s.boolean("flow.fourth_order_operators")
+      .def(false)
+      .unit_of("-")
+      .doc(
+          "4th-order laminar viscous term, pressure gradient and divergence (Hermite-corrected "
+          "edge operators, flow/operators_order4.hpp): with flow.scheme = central4 the velocity "
+          "converges at 4th order on uniform hexahedra and split tetrahedra (Taylor-Green case); "
+          "the Poisson matrix and the pressure damping at boundaries stay 2nd order; refused "
+          "with an LES model; needs partition.ghost_layers >= 2");
   s.real("flow.velocity_limit")
       .def(50.0)
       .above(0)
@@ -189,6 +198,7 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   o.projection.density = rho;
   o.projection.viscosity = scene.get<double>("flow.viscosity") / rho;
   o.projection.scheme = scene.get<std::string>("flow.scheme");
+  o.projection.fourth_order_operators = scene.get<bool>("flow.fourth_order_operators");
   o.velocity_limit = scene.get<double>("flow.velocity_limit");
 
   o.time.end = scene.get<double>("time.end");

@@ -28,6 +28,7 @@ struct TgvSpec {
   double dt_max = 0;  // > 0: dt is also at most this (a time error below the spatial one)
   std::string scheme = "central2";  // flow::make_convection_scheme
   bool stiffness_viscous = false;   // flow::ProjectionOptions::stiffness_viscous
+  bool fourth_order_operators = false;  // flow::ProjectionOptions::fourth_order_operators
   flow::PoissonOptions poisson;
 };
 
@@ -49,11 +50,22 @@ struct TgvResult {
 
 TgvResult run_taylor_green(const TgvSpec& spec, MPI_Comm comm);
 
+// The 4th-order set-up at Re 100: central4 with flow::ProjectionOptions::fourth_order_operators
+// and dt = c (16 / n)^2 (at most CFL 0.1), c = 0.0125 on hexahedra, 0.05 on tetrahedra (whose
+// spatial error is ~100x larger). Why dt ~ h^2: projection + RK4 has an O(dt^2) velocity error
+// at Re 100 (measured on hexahedra, n 32: ~0.012 dt^2 in L2, 4.4e-6 of the 5.1e-6 at CFL 0.1
+// against a spatial error of ~6e-7; it scales with nu: 1.0e-7 inviscid), so a fixed CFL shows
+// order 2 in h; with dt ~ h^2 the time error stays below ~1/5 (hexahedra) and ~1/30
+// (tetrahedra) of the 4th-order spatial error at every level (checked by halving dt in
+// validation/taylor_green).
+TgvSpec fourth_order_spec(const std::string& cell_type, double perturbation, int n);
+
 // Volume-weighted L2 norms over owned nodes of (discrete - exact) for each term of the
 // momentum equation evaluated on the exact TGV fields at t = 0: convection div(u u) with
-// spec.scheme, viscous nu lap u, pressure gradient grad p / rho.
+// spec.scheme, viscous nu lap u, pressure gradient grad p / rho, and the divergence of u (exact:
+// 0); with the operators of spec.fourth_order_operators.
 struct TgvTermErrors {
-  double convection = 0, viscous = 0, pressure_gradient = 0;
+  double convection = 0, viscous = 0, pressure_gradient = 0, divergence = 0;
 };
 TgvTermErrors taylor_green_term_errors(const TgvSpec& spec, MPI_Comm comm);
 
