@@ -157,6 +157,7 @@ struct LevelRun {
   EndDiagnostics end;
   long nodes = 0;
   int steps = 0;
+  double uz_max = 0;  // max |u_z| / U_mean at the end: 0 on a z-invariant slab
   double dt = 0, wall = 0;
 };
 
@@ -178,7 +179,7 @@ std::vector<Level> dfg_levels(const Context& ctx) {
 
 // The finest-level checks apply only to the default full run (not to a developer setting).
 bool default_levels(const Context& ctx) {
-  for (const char* key : {"level", "sigma", "size_near", "size_far", "dz", "centre_y"})
+  for (const char* key : {"level", "sigma", "size_near", "size_far", "dz", "centre_y", "cells"})
     if (!ctx.option(key).empty()) return false;
   return !ctx.quick;
 }
@@ -294,6 +295,7 @@ LevelRun run_level(const Context& ctx, const Level& level, const Benchmark& b) {
   spec.size_far = level.size_far;
   spec.thickness = spec.layers * (level.dz > 0 ? level.dz : level.size_far);
   spec.centre_y = ctx.option_real("centre_y", spec.centre_y);  // 0.205: symmetric, c_L = 0 exactly
+  spec.split = ctx.option("cells") == "tetra";  // default prisms (measured in the header)
   auto mesh = io::generate_cylinder_channel_mesh(spec);
   mesh.periodic.push_back({"front", "back", Eigen::Vector3d(0, 0, spec.thickness)});
   const auto metrics = flow::compute_dual_metrics(mesh);
@@ -367,6 +369,9 @@ LevelRun run_level(const Context& ctx, const Level& level, const Benchmark& b) {
   if (b.name == "2d1")
     r.end = end_diagnostics(mesh, metrics, local, solver, state, spec.centre_y, zc, level.size_near,
                             0.5 * kRho * b.u_mean * b.u_mean * kDiameter * spec.thickness);
+  for (int i = 0; i < local.num_owned; ++i)
+    r.uz_max = std::max(r.uz_max, std::abs(state.velocity[i].z()) / b.u_mean);
+  r.uz_max = local.comm.max(r.uz_max);
   r.nodes = local.global_nodes;
   r.wall = MPI_Wtime() - t0;
   return r;
@@ -502,31 +507,31 @@ void run_2d1(const Context& ctx, Report& report, int rank) {
       "size_near,size_far,dz,nodes,steps,dt,t_end,c_D,c_L,dp,c_D_change_last_unit,"
       "c_L_change_last_unit,wall_s,c_L_pressure,c_L_viscous,c_L_convective,c_L_surface_pressure,"
       "dp_wall_node,p_front_wall_node,p_back_wall_node,p_front,p_back,p_front_linear,p_back_linear,"
-      "dp_linear,p_front_quadratic,p_back_quadratic,dp_quadratic",
+      "dp_linear,p_front_quadratic,p_back_quadratic,dp_quadratic,uz_max",
       [&](const Level& level, const LevelRun& r) {
         s = steady_result(r);
         const auto& d = r.end;
         return std::pair{
             fmt::format("{},{},{},{},{},{:.4e},{:.3f},{:.6f},{:.6f},{:.6f},{:.2e},{:.2e},{:.1f},"
                         "{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},"
-                        "{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}",
+                        "{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.2e}",
                         level.size_near, level.size_far, level.dz, r.nodes, r.steps, r.dt, s.last.t,
                         s.last.cd, s.last.cl, s.last.dp, s.cd_change, s.cl_change, r.wall,
                         d.cl_pressure, d.cl_viscous, d.cl_convective, d.cl_surface_pressure,
                         s.last.dp_wall_node, d.p_front_wall_node, d.p_back_wall_node, d.p_front,
                         d.p_back, d.p_front_linear, d.p_back_linear,
                         d.p_front_linear - d.p_back_linear, d.p_front_quadratic, d.p_back_quadratic,
-                        d.p_front_quadratic - d.p_back_quadratic),
+                        d.p_front_quadratic - d.p_back_quadratic, r.uz_max),
             fmt::format("dfg 2D-1 size {} / {}: {} nodes, {} steps to t = {:.2f}: c_D {:.5f} "
                         "c_L {:.5f} dp {:.5f} (change over the last time unit: c_D {:.1e}, c_L "
                         "{:.1e}), {:.0f} s\n  c_L parts: pressure {:.5f} viscous {:.5f} "
                         "convective {:.5f} (surface pressure {:.5f}); dp of the wall nodes {:.5f}, "
-                        "extrapolated linear {:.5f} quadratic {:.5f}",
+                        "extrapolated linear {:.5f} quadratic {:.5f}; max |u_z| / U {:.1e}",
                         level.size_near, level.size_far, r.nodes, r.steps, s.last.t, s.last.cd,
                         s.last.cl, s.last.dp, s.cd_change, s.cl_change, r.wall, d.cl_pressure,
                         d.cl_viscous, d.cl_convective, d.cl_surface_pressure, s.last.dp_wall_node,
                         d.p_front_linear - d.p_back_linear,
-                        d.p_front_quadratic - d.p_back_quadratic)};
+                        d.p_front_quadratic - d.p_back_quadratic, r.uz_max)};
       });
   report.add("2D-1 steady: c_D, c_L change over the last time unit",
              std::max(s.cd_change, s.cl_change), 0, 1e-4, Check::at_most);
@@ -551,21 +556,22 @@ void run_2d2(const Context& ctx, Report& report, int rank) {
   run_levels(
       ctx, rank, b,
       "size_near,size_far,nodes,steps,dt,t_window,c_D_max,c_L_max,c_L_min,St,period,"
-      "period_spread,amplitude_change,periods,dp_half_period,dp_half_period_wall_node,wall_s",
+      "period_spread,amplitude_change,periods,dp_half_period,dp_half_period_wall_node,wall_s,"
+      "uz_max",
       [&](const Level& level, const LevelRun& r) {
         p = periodic_result(r.history, b.t_min);
         return std::pair{
             fmt::format("{},{},{},{},{:.4e},{}-{},{:.5f},{:.5f},{:.5f},{:.5f},{:.5f},{:.2e},"
-                        "{:.2e},{},{:.5f},{:.5f},{:.1f}",
+                        "{:.2e},{},{:.5f},{:.5f},{:.1f},{:.2e}",
                         level.size_near, level.size_far, r.nodes, r.steps, r.dt, b.t_min, b.t_end,
                         p.cd_max, p.cl_max, p.cl_min, p.st, p.period, p.period_spread,
-                        p.amplitude_change, p.periods, p.dp_half, p.dp_half_wall_node, r.wall),
+                        p.amplitude_change, p.periods, p.dp_half, p.dp_half_wall_node, r.wall, r.uz_max),
             fmt::format("dfg 2D-2 size {} / {}: {} nodes, {} steps (dt {:.2e}): c_D max {:.4f} "
                         "c_L max {:.4f} St {:.4f} over {} periods (spread {:.1e} s, amplitude "
-                        "change {:.1e}), dp(T/2) {:.4f} (wall nodes {:.4f}), {:.0f} s",
+                        "change {:.1e}), dp(T/2) {:.4f} (wall nodes {:.4f}), {:.0f} s, max |u_z| / U {:.1e}",
                         level.size_near, level.size_far, r.nodes, r.steps, r.dt, p.cd_max, p.cl_max,
                         p.st, p.periods, p.period_spread, p.amplitude_change, p.dp_half,
-                        p.dp_half_wall_node, r.wall)};
+                        p.dp_half_wall_node, r.wall, r.uz_max)};
       });
   report.add("2D-2 periodic: relative change of c_L max between the last two periods",
              p.amplitude_change, 0, 2e-3, Check::at_most);
@@ -606,6 +612,8 @@ Case dfg_cylinder_case() {
                             1e-3, 0.1),
            CaseOption::real("dz", "with size_near: the slab layer height, m (default size_far)",
                             1e-3, 0.1),
+           CaseOption::choice("cells", "slab cells (default: prisms; tetra: Gmsh's split of them)",
+                              {"tetra", "prisms"}),
            CaseOption::real("centre_y",
                             "cylinder centre height, m (default 0.2; 0.205 is the symmetric "
                             "channel, where c_L = 0 exactly)",
