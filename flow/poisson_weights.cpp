@@ -68,8 +68,7 @@ std::vector<double> stiffness_weights(const Mesh& mesh, const DualMetrics& metri
   for (const auto& [j, k] : local.edges) weight[key(local.dual_node[j], local.dual_node[k])] = 0.0;
 
   const auto add = [&](GlobalIndex a, GlobalIndex b, double w) {
-    const auto it =
-        weight.find(key(metrics.dual_of_mesh_node[a], metrics.dual_of_mesh_node[b]));
+    const auto it = weight.find(key(metrics.dual_of_mesh_node[a], metrics.dual_of_mesh_node[b]));
     if (it != weight.end()) it->second += w;
   };
   for (GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
