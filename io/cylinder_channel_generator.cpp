@@ -9,7 +9,6 @@
 #include <stdexcept>
 
 #include "io/gmsh_reader.hpp"
-#include "io/prism_split.hpp"
 
 namespace valsalva::io {
 
@@ -52,8 +51,8 @@ void check(const CylinderChannelSpec& s) {
 flow::Mesh generate_cylinder_channel_mesh(const CylinderChannelSpec& s) {
   check(s);
   const std::string source =
-      fmt::format("cylinder_channel(size_near={:g}, size_far={:g}, layers={}, box_size={:g})",
-                  s.size_near, s.size_far, s.layers, s.box_size);
+      fmt::format("cylinder_channel(size_near={:g}, size_far={:g}, layers={}, box_size={:g}, {})",
+                  s.size_near, s.size_far, s.layers, s.box_size, s.split ? "tetra" : "prism");
   GmshSession session;
   gmsh_call(source, [&] {
     namespace occ = gmsh::model::occ;
@@ -68,7 +67,8 @@ flow::Mesh generate_cylinder_channel_mesh(const CylinderChannelSpec& s) {
                           ": cutting the cylinder out of the channel did not give one "
                           "surface");
     gmsh::vectorpair extruded;
-    occ::extrude(section, 0, 0, s.thickness, extruded, {s.layers}, {}, false);
+    // Not recombined, Gmsh cuts each layer's prisms into tetrahedra itself.
+    occ::extrude(section, 0, 0, s.thickness, extruded, {s.layers}, {}, !s.split);
     occ::synchronize();
 
     // Size field: size_near on the circle, growing linearly to size_far at grading_distance.
@@ -142,7 +142,7 @@ flow::Mesh generate_cylinder_channel_mesh(const CylinderChannelSpec& s) {
     gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
     generate_deterministic_mesh(3);
   });
-  return split_prisms_to_tetrahedra(mesh_from_gmsh_model(source));
+  return mesh_from_gmsh_model(source);
 }
 
 }  // namespace valsalva::io

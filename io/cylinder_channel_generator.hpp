@@ -2,9 +2,10 @@
 // laminar flow around a cylinder", Notes Numer. Fluid Mech. 52, 1996): a 2.2 x 0.41 channel
 // with a cylinder of diameter 0.1 centred at (0.2, 0.2), as a periodic slab in z. Gmsh's
 // OpenCASCADE kernel meshes the 2D section with triangles, graded from size_near on the
-// cylinder to size_far at `grading_distance` from it, and extrudes it into `layers` prism
-// layers; the prisms are split into tetrahedra (io/prism_split.hpp) so that the Poisson matrix
-// gets consistent P1 weights. Deterministic (one thread, fixed seed).
+// cylinder to size_far at `grading_distance` from it, and extrudes it into `layers` layers of
+// tetrahedra (Gmsh cuts each prism into three, the same way in every layer, so the slab is
+// z-invariant: tests/io/test_cylinder_channel.cpp) for the consistent P1 Poisson weights, or,
+// with split = false, of the prisms themselves. Deterministic (one thread, fixed seed).
 // Patches: inlet (x = 0), outlet (x = 2.2), wall (y = 0 and y = 0.41), cylinder, front (z = 0),
 // back (z = thickness), to be paired as periodic by the caller; region "fluid".
 // Optional refinement box (Turek–Hron: the elastic bar behind the cylinder and its swing): size
@@ -27,6 +28,7 @@ struct CylinderChannelSpec {
   double box_size = 0;                                    // m; 0 = no refinement box
   double box_x0 = 0, box_x1 = 0, box_y0 = 0, box_y1 = 0;  // m
   double box_transition = 0.1;                            // m
+  bool split = true;  // false: prisms (their weights: flow::slab_stiffness_weights)
 };
 
 // Throws std::invalid_argument for an inconsistent spec (cylinder not inside the channel,

@@ -1,8 +1,12 @@
 // DFG cylinder-channel slab mesh and the conforming prism split it relies on.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <set>
+#include <tuple>
+#include <vector>
 
 #include "flow/dual_metrics.hpp"
 #include "flow/mesh_check.hpp"
@@ -83,6 +87,36 @@ TEST_CASE("cylinder channel: patches, volume, periodic slab metrics") {
   const auto again = io::generate_cylinder_channel_mesh(spec);
   CHECK(again.num_cells() == mesh.num_cells());
   CHECK(again.nodes == mesh.nodes);
+}
+
+TEST_CASE("cylinder channel: every layer's prisms are cut alike") {
+  // Each layer's tetrahedra, as (x, y, layer offset) node patterns, repeat the first layer's:
+  // Gmsh cuts the extruded prisms the same way in every layer, so the slab is z-invariant (a
+  // z-invariant flow stays so).
+  io::CylinderChannelSpec spec;
+  spec.size_near = 0.02;
+  spec.size_far = 0.08;
+  const double dz = spec.thickness / spec.layers;
+  using Pattern = std::vector<std::tuple<double, double, long>>;
+  std::vector<std::multiset<Pattern>> layers(spec.layers);
+  const auto mesh = io::generate_cylinder_channel_mesh(spec);
+  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
+    Pattern p;
+    long base = spec.layers;
+    for (auto n : mesh.cell(c)) base = std::min(base, std::lround(mesh.nodes[n].z() / dz));
+    for (auto n : mesh.cell(c))
+      p.emplace_back(mesh.nodes[n].x(), mesh.nodes[n].y(),
+                     std::lround(mesh.nodes[n].z() / dz) - base);
+    std::sort(p.begin(), p.end());
+    layers.at(base).insert(p);
+  }
+  CHECK(layers[0].size() * spec.layers == static_cast<std::size_t>(mesh.num_cells()));
+  for (int l = 1; l < spec.layers; ++l) CHECK(layers[l] == layers[0]);
+  spec.split = false;  // the unsplit slab: prisms
+  const auto prisms = io::generate_cylinder_channel_mesh(spec);
+  CHECK(prisms.num_cells() * 3 == mesh.num_cells());
+  for (auto t : prisms.cell_types) REQUIRE(t == flow::CellType::prism);
+  CHECK_NOTHROW(flow::check_mesh(prisms));
 }
 
 TEST_CASE("cylinder channel: refinement box") {

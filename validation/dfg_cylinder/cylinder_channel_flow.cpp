@@ -28,8 +28,9 @@ CylinderChannelFlow make_cylinder_channel_flow(const flow::Mesh& mesh,
   options.stiffness_viscous = stiffness_viscous;
   options.boundary = out.bc;
   options.poisson.dirichlet = out.bc->pressure_dirichlet();
-  out.solver = std::make_unique<flow::ProjectionRK4>(local, options,
-                                                     flow::poisson_weights(mesh, metrics, local));
+  // The P1 weights on tetrahedra, their extruded form on prisms (the slab of unsplit prisms).
+  out.solver = std::make_unique<flow::ProjectionRK4>(
+      local, options, flow::slab_stiffness_weights(mesh, metrics, local));
   return out;
 }
 

@@ -1,6 +1,7 @@
 // The flow of the DFG / Turek–Hron cylinder channel on an io/cylinder_channel_generator slab:
 // plane-Poiseuille inlet carrying Q(t), pressure outlet (p = 0, do-nothing-like), no-slip
-// channel walls and cylinder; the projection solver with P1 Poisson weights. Shared by the
+// channel walls and cylinder; the projection solver with P1 Poisson weights (their extruded
+// form on a slab of prisms, flow::slab_stiffness_weights). Shared by the
 // dfg_cylinder and turek_hron_fsi cases. `stiffness_viscous`: the viscous term with the P1
 // weights of the Poisson matrix (flow::ProjectionOptions::stiffness_viscous; dfg_cylinder uses
 // it, turek_hron_fsi keeps the default two-point + correction form it was measured with).

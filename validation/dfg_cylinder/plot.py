@@ -65,10 +65,10 @@ plot_case("2d1", "dfg_2d1.csv", "dfg_2d1_history.csv",
            ("dp", 0.1172, 0.1176, "dp")],
           [("c_D", "c_D history", (5.57, 5.59)), ("c_L", "c_L history", (0.0104, 0.0110)),
            ("dp", "dp history", (0.1172, 0.1176))], 0.5,
-          "DFG cylinder 2D-1 (Re 20), tetrahedral slab: finest values and histories")
+          "DFG cylinder 2D-1 (Re 20), prism slab: finest values and histories")
 plot_case("2d2", "dfg_2d2.csv", "dfg_2d2_history.csv",
           [("c_D_max", 3.22, 3.24, "c_D max"), ("c_L_max", 0.99, 1.01, "c_L max"),
            ("St", 0.295, 0.305, "St")],
           [("c_D", "c_D history (band: c_D max interval)", (3.22, 3.24)),
            ("c_L", "c_L history", (0.99, 1.01)), ("dp", "dp history", None)], 3.5,
-          "DFG cylinder 2D-2 (Re 100), tetrahedral slab: window values and histories")
+          "DFG cylinder 2D-2 (Re 100), prism slab: window values and histories")
