@@ -56,8 +56,8 @@ struct PhaseSample {
   double max_error = 0;   // max |u_z - u_exact| / u_peak over the slab
   double l2_error = 0;    // volume-weighted RMS of u_z - u_exact over the slab / u_peak
   double transverse = 0;  // max |u_x, u_y| / u_peak over the slab
-  // Mean flux over the middle third, sum V_j u_z / (L / 3), of the run and of the exact nodal
-  // values, and the imposed Q(t), m^3/s.
+  // Mean flux over the middle third, sum V_j u_z / (sum V_j / pi R^2), of the run and of the
+  // exact nodal values, and the imposed Q(t), m^3/s.
   double mean_flux = 0, exact_mean_flux = 0, flow_rate = 0;
   std::vector<double> x, y, z, r, u, exact, ux, uy;  // slab nodes (owned, gathered on rank 0)
 };
