@@ -35,7 +35,10 @@
 // the error over r at the worst phase: validation/womersley/plot_study.py OUT.png with the
 // runs' --csv files. At Wo 4 the Stokes layer is 3.5 h thick: no rows, and rows 0.3 h thick
 // put the viscous RK4 limit below the run's dt (the run stops with "beyond the RK4 stability
-// limit", measured). Not tried: D/30 (~100 k nodes with the rows, beyond this machine's time).
+// limit", measured). Layer height along z (Wo 17, D/10, rows): dz 0.5 h 1.70 % (11.6 k nodes)
+// against 1.90 % at dz = h; dz = 2 h blew up at step 57 (t = 0.145 s; thin rows stretched to
+// 2 h in z, not investigated), so dz = h. The max over the 8 phases is the worst phase; at D/20
+// the phases spread 0.40 - 0.65 %. Not tried: D/30 (~100 k nodes with the rows, too costly here).
 // Outlet: the pressure outlet is the exact condition (p is uniform over every section of the
 // exact flow, du/dn = 0); with the do-nothing viscous flux and the whole backflow term
 // (flow/boundary_conditions.hpp) it gives the same D/20 errors as a convective outlet on the
