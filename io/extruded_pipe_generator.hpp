@@ -8,6 +8,8 @@
 // "fluid".
 #pragma once
 
+#include <mpi.h>
+
 #include "flow/mesh.hpp"
 #include "io/extruded_disk.hpp"
 
@@ -21,7 +23,10 @@ struct ExtrudedPipeSpec {
   DiskWallGrading grading;  // m
 };
 
-// Throws std::invalid_argument naming the bad parameter.
-flow::Mesh generate_extruded_pipe_mesh(const ExtrudedPipeSpec& spec);
+// Collective over `comm`: its rank 0 triangulates the disk and sends it to the others, because
+// Gmsh's 2D BoundaryLayer rows are not deterministic (measured: the same spec gives different
+// nodes in two calls), while every rank must hold the same mesh. Throws
+// std::invalid_argument naming the bad parameter.
+flow::Mesh generate_extruded_pipe_mesh(const ExtrudedPipeSpec& spec, MPI_Comm comm = MPI_COMM_SELF);
 
 }  // namespace valsalva::io

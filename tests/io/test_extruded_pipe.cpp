@@ -3,6 +3,8 @@
 // circle, and the wall grading's first row of nodes where it was asked for.
 #include <doctest/doctest.h>
 
+#include <mpi.h>
+
 #include <cmath>
 #include <numbers>
 
@@ -89,6 +91,23 @@ TEST_CASE("extruded pipe: tetrahedra, patches, chord-polygon areas and volume, w
     else
       CHECK(m.first_row > 0.3 * (spec.grading.wall_size > 0 ? spec.grading.wall_size : spec.target_size));
     if (spec.grading.wall_size > 0) CHECK(m.first_row < spec.grading.wall_size);
+    // Gmsh's Delaunay disks repeat; its BoundaryLayer rows do not (hence rank 0's disk is sent
+    // to the other ranks, checked at np 2 below).
+    if (first_row == 0) {
+      const auto again = io::generate_extruded_pipe_mesh(spec);
+      CHECK(again.nodes == mesh.nodes);
+      CHECK(again.cell_nodes == mesh.cell_nodes);
+    }
+    // Every rank of the world holds rank 0's mesh.
+    const auto shared = io::generate_extruded_pipe_mesh(spec, MPI_COMM_WORLD);
+    std::vector<double> mine, first;
+    for (const auto& x : shared.nodes) mine.insert(mine.end(), {x.x(), x.y(), x.z()});
+    first = mine;
+    long count = static_cast<long>(first.size());
+    MPI_Bcast(&count, 1, MPI_LONG, 0, MPI_COMM_WORLD);
+    first.resize(count);
+    MPI_Bcast(first.data(), static_cast<int>(count), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    CHECK(first == mine);
   }
   auto bad = base;
   bad.length = -1;

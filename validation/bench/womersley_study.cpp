@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
       // The run's mesh, no run: node density and edge lengths / h (h = D / npd), the nodes of
       // the sampled slab |z - L/2| <= h/2 and the nodes per diameter an equilateral section
       // triangulation with that many nodes would have (extruded: the slab is one layer).
-      const auto m = valsalva::validation::womersley_mesh(s);
+      const auto m = valsalva::validation::womersley_mesh(s, MPI_COMM_WORLD);
       const double R = valsalva::validation::womersley_radius(s.womersley);
       const double h = 2 * R / s.nodes_per_diameter, L = s.length_in_diameters * 2 * R;
       std::set<std::pair<long, long>> edges;

@@ -31,7 +31,7 @@ double womersley_radius(double womersley) {
   return womersley * std::sqrt(kViscosity / kDensity / (2 * std::numbers::pi / kPeriod));
 }
 
-flow::Mesh womersley_mesh(const WomersleySetup& setup) {
+flow::Mesh womersley_mesh(const WomersleySetup& setup, MPI_Comm comm) {
   const double R = womersley_radius(setup.womersley), L = setup.length_in_diameters * 2 * R;
   const double size = setup.mesh_size_factor * 2 * R / setup.nodes_per_diameter;
   if (setup.extruded) {
@@ -42,7 +42,7 @@ flow::Mesh womersley_mesh(const WomersleySetup& setup) {
     for (double* d : {&spec.grading.wall_size, &spec.grading.wall_distance,
                       &spec.grading.layer_first, &spec.grading.layer_thickness})
       *d *= size;
-    return io::generate_extruded_pipe_mesh(spec);
+    return io::generate_extruded_pipe_mesh(spec, comm);
   }
   auto options = setup.mesh;
   options.wall_size *= size;
@@ -84,7 +84,7 @@ WomersleyResult run_womersley(const WomersleySetup& setup, MPI_Comm comm) {
   const double q0 = 5 * D / kPeriod * std::numbers::pi * R * R;
   res.radius = R, res.length = L, res.h = h;
 
-  const auto mesh = womersley_mesh(setup);
+  const auto mesh = womersley_mesh(setup, comm);
   const auto metrics = flow::compute_dual_metrics(mesh);
   const auto local = flow::distribute(mesh, metrics, comm);
   res.nodes = local.global_nodes;

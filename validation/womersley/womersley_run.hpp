@@ -81,8 +81,9 @@ struct WomersleyResult {
 // The pipe radius of a Womersley number (the fluid and period of the runs), m.
 double womersley_radius(double womersley);
 
-// The pipe mesh of a set-up (the same on every rank). Throws as the generators do.
-flow::Mesh womersley_mesh(const WomersleySetup& setup);
+// The pipe mesh of a set-up, the same on every rank of `comm` (collective). Throws as the
+// generators do.
+flow::Mesh womersley_mesh(const WomersleySetup& setup, MPI_Comm comm);
 
 // Collective over `comm`.
 WomersleyResult run_womersley(const WomersleySetup& setup, MPI_Comm comm);
