@@ -32,7 +32,11 @@
 // Rows at 0.2 - 1.5 h resolve the layer: the core offset drops to 0.4 %. Gmsh's BoundaryLayer
 // rows are not deterministic (the same spec gives other nodes in another call, test_extruded_
 // pipe), so rank 0 makes the disk for all ranks; two such D/20 meshes gave 0.65 % (study tool)
-// and 0.67 % (this case), D/10 1.90 / 1.91 %. With rows only to 1 h
+// and 0.67 % (this case), D/10 1.90 / 1.91 / 1.95 % (the last at np 2).
+// `valsalva validate womersley` (np 1, shared machine, 1690 s): all checks pass; Wo 17 D/20
+// 0.670 % max, 0.319 % L2; Wo 4 D/20 0.574 %, 0.332 %; orders D/10 -> D/20 1.51 (Wo 17), 2.06
+// (Wo 4), L2 1.47; Delaunay D/20 5.33 %, D/10 15.14 %. `--quick` gives the same 0.0239185 at
+// np 1 and np 2. With rows only to 1 h
 // (two rows, the last at 0.66 h) the max, -2.3 %, sits on the last row (r = 0.934 R): the jump
 // to the unstructured bulk there misses the profile's curvature just inside the layer. Plot of
 // the error over r at the worst phase: validation/womersley/plot_study.py OUT.png with the
