@@ -262,6 +262,36 @@ TEST_CASE("plane Poiseuille inlet: parabola across the channel with the exact di
       doctest::Contains("inlet 'xmin': the plane_poiseuille profile needs"), std::invalid_argument);
 }
 
+TEST_CASE("unscaled inlet profile: the nodal parabola as it is, with its trapezoid flux") {
+  const int ny = 16;
+  Channel c(12, ny, 2.0, 1.0);
+  const double h = 1.0 / ny, area = c.depth * 1.0, q = 0.3 * area;
+  auto inlet = flow::boundary_spec("xmin", flow::BoundaryType::inlet);
+  inlet.flow_rate.mean = q;
+  inlet.profile = flow::InletProfile::plane_poiseuille;
+  inlet.across = Eigen::Vector3d(0, 1, 0);
+  inlet.unscaled_profile = true;
+  flow::BoundaryConditions bc(
+      c.local,
+      {inlet, flow::boundary_spec("xmax", flow::BoundaryType::convective_outlet),
+       flow::boundary_spec("ymin", flow::BoundaryType::wall),
+       flow::boundary_spec("ymax", flow::BoundaryType::wall)},
+      0.01);
+  flow::VectorField u(c.local.num_local(), Eigen::Vector3d::Zero());
+  bc.impose(u, 0.0);
+  double worst = 0;
+  for (int i = 0; i < c.local.num_owned; ++i) {
+    const auto& x = c.local.position[i];
+    if (x.x() > 1e-12) continue;
+    worst = std::max(worst, std::abs(u[i].x() - 1.5 * 0.3 * 4 * x.y() * (1 - x.y())));
+  }
+  CHECK(c.local.comm.max(worst) < 1e-14);
+  // The median-dual inlet faces weigh the nodes as the trapezoid rule (h, h/2 at the walls),
+  // which integrates 6 U s (1 - s) to U (1 - h^2): the flux is short by h^2, not scaled to Q.
+  const auto flux = bc.patch_fluxes(u);
+  CHECK(flux[c.patch("xmin")] == doctest::Approx(-q * (1 - h * h)).epsilon(1e-12));
+}
+
 TEST_CASE("pressure-outlet backflow stabilisation removes twice the inflowing kinetic energy") {
   Channel c(8, 4, 2.0, 1.0);
   const flow::BoundaryConditions bc(

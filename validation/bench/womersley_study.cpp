@@ -10,7 +10,10 @@
 //                         [--damping 1] [--stiffness 0] [--outlet pressure|convective]
 //                         [--unscaled 0] [--size_factor 1] [--wall_size 0 --wall_distance 0]
 //                         [--algorithm3d 1] [--period 3] [--csv FILE]
-//   (--size_factor scales Gmsh's size D / npd; wall sizes are in units of that scaled size)
+//                         [--extruded 0 [--dz 1] [--bl_first 0 --bl_ratio 1.2 --bl_thickness 0]]
+//   (--size_factor scales Gmsh's size D / npd; wall sizes, the layer height --dz and the
+//   boundary-layer rows --bl_* are in units of that scaled size; --extruded 1: the disk extruded
+//   into split prism layers, io/extruded_pipe_generator.hpp, graded by --wall_size/--bl_*)
 #include <fmt/format.h>
 #include <mpi.h>
 
@@ -22,8 +25,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "io/periodic_pipe_generator.hpp"
-#include "io/pipe_generator.hpp"
 #include "validation/bench/bench_util.hpp"
 #include "validation/womersley/womersley_run.hpp"
 #include "validation/womersley_periodic/periodic_run.hpp"
@@ -37,46 +38,59 @@ int main(int argc, char** argv) {
         argc, argv,
         {"wo", "npd", "cfl", "tol", "length", "damping", "stiffness", "outlet", "csv", "period",
          "unscaled", "periodic", "split", "mesh_stats", "algorithm3d", "size_factor", "flux_driven",
-         "wall_size", "wall_distance"});
+         "wall_size", "wall_distance", "extruded", "dz", "bl_first", "bl_ratio",
+         "bl_thickness"});
     const auto get = [&](const char* key, const char* def) {
       return o.count(key) ? o.at(key) : std::string(def);
     };
+    valsalva::validation::WomersleySetup s;
+    s.womersley = std::stod(get("wo", "17"));
+    s.nodes_per_diameter = std::stod(get("npd", "10"));
+    s.mesh_size_factor = std::stod(get("size_factor", "1"));
+    s.mesh.algorithm3d = std::stoi(get("algorithm3d", "1"));
+    s.mesh.wall_size = std::stod(get("wall_size", "0"));
+    s.mesh.wall_distance = std::stod(get("wall_distance", "0"));
+    s.extruded = get("extruded", "0") != "0";
+    s.layer_height = std::stod(get("dz", "1"));
+    s.grading.wall_size = s.mesh.wall_size, s.grading.wall_distance = s.mesh.wall_distance;
+    s.grading.layer_first = std::stod(get("bl_first", "0"));
+    s.grading.layer_ratio = std::stod(get("bl_ratio", "1.2"));
+    s.grading.layer_thickness = std::stod(get("bl_thickness", "0"));
+    s.length_in_diameters = std::stod(get("length", "2"));
     if (get("mesh_stats", "0") != "0") {
-      // Edge lengths / h of the tetrahedral pipe and of the split extruded disk (same h).
-      const double nu = 3.6e-3 / 1100, omega = 2 * std::numbers::pi;
-      const double R = std::stod(get("wo", "17")) * std::sqrt(nu / omega);
-      const double h = 2 * R / std::stod(get("npd", "10"));
-      valsalva::io::PeriodicPipeSpec spec;
-      spec.radius = R, spec.length = 3 * h, spec.target_size = h, spec.layers = 3;
-      spec.split = true;
-      const auto stats = [&](const char* name, const valsalva::flow::Mesh& m, double length) {
-        std::set<std::pair<long, long>> edges;
-        for (long c = 0; c < m.num_cells(); ++c) {
-          const auto n = m.cell(c);
-          for (std::size_t a = 0; a < n.size(); ++a)
-            for (std::size_t b = a + 1; b < n.size(); ++b)
-              edges.insert({std::min(n[a], n[b]), std::max(n[a], n[b])});
-        }
-        std::vector<double> len;
-        for (const auto& [a, b] : edges) len.push_back((m.nodes[a] - m.nodes[b]).norm() / h);
-        std::sort(len.begin(), len.end());
-        double mean = 0;
-        for (double l : len) mean += l / len.size();
-        fmt::print(
-            "{}: {} nodes ({:.3f} per h^3), edges / h: mean {:.3f} median {:.3f} "
-            "p10 {:.3f} p90 {:.3f}\n",
-            name, m.num_nodes(), m.num_nodes() / (std::numbers::pi * R * R * length) * h * h * h,
-            mean, len[len.size() / 2], len[len.size() / 10], len[9 * len.size() / 10]);
-      };
-      if (rank == 0) {
-        valsalva::io::PipeMeshOptions mo;
-        mo.algorithm3d = std::stoi(get("algorithm3d", "1"));
-        const double f = std::stod(get("size_factor", "1"));
-        mo.wall_size = std::stod(get("wall_size", "0")) * f * h;
-        mo.wall_distance = std::stod(get("wall_distance", "0")) * f * h;
-        stats("gmsh tetra pipe", valsalva::io::generate_pipe_mesh(R, 4 * R, f * h, mo), 4 * R);
-        stats("split extruded disk", valsalva::io::generate_periodic_pipe_mesh(spec), 3 * h);
+      // The run's mesh, no run: node density and edge lengths / h (h = D / npd), the nodes of
+      // the sampled slab |z - L/2| <= h/2 and the nodes per diameter an equilateral section
+      // triangulation with that many nodes would have (extruded: the slab is one layer).
+      const auto m = valsalva::validation::womersley_mesh(s, MPI_COMM_WORLD);
+      const double R = valsalva::validation::womersley_radius(s.womersley);
+      const double h = 2 * R / s.nodes_per_diameter, L = s.length_in_diameters * 2 * R;
+      std::set<std::pair<long, long>> edges;
+      for (long c = 0; c < m.num_cells(); ++c) {
+        const auto n = m.cell(c);
+        for (std::size_t a = 0; a < n.size(); ++a)
+          for (std::size_t b = a + 1; b < n.size(); ++b)
+            edges.insert({std::min(n[a], n[b]), std::max(n[a], n[b])});
       }
+      std::vector<double> len, section;  // all edges, edges within a z = const section
+      for (const auto& [a, b] : edges) {
+        const auto d = m.nodes[a] - m.nodes[b];
+        len.push_back(d.norm() / h);
+        if (std::abs(d.z()) < 1e-12 * R) section.push_back(d.norm() / h);
+      }
+      std::sort(len.begin(), len.end());
+      std::sort(section.begin(), section.end());
+      long slab = 0;
+      for (const auto& x : m.nodes) slab += std::abs(x.z() - L / 2) <= h / 2;
+      const double area = std::numbers::pi * R * R;
+      if (rank == 0)
+        fmt::print(
+            "{}: {} nodes ({:.3f} per h^3), edges / h: median {:.3f} p10 {:.3f} p90 {:.3f}, "
+            "D / median edge {:.1f}; in-section edges median {:.3f}; slab {} nodes, "
+            "equilateral-section nodes per diameter {:.1f}\n",
+            m.source, m.num_nodes(), m.num_nodes() / (area * L) * h * h * h, len[len.size() / 2],
+            len[len.size() / 10], len[9 * len.size() / 10], s.nodes_per_diameter / len[len.size() / 2],
+            section.empty() ? 0.0 : section[section.size() / 2], slab,
+            2 * R * std::sqrt(std::sqrt(3.0) / 2 * slab / area));
       MPI_Finalize();
       return 0;
     }
@@ -111,19 +125,12 @@ int main(int argc, char** argv) {
       MPI_Finalize();
       return 0;
     }
-    valsalva::validation::WomersleySetup s;
-    s.womersley = std::stod(get("wo", "17"));
-    s.nodes_per_diameter = std::stod(get("npd", "10"));
     s.cfl = std::stod(get("cfl", "0.4"));
     s.poisson_tolerance = std::stod(get("tol", "1e-10"));
-    s.length_in_diameters = std::stod(get("length", "2"));
     s.pressure_damping = get("damping", "1") != "0";
     s.stiffness_viscous = get("stiffness", "0") != "0";
     s.sample_period = std::stoi(get("period", "3"));
     s.unscaled_inlet = get("unscaled", "0") != "0";
-    s.mesh_size_factor = std::stod(get("size_factor", "1"));
-    s.mesh.wall_size = std::stod(get("wall_size", "0"));
-    s.mesh.wall_distance = std::stod(get("wall_distance", "0"));
     const std::string outlet = get("outlet", "pressure");
     if (outlet != "pressure" && outlet != "convective")
       throw std::invalid_argument("--outlet " + outlet + ": expected pressure or convective");
@@ -135,11 +142,13 @@ int main(int argc, char** argv) {
     if (rank == 0) {
       fmt::print(
           "womersley_study: Wo {} D/{} cfl {} tol {:g} L {} D damping {} stiffness {} outlet {} "
-          "unscaled inlet {} size factor {} wall size {} over {}: "
-          "{} nodes, {} steps dt {:.3e}, max {:.4f} L2 {:.4f} transverse {:.4f}, {:.0f} s\n",
+          "unscaled inlet {} size factor {} wall size {} over {} extruded {} (dz {}, rows {} x "
+          "{} to {}): {} nodes, {} steps dt {:.3e}, max {:.4f} L2 {:.4f} transverse {:.4f}, "
+          "{:.0f} s\n",
           s.womersley, s.nodes_per_diameter, s.cfl, s.poisson_tolerance, s.length_in_diameters,
           s.pressure_damping, s.stiffness_viscous, outlet, s.unscaled_inlet, s.mesh_size_factor,
-          s.mesh.wall_size, s.mesh.wall_distance, r.nodes, r.steps, r.dt, r.max_error, r.l2_error,
+          s.mesh.wall_size, s.mesh.wall_distance, s.extruded, s.layer_height,
+          s.grading.layer_first, s.grading.layer_ratio, s.grading.layer_thickness, r.nodes, r.steps, r.dt, r.max_error, r.l2_error,
           r.transverse, r.wall);
       for (const auto& p : r.phases)
         fmt::print(

@@ -40,7 +40,7 @@ for ax, case in zip(axes.flat, cases):
                 color=colour, lw=1, label=f"t = {t:.3f} s")
     lv = levels[case]
     ax.set_title(f"Wo {float(lv['wo']):g}, D/{float(lv['nodes_per_diameter']):g}, "
-                 f"{lv['outlet']} outlet\nmax err {100 * float(lv['max_error']):.2f} %, "
+                 f"{lv['mesh']} mesh ({lv['nodes']} nodes), {lv['outlet']} outlet\nmax err {100 * float(lv['max_error']):.2f} %, "
                  f"L2 {100 * float(lv['l2_error']):.2f} % of u_peak", fontsize=9)
     ax.set_xlabel("signed r / R")
     ax.set_ylabel("u_z / u_peak")

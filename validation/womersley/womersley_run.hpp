@@ -1,5 +1,6 @@
 // One Womersley pipe run (shared by the validation case and the tests): a rigid straight pipe
-// (Gmsh tetrahedra, io/pipe_generator.hpp) with a Womersley-profile sine inflow
+// (Gmsh tetrahedra: 3D Delaunay, io/pipe_generator.hpp, or an extruded disk,
+// io/extruded_pipe_generator.hpp) with a Womersley-profile sine inflow
 // Q(t) = Q0 (1 + sin(2 pi t / T)), no-slip wall and an outlet, started from the exact solution
 // (flow/womersley.hpp; velocity and the linear pressure of G(0)) so that the viscous transient
 // of a start from rest, R^2 / (14.7 nu) = 3.1 s at Wo = 17, does not hide the discretisation
@@ -20,6 +21,7 @@
 #include "flow/boundary_conditions.hpp"
 #include "flow/local_mesh.hpp"
 #include "flow/womersley.hpp"
+#include "io/extruded_pipe_generator.hpp"
 #include "io/pipe_generator.hpp"
 
 namespace valsalva::validation {
@@ -42,6 +44,11 @@ struct WomersleySetup {
   bool unscaled_inlet = false;     // flow::BoundarySpec::unscaled_profile
   double mesh_size_factor = 1;     // Gmsh's size = factor * D / nodes_per_diameter
   io::PipeMeshOptions mesh;        // wall sizes are given in units of that Gmsh size
+  // The mesh: false = Gmsh's 3D Delaunay tetrahedra (io/pipe_generator.hpp, `mesh`), true = a
+  // Gmsh disk extruded into prism layers split into tetrahedra (io/extruded_pipe_generator.hpp).
+  bool extruded = false;
+  double layer_height = 1;      // extruded: the layers' height in units of the Gmsh size
+  io::DiskWallGrading grading;  // extruded: sizes in units of the Gmsh size
 };
 
 struct PhaseSample {
@@ -49,8 +56,8 @@ struct PhaseSample {
   double max_error = 0;   // max |u_z - u_exact| / u_peak over the slab
   double l2_error = 0;    // volume-weighted RMS of u_z - u_exact over the slab / u_peak
   double transverse = 0;  // max |u_x, u_y| / u_peak over the slab
-  // Mean flux over the middle third, sum V_j u_z / (L / 3), of the run and of the exact nodal
-  // values, and the imposed Q(t), m^3/s.
+  // Mean flux over the middle third, sum V_j u_z / (sum V_j / pi R^2), of the run and of the
+  // exact nodal values, and the imposed Q(t), m^3/s.
   double mean_flux = 0, exact_mean_flux = 0, flow_rate = 0;
   std::vector<double> x, y, z, r, u, exact, ux, uy;  // slab nodes (owned, gathered on rank 0)
 };
@@ -70,6 +77,13 @@ struct WomersleyResult {
   std::vector<double> final_velocity, final_pressure;
   double max_divergence = 0;
 };
+
+// The pipe radius of a Womersley number (the fluid and period of the runs), m.
+double womersley_radius(double womersley);
+
+// The pipe mesh of a set-up, the same on every rank of `comm` (collective). Throws as the
+// generators do.
+flow::Mesh womersley_mesh(const WomersleySetup& setup, MPI_Comm comm);
 
 // Collective over `comm`.
 WomersleyResult run_womersley(const WomersleySetup& setup, MPI_Comm comm);
