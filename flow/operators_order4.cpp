@@ -84,8 +84,7 @@ void Order4Operators::viscous(double nu, const VectorField& v, const TensorField
     const auto [j, k] = mesh_.edges[e];
     const Eigen::Vector3d& d = mesh_.edge_vector[e];
     Eigen::Vector3d hermite;
-    for (int c = 0; c < 3; ++c)
-      hermite[c] = d.dot((hessian_[k][c] - hessian_[j][c]) * d);
+    for (int c = 0; c < 3; ++c) hermite[c] = d.dot((hessian_[k][c] - hessian_[j][c]) * d);
     const Eigen::Vector3d f = weights_[e] * (v[k] - v[j] - hermite / 12.0);
     out[j] += f;
     out[k] -= f;

@@ -53,8 +53,8 @@ class Order4Operators {
  private:
   const LocalMesh& mesh_;
   std::vector<double> weights_;
-  VectorField grad_s_;                                  // scalar gradient
-  TensorField grad_v_;                                  // vector gradient
+  VectorField grad_s_;                                   // scalar gradient
+  TensorField grad_v_;                                   // vector gradient
   std::vector<std::array<Eigen::Matrix3d, 3>> hessian_;  // per velocity component
 };
 

@@ -23,8 +23,8 @@ void check_grading(const DiskWallGrading& g, double size) {
     throw std::invalid_argument(fmt::format(
         "triangulate_disk: wall_size {} needs wall_distance > 0 and wall_size < size {}",
         g.wall_size, size));
-  if (g.layer_first > 0 && !(g.layer_thickness >= g.layer_first && g.layer_ratio >= 1 &&
-                             std::isfinite(g.layer_ratio)))
+  if (g.layer_first > 0 &&
+      !(g.layer_thickness >= g.layer_first && g.layer_ratio >= 1 && std::isfinite(g.layer_ratio)))
     throw std::invalid_argument(fmt::format(
         "triangulate_disk: layer_first {} needs layer_thickness >= it and layer_ratio >= 1",
         g.layer_first));
@@ -98,7 +98,8 @@ Disk triangulate_disk(double radius, double size, const DiskWallGrading& grading
       for (int a : t) renumber[a] = 0;
     std::vector<Eigen::Vector2d> kept;
     for (std::size_t a = 0; a < disk.nodes.size(); ++a)
-      if (renumber[a] == 0) renumber[a] = static_cast<int>(kept.size()), kept.push_back(disk.nodes[a]);
+      if (renumber[a] == 0)
+        renumber[a] = static_cast<int>(kept.size()), kept.push_back(disk.nodes[a]);
     for (auto& t : disk.triangles)
       for (int& a : t) a = renumber[a];
     disk.nodes = std::move(kept);
@@ -107,8 +108,8 @@ Disk triangulate_disk(double radius, double size, const DiskWallGrading& grading
     gmsh::model::mesh::getElements(types, other_tags, other_nodes, 2);
     for (int type : types)
       if (type != 2)
-        throw MeshFileError(fmt::format("{}: Gmsh gave 2D elements of type {}, not only triangles",
-                                        source, type));
+        throw MeshFileError(
+            fmt::format("{}: Gmsh gave 2D elements of type {}, not only triangles", source, type));
     return disk;
   });
 }

@@ -48,9 +48,9 @@ flow::Mesh generate_extruded_pipe_mesh(const ExtrudedPipeSpec& s, MPI_Comm comm)
       throw std::invalid_argument(fmt::format(
           "generate_extruded_pipe_mesh: {} must be positive and finite, got {}", name, value));
   if (!(s.layer_height >= 0) || !std::isfinite(s.layer_height))
-    throw std::invalid_argument(fmt::format(
-        "generate_extruded_pipe_mesh: layer_height must be >= 0 and finite, got {}",
-        s.layer_height));
+    throw std::invalid_argument(
+        fmt::format("generate_extruded_pipe_mesh: layer_height must be >= 0 and finite, got {}",
+                    s.layer_height));
   const double dz = s.layer_height > 0 ? s.layer_height : s.target_size;
   const int layers = std::max(1, static_cast<int>(std::lround(s.length / dz)));
   const std::string source = fmt::format(

@@ -138,7 +138,7 @@ Errors measure(const Built& m, bool order4, int n) {
   return e;
 }
 
-double order(const Errors& a, const Errors& b, Norms Errors::* term, bool l2) {
+double order(const Errors& a, const Errors& b, Norms Errors::*term, bool l2) {
   const Norms &na = a.*term, &nb = b.*term;
   return test::observed_order(l2 ? na.l2 : na.max, l2 ? nb.l2 : nb.max, a.h, b.h);
 }
@@ -165,9 +165,9 @@ TEST_CASE("4th-order operators: observed orders on a smooth periodic field") {
                       << order(a, b, &Errors::grad, false) << "; div "
                       << order(a, b, &Errors::div, true) << ", " << order(a, b, &Errors::div, false)
                       << "; viscous " << order(a, b, &Errors::visc, true) << ", "
-                      << order(a, b, &Errors::visc, false) << " (2nd-order operators: "
-                      << order(e2[1], e2[2], &Errors::grad, true) << ", "
-                      << order(e2[1], e2[2], &Errors::div, true) << ", "
+                      << order(a, b, &Errors::visc, false)
+                      << " (2nd-order operators: " << order(e2[1], e2[2], &Errors::grad, true)
+                      << ", " << order(e2[1], e2[2], &Errors::div, true) << ", "
                       << order(e2[1], e2[2], &Errors::visc, true) << ")");
     if (kind.asserted) {
       for (auto term : {&Errors::grad, &Errors::div, &Errors::visc}) {

@@ -47,8 +47,8 @@ TEST_CASE("pressure damping removes the odd-even pressure mode in one step, and 
     }
     const double spread = local.comm.max(hi) + local.comm.max(-lo);
     change = local.comm.max(change), speed = local.comm.max(speed);
-    MESSAGE("damping " << damping << ": pressure spread " << spread << ", max |p - p0| "
-                       << change << ", max |u| " << speed);
+    MESSAGE("damping " << damping << ": pressure spread " << spread << ", max |p - p0| " << change
+                       << ", max |u| " << speed);
     if (damping) {
       CHECK(spread < 1e-8);  // from 2: the mode is gone
     } else {

@@ -2,7 +2,6 @@
 // their surfaces, inlet/outlet areas and volume against the inscribed chord polygon of the
 // circle, and the wall grading's first row of nodes where it was asked for.
 #include <doctest/doctest.h>
-
 #include <mpi.h>
 
 #include <cmath>
@@ -44,7 +43,8 @@ Measured measure(const flow::Mesh& mesh, const io::ExtrudedPipeSpec& s) {
   }
   for (flow::GlobalIndex n = 0; n < mesh.num_nodes(); ++n)
     if (!on_wall[n])
-      m.first_row = std::min(m.first_row, s.radius - std::hypot(mesh.nodes[n].x(), mesh.nodes[n].y()));
+      m.first_row =
+          std::min(m.first_row, s.radius - std::hypot(mesh.nodes[n].x(), mesh.nodes[n].y()));
   return m;
 }
 
@@ -57,9 +57,9 @@ TEST_CASE("extruded pipe: tetrahedra, patches, chord-polygon areas and volume, w
   isotropic.grading.wall_size = 0.001, isotropic.grading.wall_distance = 0.002;
   rows.grading.layer_first = 0.0004, rows.grading.layer_ratio = 1.3;
   rows.grading.layer_thickness = 0.0015;
-  for (const auto& [name, spec, first_row] :
-       {std::tuple{std::string("ungraded"), base, 0.0}, {"isotropic", isotropic, 0.0},
-        {"rows", rows, rows.grading.layer_first}}) {
+  for (const auto& [name, spec, first_row] : {std::tuple{std::string("ungraded"), base, 0.0},
+                                              {"isotropic", isotropic, 0.0},
+                                              {"rows", rows, rows.grading.layer_first}}) {
     CAPTURE(name);
     const auto mesh = io::generate_extruded_pipe_mesh(spec);
     MESSAGE(name, ": ", mesh.num_nodes(), " nodes, ", mesh.num_cells(), " tetrahedra");
@@ -89,7 +89,8 @@ TEST_CASE("extruded pipe: tetrahedra, patches, chord-polygon areas and volume, w
     if (first_row > 0)
       CHECK(m.first_row == doctest::Approx(first_row).epsilon(0.02));
     else
-      CHECK(m.first_row > 0.3 * (spec.grading.wall_size > 0 ? spec.grading.wall_size : spec.target_size));
+      CHECK(m.first_row >
+            0.3 * (spec.grading.wall_size > 0 ? spec.grading.wall_size : spec.target_size));
     if (spec.grading.wall_size > 0) CHECK(m.first_row < spec.grading.wall_size);
     // Gmsh's Delaunay disks repeat; its BoundaryLayer rows do not (hence rank 0's disk is sent
     // to the other ranks, checked at np 2 below).

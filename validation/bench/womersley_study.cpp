@@ -35,11 +35,11 @@ int main(int argc, char** argv) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   try {
     const auto o = valsalva::bench::parse_options(
-        argc, argv,
-        {"wo", "npd", "cfl", "tol", "length", "damping", "stiffness", "outlet", "csv", "period",
-         "unscaled", "periodic", "split", "mesh_stats", "algorithm3d", "size_factor", "flux_driven",
-         "wall_size", "wall_distance", "extruded", "dz", "bl_first", "bl_ratio",
-         "bl_thickness"});
+        argc, argv, {"wo",          "npd",         "cfl",       "tol",           "length",
+                     "damping",     "stiffness",   "outlet",    "csv",           "period",
+                     "unscaled",    "periodic",    "split",     "mesh_stats",    "algorithm3d",
+                     "size_factor", "flux_driven", "wall_size", "wall_distance", "extruded",
+                     "dz",          "bl_first",    "bl_ratio",  "bl_thickness"});
     const auto get = [&](const char* key, const char* def) {
       return o.count(key) ? o.at(key) : std::string(def);
     };
@@ -88,7 +88,8 @@ int main(int argc, char** argv) {
             "D / median edge {:.1f}; in-section edges median {:.3f}; slab {} nodes, "
             "equilateral-section nodes per diameter {:.1f}\n",
             m.source, m.num_nodes(), m.num_nodes() / (area * L) * h * h * h, len[len.size() / 2],
-            len[len.size() / 10], len[9 * len.size() / 10], s.nodes_per_diameter / len[len.size() / 2],
+            len[len.size() / 10], len[9 * len.size() / 10],
+            s.nodes_per_diameter / len[len.size() / 2],
             section.empty() ? 0.0 : section[section.size() / 2], slab,
             2 * R * std::sqrt(std::sqrt(3.0) / 2 * slab / area));
       MPI_Finalize();
@@ -147,9 +148,9 @@ int main(int argc, char** argv) {
           "{:.0f} s\n",
           s.womersley, s.nodes_per_diameter, s.cfl, s.poisson_tolerance, s.length_in_diameters,
           s.pressure_damping, s.stiffness_viscous, outlet, s.unscaled_inlet, s.mesh_size_factor,
-          s.mesh.wall_size, s.mesh.wall_distance, s.extruded, s.layer_height,
-          s.grading.layer_first, s.grading.layer_ratio, s.grading.layer_thickness, r.nodes, r.steps, r.dt, r.max_error, r.l2_error,
-          r.transverse, r.wall);
+          s.mesh.wall_size, s.mesh.wall_distance, s.extruded, s.layer_height, s.grading.layer_first,
+          s.grading.layer_ratio, s.grading.layer_thickness, r.nodes, r.steps, r.dt, r.max_error,
+          r.l2_error, r.transverse, r.wall);
       for (const auto& p : r.phases)
         fmt::print(
             "  t {:.4f}: max {:.4f} L2 {:.4f} transverse {:.4f}; (Q - mean flux) / (pi R^2 "

@@ -125,7 +125,8 @@ void run(const Context& ctx, Report& report) {
       const double conv_min = kind.uniform ? (order4 ? 3.5 : 1.9) : 0.8;
       report.add(label + ": truncation order, convection",
                  order(ta.convection, tb.convection, a.h, b.h), conv_min, 0.0, Check::at_least);
-      const std::string ops = kind.name + (order4 ? " 4th-order operators" : " 2nd-order operators");
+      const std::string ops =
+          kind.name + (order4 ? " 4th-order operators" : " 2nd-order operators");
       if (kind.uniform)
         report.add(ops + ": truncation order, viscous", order(ta.viscous, tb.viscous, a.h, b.h),
                    order4 ? 3.5 : 1.9, 0.0, Check::at_least);

@@ -26,8 +26,8 @@ struct TgvSpec {
   double t_end = 1.0;
   double cfl = 0.5;   // dt = t_end / ceil(t_end / (cfl h / U))
   double dt_max = 0;  // > 0: dt is also at most this (a time error below the spatial one)
-  std::string scheme = "central2";  // flow::make_convection_scheme
-  bool stiffness_viscous = false;   // flow::ProjectionOptions::stiffness_viscous
+  std::string scheme = "central2";      // flow::make_convection_scheme
+  bool stiffness_viscous = false;       // flow::ProjectionOptions::stiffness_viscous
   bool fourth_order_operators = false;  // flow::ProjectionOptions::fourth_order_operators
   flow::PoissonOptions poisson;
 };
