@@ -25,8 +25,11 @@
 //   Truncation orders (n 32 -> 64): viscous 3.99 hexa, 3.98 tetra; pressure gradient 3.98
 //   both; convection 3.99 / 3.98. Perturbed tetra: pressure gradient 0.99, viscous O(1)
 //   (2.0e-3, the P1 weights' error).
-//   n 128 (the full case's 4th level) not yet measured: hexa needs 5120 steps there
-//   (~30 min on the shared machine).
+//   `valsalva validate taylor_green` (4 levels 16..128, all checks pass, 1497 s on the shared
+//   machine): central4 + 4th-order operators L2 at n 128: hexa 2.82e-9, tetra 2.68e-7,
+//   perturbed 2.95e-4; orders 64 -> 128 (L2): hexa 4.00, tetra 3.99 (Linf 3.99), perturbed
+//   2.06 (Linf 2.08); central2 hexa 2.00, tetra 2.00, perturbed 2.28. Steps at n 128: 5120
+//   (hexa, dt 1.95e-4), 1280 (tetra).
 //   build/bin/bench_taylor_green_study --cell hexa|tetra [--perturbation 0.2] --n N --cfl 0.1
 //     --dt_max DT
 // CSV: errors.csv (error vs h and vs wall time), terms.csv; plot.py makes taylor_green.png.
