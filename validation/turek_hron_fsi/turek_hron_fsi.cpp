@@ -51,6 +51,7 @@
 //   part=fsi1|fsi3|timing   only one of the two cases, or the cost run: 300 FSI3 steps at the
 //                           coarse mesh with the per-part profile (timing.csv), no FSI1
 //   fsi1_level=i            FSI1 on level i only (0, 1, 2), also the timing run's level
+//   fsi1_size_near=S, fsi1_size_far=F   FSI1 on one mesh of those sizes (far default 0.04)
 //   fsi1_t_end=T            FSI1 end time (default 2.5 s; quick 1.4 s)
 //   fsi1_ramp=T             FSI1 from rest with the inflow ramp over T s
 //   fsi3_level=i            FSI3 on level i (default 0, the coarse mesh)
@@ -181,21 +182,33 @@ void run_fsi1(const Context& ctx, Report& report, int rank) {
         "err_ux,err_uy,err_drag,err_lift,drag_spread_last_window,max_marker_w,balance_error,"
         "wall_s\n");
   }
-  // fsi1_level=i: level i only (0-based; one row of the table per run).
+  // fsi1_level=i: level i only (0-based; one row of the table per run); fsi1_size_near=S
+  // (fsi1_size_far): one level of those sizes, reported as level 4.
+  std::vector<FsiLevel> levels = kLevels;
   const int only = ctx.option_int("fsi1_level", -1);
-  const int first = only < 0 ? 0 : only;
-  const int n = ctx.quick ? 1 : (only < 0 ? static_cast<int>(kLevels.size()) : first + 1);
+  int first = only < 0 ? 0 : only;
+  int n = ctx.quick ? 1 : (only < 0 ? static_cast<int>(kLevels.size()) : first + 1);
+  if (!ctx.option("fsi1_size_near").empty()) {
+    levels.push_back({ctx.option_real("fsi1_size_near", 0.01),
+                      ctx.option_real("fsi1_size_far", 0.04), kLevels.back().layers});
+    if (levels.back().size_far < levels.back().size_near)
+      throw std::invalid_argument(
+          fmt::format("turek_hron_fsi: fsi1_size_far = {} is below fsi1_size_near = {}",
+                      levels.back().size_far, levels.back().size_near));
+    first = static_cast<int>(kLevels.size());
+    n = first + 1;
+  }
   FsiResult r;
   Steady s;
   for (int l = first; l < n; ++l) {
     const double t_end = ctx.option_real("fsi1_t_end", ctx.quick ? 1.4 : 2.5);
-    r = fsi1_level(ctx, kLevels[l], t_end);
+    r = fsi1_level(ctx, levels[l], t_end);
     s = steady_values(r, ctx.quick ? 0.3 : 0.75);
     if (rank == 0) {
       csv->print(
           "{},{},{},{},{:.4e},{:.4e},{},{:.3f},{:.6e},{:.6e},{:.6f},{:.6f},{:.4f},{:.4f},{:.4f},"
           "{:.4f},{:.2e},{:.2e},{:.2e},{:.1f}\n",
-          kLevels[l].size_near, kLevels[l].size_far, r.nodes, r.markers, r.dt, r.dt_bound, r.steps,
+          levels[l].size_near, levels[l].size_far, r.nodes, r.markers, r.dt, r.dt_bound, r.steps,
           r.samples.back().t, s.ux, s.uy, s.drag, s.lift, s.ux / ux_ref - 1, s.uy / uy_ref - 1,
           s.drag / drag_ref - 1, s.lift / lift_ref - 1, s.drag_spread, r.max_w, r.balance_error,
           r.wall);
@@ -204,7 +217,7 @@ void run_fsi1(const Context& ctx, Report& report, int rank) {
       fmt::print(
           "FSI1 level {} (size {}): {} nodes, {} markers, dt {:.3e} (bound {:.3e}), {} steps to "
           "t = {:.2f}: ux_A {:.4e} uy_A {:.4e} drag {:.4f} lift {:.4f}, {:.0f} s\n",
-          l + 1, kLevels[l].size_near, r.nodes, r.markers, r.dt, r.dt_bound, r.steps,
+          l + 1, levels[l].size_near, r.nodes, r.markers, r.dt, r.dt_bound, r.steps,
           r.samples.back().t, s.ux, s.uy, s.drag, s.lift, r.wall);
     }
   }
@@ -227,9 +240,9 @@ void run_fsi1(const Context& ctx, Report& report, int rank) {
                Check::at_most);
     return;
   }
-  report.add(fmt::format("FSI1 uy_A [m], size {}", kLevels[n - 1].size_near), s.uy, uy_ref,
+  report.add(fmt::format("FSI1 uy_A [m], size {}", levels[n - 1].size_near), s.uy, uy_ref,
              0.05 * uy_ref);
-  report.add(fmt::format("FSI1 drag [N/m], size {}", kLevels[n - 1].size_near), s.drag, drag_ref,
+  report.add(fmt::format("FSI1 drag [N/m], size {}", levels[n - 1].size_near), s.drag, drag_ref,
              0.05 * drag_ref);
   report.add("FSI1 steady: drag (max - min) / mean over the last 0.75 s", s.drag_spread, 0, 0.01,
              Check::at_most);
@@ -351,6 +364,12 @@ Case turek_hron_fsi_case() {
                            "FSI1 on that mesh only (default: all three); also the timing "
                            "run's mesh (default 0)",
                            0, kLastLevel),
+       CaseOption::real("fsi1_size_near",
+                        "FSI1 on one mesh of this size near the cylinder and the bar, m (instead "
+                        "of the levels)",
+                        2e-3, 0.05),
+       CaseOption::real("fsi1_size_far",
+                        "with fsi1_size_near: the far-field size, m (default 0.04)", 2e-3, 0.1),
        CaseOption::real("fsi1_t_end", "FSI1 end time in s (default 2.5; quick 1.4)", 0.01, 1000),
        CaseOption::real("fsi1_ramp",
                         "FSI1 from rest with the inflow ramped over that many s (default 0: "
