@@ -32,11 +32,15 @@
 //               roma3 3 h 18.98 (+33 %), peskin4 2.5 h 18.55 (+30 %), peskin4 2 h 18.44 (+29 %)
 //   peskin4 3 h: size 0.02 / 0.014 / 0.01: 19.08 / 17.15 / 16.49 (+33 / +20 / +15 %; 4 h: +51 /
 //               +27 / +22 %), drag spread over the last window 2 / 5 / 6 %
+//   peskin4 3 h, size 0.007 / far 0.03 (stop 15; `--set part=fsi1 --set fsi1_size_near=0.007
+//               --set fsi1_size_far=0.03 --set kernel_width=3`, 19710 nodes, 3535 markers, 35792
+//               steps, ~2100 s CPU): drag 15.83 (+10.7 %), lift 0.7463 (-2.3 %), ux_A 2.51e-5
+//               (+10.6 %), uy_A 1.078e-3 (+31 %), drag spread over the last window 6 %
 // The narrower support removes about a third of the excess, but the excess saturates near +29 %
 // at size 0.02 as the width goes to 2 h: the kernel width is not the only limit, the bar's
-// resolution (0.02 thick = 1-2 fluid cells) is. At 3 h the excess falls about linearly in h
-// (+33, +20, +15 %), so 5 % would need size ~0.003 near the bar: 10x the nodes of size 0.01
-// near the bar and 3x smaller steps (coupling bound dt ~ h), about 30x the 550 s of size 0.01.
+// resolution (0.02 thick = 1-2 fluid cells) is. At 3 h the excess falls at first order in h
+// (+33, +20, +15, +10.7 %; 0.01 -> 0.007: order 0.95), so 5 % needs size ~0.0033 near the bar:
+// ~4.5x the nodes of size 0.007 and ~2x the steps (coupling bound dt ~ h), about 5-6 CPU hours.
 // The default stays 4 h (the scene default, and the quick check's plateau).
 // FSI3 at size 0.02 to 6 s: uy_A amplitude 34.6 mm over the last period (+0.6 %), but 24..50 mm
 // from period to period (mean 38.1, std 8.3), 5.54 Hz (+4.5 %); forces spiky (drag 853 +- 748,
