@@ -170,6 +170,31 @@ FsiSpec fsi3_spec(const Context& ctx, const FsiLevel& level, double t_end) {
   return s;
 }
 
+// The FSI1 meshes to run, numbered as in the table (1..3): fsi1_level=i level i only (0-based);
+// fsi1_size_near=S (fsi1_size_far=F) one mesh of those sizes instead, numbered 4; quick: level 1.
+struct NumberedLevel {
+  int number;
+  FsiLevel level;
+};
+
+std::vector<NumberedLevel> fsi1_levels(const Context& ctx) {
+  if (!ctx.option("fsi1_size_near").empty()) {
+    const FsiLevel own{ctx.option_real("fsi1_size_near", 0.01),
+                       ctx.option_real("fsi1_size_far", 0.04), kLevels.back().layers};
+    if (own.size_far < own.size_near)
+      throw std::invalid_argument(
+          fmt::format("turek_hron_fsi: fsi1_size_far = {} is below fsi1_size_near = {}",
+                      own.size_far, own.size_near));
+    return {{kLastLevel + 2, own}};
+  }
+  if (ctx.quick) return {{1, kLevels[0]}};
+  const int only = ctx.option_int("fsi1_level", -1);
+  std::vector<NumberedLevel> out;
+  for (int l = 0; l <= kLastLevel; ++l)
+    if (only < 0 || l == only) out.push_back({l + 1, kLevels[l]});
+  return out;
+}
+
 void run_fsi1(const Context& ctx, Report& report, int rank) {
   const auto dir = ctx.refdata_dir / "turek_hron_fsi";
   const auto ref = [&](const char* q) {
@@ -186,42 +211,27 @@ void run_fsi1(const Context& ctx, Report& report, int rank) {
         "err_ux,err_uy,err_drag,err_lift,drag_spread_last_window,max_marker_w,balance_error,"
         "wall_s\n");
   }
-  // fsi1_level=i: level i only (0-based; one row of the table per run); fsi1_size_near=S
-  // (fsi1_size_far): one level of those sizes, reported as level 4.
-  std::vector<FsiLevel> levels = kLevels;
-  const int only = ctx.option_int("fsi1_level", -1);
-  int first = only < 0 ? 0 : only;
-  int n = ctx.quick ? 1 : (only < 0 ? static_cast<int>(kLevels.size()) : first + 1);
-  if (!ctx.option("fsi1_size_near").empty()) {
-    levels.push_back({ctx.option_real("fsi1_size_near", 0.01),
-                      ctx.option_real("fsi1_size_far", 0.04), kLevels.back().layers});
-    if (levels.back().size_far < levels.back().size_near)
-      throw std::invalid_argument(
-          fmt::format("turek_hron_fsi: fsi1_size_far = {} is below fsi1_size_near = {}",
-                      levels.back().size_far, levels.back().size_near));
-    first = static_cast<int>(kLevels.size());
-    n = first + 1;
-  }
+  const auto levels = fsi1_levels(ctx);
   FsiResult r;
   Steady s;
-  for (int l = first; l < n; ++l) {
+  for (const auto& [number, level] : levels) {
     const double t_end = ctx.option_real("fsi1_t_end", ctx.quick ? 1.4 : 2.5);
-    r = fsi1_level(ctx, levels[l], t_end);
+    r = fsi1_level(ctx, level, t_end);
     s = steady_values(r, ctx.quick ? 0.3 : 0.75);
     if (rank == 0) {
       csv->print(
           "{},{},{},{},{:.4e},{:.4e},{},{:.3f},{:.6e},{:.6e},{:.6f},{:.6f},{:.4f},{:.4f},{:.4f},"
           "{:.4f},{:.2e},{:.2e},{:.2e},{:.1f}\n",
-          levels[l].size_near, levels[l].size_far, r.nodes, r.markers, r.dt, r.dt_bound, r.steps,
+          level.size_near, level.size_far, r.nodes, r.markers, r.dt, r.dt_bound, r.steps,
           r.samples.back().t, s.ux, s.uy, s.drag, s.lift, s.ux / ux_ref - 1, s.uy / uy_ref - 1,
           s.drag / drag_ref - 1, s.lift / lift_ref - 1, s.drag_spread, r.max_w, r.balance_error,
           r.wall);
       csv->flush();
-      write_series(ctx, fmt::format("fsi1_series_level{}.csv", l + 1), r);
+      write_series(ctx, fmt::format("fsi1_series_level{}.csv", number), r);
       fmt::print(
           "FSI1 level {} (size {}): {} nodes, {} markers, dt {:.3e} (bound {:.3e}), {} steps to "
           "t = {:.2f}: ux_A {:.4e} uy_A {:.4e} drag {:.4f} lift {:.4f}, {:.0f} s\n",
-          l + 1, levels[l].size_near, r.nodes, r.markers, r.dt, r.dt_bound, r.steps,
+          number, level.size_near, r.nodes, r.markers, r.dt, r.dt_bound, r.steps,
           r.samples.back().t, s.ux, s.uy, s.drag, s.lift, r.wall);
     }
   }
@@ -244,10 +254,10 @@ void run_fsi1(const Context& ctx, Report& report, int rank) {
                Check::at_most);
     return;
   }
-  report.add(fmt::format("FSI1 uy_A [m], size {}", levels[n - 1].size_near), s.uy, uy_ref,
+  report.add(fmt::format("FSI1 uy_A [m], size {}", levels.back().level.size_near), s.uy, uy_ref,
              0.05 * uy_ref);
-  report.add(fmt::format("FSI1 drag [N/m], size {}", levels[n - 1].size_near), s.drag, drag_ref,
-             0.05 * drag_ref);
+  report.add(fmt::format("FSI1 drag [N/m], size {}", levels.back().level.size_near), s.drag,
+             drag_ref, 0.05 * drag_ref);
   report.add("FSI1 steady: drag (max - min) / mean over the last 0.75 s", s.drag_spread, 0, 0.01,
              Check::at_most);
 }
