@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "app/command_close_leaflets.hpp"
 #include "app/command_compare_piv.hpp"
 #include "app/command_psd.hpp"
 #include "app/commands.hpp"
@@ -59,6 +60,8 @@ int main(int argc, char** argv) {
   auto* piv = valsalva::app::add_compare_piv(cli, compare_piv);
   std::function<int()> psd;
   auto* psd_cmd = valsalva::app::add_psd(cli, psd);
+  std::function<int()> close_leaflets;
+  auto* close_cmd = valsalva::app::add_close_leaflets(cli, close_leaflets);
 
   int code = 0;
   try {
@@ -77,6 +80,7 @@ int main(int argc, char** argv) {
     if (*docs) code = valsalva::app::docs_scenes();
     if (*piv) code = compare_piv();
     if (*psd_cmd) code = psd();
+    if (*close_cmd) code = close_leaflets();
   } catch (const std::exception& e) {
     // Inputs are read on every rank, so every rank fails alike; with several ranks a failure on
     // one rank alone must not leave the others waiting in a collective.

@@ -1,0 +1,151 @@
+#include "app/command_close_leaflets.hpp"
+
+#include <fmt/format.h>
+#include <mpi.h>
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+#include <toml++/toml.h>
+
+#include "io/solid_gmsh_reader.hpp"
+#include "io/solid_gmsh_writer.hpp"
+#include "valve/leaflet_closing.hpp"
+
+namespace valsalva::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Options {
+  std::string leaflets, out;
+  double annulus_radius = 0;
+  bool overwrite = false;
+  valve::ClosingOptions closing;
+};
+
+fs::path report_path(const fs::path& out) {
+  fs::path p = out;
+  p.replace_extension(".closing.toml");
+  return p;
+}
+
+toml::array vec(const structure::Vec3& v) { return toml::array{v.x(), v.y(), v.z()}; }
+
+toml::table report_table(const Options& o, const valve::ClosingResult& r) {
+  const auto& n = r.newton;
+  toml::table t{{"leaflets_file", o.leaflets},
+                {"pressure_Pa", o.closing.pressure},
+                {"converged", n.converged},
+                {"load_steps", n.steps},
+                {"newton_iterations", n.iterations},
+                {"step_cuts", n.cuts},
+                {"final_relative_residual", n.last_residuals.empty() ? -1.0 : n.last_residuals.back()},
+                {"linear_solver", n.solver},
+                {"seconds", r.seconds},
+                {"thickness_m", r.thickness},
+                {"coaptation_height_m", r.pairs.coaptation_height},
+                {"min_mid_surface_distance_m", r.pairs.min_distance},
+                {"crossing_triangle_pairs", r.pairs.crossings},
+                {"orifice_area_m2", r.orifice.area},
+                {"orifice_raster_error_m2", r.orifice.raster_error},
+                {"opening_ratio", r.orifice.opening_ratio},
+                {"max_von_mises_Pa", r.stress.max},
+                {"von_mises_p99_Pa", r.stress.at_percentile},
+                {"max_von_mises_node", r.stress.max_node},
+                {"max_von_mises_position_m", vec(r.max_stress_position)},
+                {"max_von_mises_leaflet", r.max_stress_leaflet + 1},
+                {"max_von_mises_distance_to_attachment_m", r.max_stress_to_attachment}};
+  toml::array mids;
+  for (std::size_t k = 0; k < r.free_edge_midpoints.size(); ++k) {
+    const auto& m = r.free_edge_midpoints[k];
+    mids.push_back(toml::table{{"leaflet", int(k) + 1},
+                               {"node", m.node},
+                               {"radius_m", m.radial},
+                               {"axial_m", m.axial}});
+  }
+  t.insert("free_edge_midpoint", mids);
+  toml::array pairs;
+  for (const auto& p : r.pairs.pairs)
+    pairs.push_back(toml::table{{"leaflets", toml::array{p.a + 1, p.b + 1}},
+                                {"crossings", p.crossings},
+                                {"min_distance_m", p.min_distance},
+                                {"coaptation_height_m", p.coaptation_height}});
+  t.insert("pair", pairs);
+  return t;
+}
+
+void print_summary(const valve::ClosingResult& r) {
+  const auto& n = r.newton;
+  fmt::print("close-leaflets: {} leaflets, {} load steps, {} Newton iterations, {} cuts, {:.1f} s\n",
+             r.leaflets.size(), n.steps, n.iterations, n.cuts, r.seconds);
+  for (std::size_t k = 0; k < r.free_edge_midpoints.size(); ++k)
+    fmt::print("  leaflet {}: free-edge midpoint at radius {:.3f} mm, height {:.3f} mm\n", k + 1,
+               1e3 * r.free_edge_midpoints[k].radial, 1e3 * r.free_edge_midpoints[k].axial);
+  fmt::print("  coaptation height {:.3f} mm; smallest mid-surface distance {:.4f} mm "
+             "(thickness {:.4f} mm); {} crossing triangle pairs\n",
+             1e3 * r.pairs.coaptation_height, 1e3 * r.pairs.min_distance, 1e3 * r.thickness,
+             r.pairs.crossings);
+  fmt::print("  geometric orifice area {:.4g} mm^2 (raster error {:.2g} mm^2), opening ratio {:.4g}\n",
+             1e6 * r.orifice.area, 1e6 * r.orifice.raster_error, r.orifice.opening_ratio);
+  fmt::print("  largest von Mises stress {:.4g} MPa at node {} of leaflet {}, {:.3f} mm from the "
+             "attachment\n",
+             1e-6 * r.stress.max, r.stress.max_node, r.max_stress_leaflet + 1,
+             1e3 * r.max_stress_to_attachment);
+}
+
+int run(const Options& o) {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank != 0) return 0;
+  const fs::path out(o.out), report = report_path(out);
+  if (out.extension() != ".msh")
+    throw std::invalid_argument(fmt::format("close-leaflets: --out {}: give a .msh file", o.out));
+  for (const fs::path& p : {out, report})
+    if (fs::exists(p) && !o.overwrite)
+      throw std::invalid_argument(fmt::format(
+          "close-leaflets: {} exists (give --overwrite to replace it)", p.string()));
+  if (!(o.annulus_radius > 0))
+    throw std::invalid_argument("close-leaflets: --annulus-radius must be > 0 (metres)");
+  const structure::SolidMesh mesh = io::read_solid_gmsh(o.leaflets);
+  structure::ValveFrame frame;
+  frame.annulus_radius = o.annulus_radius;
+  const valve::ClosingResult r = valve::close_leaflets(mesh, frame, o.closing);
+  if (!r.newton.converged)
+    throw std::runtime_error(fmt::format(
+        "close-leaflets: {}: the closing did not converge (reached {:.4g} of {} Pa after {} load "
+        "steps): {}; nothing written",
+        o.leaflets, r.newton.load_factor, o.closing.pressure, r.newton.steps, r.newton.diagnosis));
+  print_summary(r);
+  io::write_moved_solid_gmsh(o.leaflets, r.newton.x, out);
+  std::ofstream(report) << report_table(o, r) << "\n";
+  fmt::print("close-leaflets: wrote {} and {}\n", out.string(), report.string());
+  return 0;
+}
+
+}  // namespace
+
+CLI::App* add_close_leaflets(CLI::App& cli, std::function<int()>& action) {
+  auto o = std::make_shared<Options>();
+  auto* c = cli.add_subcommand(
+      "close-leaflets", "Close manufactured leaflets by a pressure on their aortic faces");
+  c->add_option("leaflets", o->leaflets, "Leaflet mesh (valsalva make-valve's leaflets.msh)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  c->add_option("--out", o->out, "Closed leaflet mesh to write (.msh)")->required();
+  c->add_option("--pressure", o->closing.pressure,
+                "Pressure on the aortic faces [Pa] (default 12400, 93 mmHg)");
+  c->add_option("--annulus-radius", o->annulus_radius,
+                "Radius of the annulus disc for the orifice area [m]");
+  c->add_option("--load-steps", o->closing.load_steps, "Initial pressure increments (default 10)");
+  c->add_option("--shear-modulus", o->closing.shear_modulus, "Neo-Hookean G [Pa] (2.4e6)");
+  c->add_option("--bulk-modulus", o->closing.bulk_modulus, "Neo-Hookean K [Pa] (1.6e6)");
+  c->add_flag("--overwrite", o->overwrite, "Replace CLOSED.msh and its report");
+  c->add_flag("--verbose", o->closing.verbose, "Print the Newton iterations");
+  action = [o] { return run(*o); };
+  return c;
+}
+
+}  // namespace valsalva::app

@@ -1,0 +1,142 @@
+#include "valve/leaflet_closing.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "structure/material.hpp"
+#include "structure/stress_recovery.hpp"
+
+namespace valsalva::valve {
+
+namespace {
+
+using structure::Vec3;
+
+void check(const ClosingOptions& o) {
+  auto require = [](bool ok, const char* what, double value, const char* limit) {
+    if (!ok)
+      throw std::invalid_argument(fmt::format("close-leaflets: {} = {} ({})", what, value, limit));
+  };
+  require(std::isfinite(o.pressure) && o.pressure > 0, "pressure", o.pressure,
+          "must be a positive number of pascals");
+  require(o.shear_modulus > 0, "shear modulus", o.shear_modulus, "must be > 0");
+  require(o.bulk_modulus > 0, "bulk modulus", o.bulk_modulus, "must be > 0");
+  require(o.load_steps >= 1 && o.load_steps <= 1000, "load steps", o.load_steps,
+          "must be in [1, 1000]");
+  require(o.rtol > 0 && o.rtol < 1, "tolerance", o.rtol, "must be in (0, 1)");
+  require(o.damping >= 0, "damping", o.damping, "must be >= 0");
+}
+
+// Mean distance between the centres of each aortic face and the opposite face of its element.
+double mean_thickness(const structure::SolidMesh& mesh, const std::vector<LeafletGroups>& ls) {
+  double sum = 0;
+  long n = 0;
+  const int nen = mesh.nodes_per_element();
+  std::vector<double> N(nen), dN(3 * nen);
+  for (const auto& l : ls)
+    for (const auto& f : mesh.surface_set(l.aortic_face)) {
+      const structure::HexFace hf = structure::hex_face(f.face);
+      Vec3 ends[2];
+      for (int s = 0; s < 2; ++s) {
+        Vec3 xi = Vec3::Zero();
+        xi[hf.axis] = s ? 1.0 : -1.0;
+        structure::hex_shape(mesh.order, xi, N, dN);
+        ends[s] = Vec3::Zero();
+        for (int a = 0; a < nen; ++a) ends[s] += N[a] * mesh.X.col(mesh.element_nodes(f.element)[a]);
+      }
+      sum += (ends[1] - ends[0]).norm();
+      ++n;
+    }
+  return sum / n;
+}
+
+// The free-edge node in the middle of the leaflet: closest in angle to the leaflet's centre
+// direction (mean in-plane direction of its attachment), then the middle one through the
+// thickness.
+int free_edge_midpoint(const structure::SolidMesh& mesh, const LeafletGroups& l,
+                       const structure::ValveBasis& b) {
+  Vec3 c = Vec3::Zero();
+  for (int n : mesh.node_set(l.attachment)) {
+    Vec3 p = b.to_local(mesh.X.col(n));
+    p.z() = 0;
+    c += p.normalized();
+  }
+  const double centre = std::atan2(c.y(), c.x());
+  auto angle_off = [&](int n) {
+    const Vec3 p = b.to_local(mesh.X.col(n));
+    return std::abs(std::remainder(std::atan2(p.y(), p.x()) - centre, 2 * M_PI));
+  };
+  const auto& edge = mesh.node_set(l.free_edge);
+  double best = std::numeric_limits<double>::infinity();
+  for (int n : edge) best = std::min(best, angle_off(n));
+  std::vector<std::pair<double, int>> row;  // (radius, node) of the nodes at that angle
+  for (int n : edge)
+    if (angle_off(n) <= best + 1e-6) {
+      const Vec3 p = b.to_local(mesh.X.col(n));
+      row.push_back({std::hypot(p.x(), p.y()), n});
+    }
+  std::sort(row.begin(), row.end());
+  return row[row.size() / 2].second;
+}
+
+}  // namespace
+
+ClosingResult close_leaflets(const structure::SolidMesh& mesh, const structure::ValveFrame& valve,
+                             const ClosingOptions& options) {
+  check(options);
+  const structure::ValveBasis basis = structure::valve_basis(valve);
+  ClosingResult r;
+  r.leaflets = leaflet_groups(mesh);
+  r.thickness = mean_thickness(mesh, r.leaflets);
+
+  const auto material = structure::make_neo_hookean(options.shear_modulus, options.bulk_modulus);
+  structure::SolidForces forces(mesh, *material);
+  structure::StaticProblem problem;
+  problem.forces = &forces;
+  for (const auto& l : r.leaflets) {
+    problem.dirichlet.push_back({mesh.node_set(l.attachment), {true, true, true}, {}});
+    // Positive pressure pushes into the solid: on the aortic face, towards the ventricle side.
+    problem.pressures.push_back({mesh.surface_set(l.aortic_face), options.pressure});
+  }
+  structure::NewtonOptions newton;
+  newton.load_steps = options.load_steps;
+  newton.damping = options.damping;
+  newton.rtol = options.rtol;
+  newton.max_relaxation_steps = options.max_relaxation_steps;
+  newton.verbose = options.verbose;
+  const auto t0 = std::chrono::steady_clock::now();
+  r.newton = structure::solve_static(problem, newton);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  const Eigen::Matrix3Xd& x = r.newton.x;
+  for (const auto& l : r.leaflets) {
+    FreeEdgeMidpoint m;
+    m.node = free_edge_midpoint(mesh, l, basis);
+    const Vec3 p = basis.to_local(x.col(m.node));
+    m.radial = std::hypot(p.x(), p.y());
+    m.axial = p.z();
+    r.free_edge_midpoints.push_back(m);
+  }
+  r.pairs = leaflet_pairs(mesh, x, r.leaflets, valve, 1.5 * r.thickness);
+  const structure::LeafletPositions all{&mesh, &x};
+  r.orifice = structure::geometric_orifice_area({&all, 1}, valve);
+  r.stress = structure::von_mises_summary(forces, x, 99);
+  r.max_stress_position = x.col(r.stress.max_node);
+  for (std::size_t k = 0; k < r.leaflets.size(); ++k) {
+    const auto& set = mesh.node_set(r.leaflets[k].name);
+    if (std::binary_search(set.begin(), set.end(), r.stress.max_node)) r.max_stress_leaflet = int(k);
+  }
+  r.max_stress_to_attachment = std::numeric_limits<double>::infinity();
+  for (const auto& l : r.leaflets)
+    for (int n : mesh.node_set(l.attachment))
+      r.max_stress_to_attachment =
+          std::min(r.max_stress_to_attachment, (x.col(n) - r.max_stress_position).norm());
+  return r;
+}
+
+}  // namespace valsalva::valve

@@ -1,0 +1,56 @@
+// The closing preprocessing of the reference study (its "heat treatment"): the manufactured
+// open (cylindrical) leaflets are pushed closed by a uniform follower pressure on their aortic
+// faces with their attachment curves clamped exactly (Dirichlet, no tether), by the static
+// Newton solver with load stepping and pseudo-transient continuation (structure/static_solver).
+// The closed shape is then the stress-free reference of the FSI run.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "structure/leaflet_indices.hpp"
+#include "structure/orifice_area.hpp"
+#include "structure/static_solver.hpp"
+#include "structure/valve_frame.hpp"
+#include "valve/leaflet_groups.hpp"
+#include "valve/leaflet_pairs.hpp"
+
+namespace valsalva::valve {
+
+struct ClosingOptions {
+  double pressure = 12.4e3;  // [Pa] on the aortic faces, towards the ventricle (93 mmHg)
+  double shear_modulus = 2.4e6, bulk_modulus = 1.6e6;  // neo-Hookean [Pa]
+  int load_steps = 10;
+  double damping = 1e-2;  // pseudo-transient continuation (NewtonOptions::damping)
+  double rtol = 1e-6;     // relative residual (thin shells: round-off floor near 1e-7)
+  int max_relaxation_steps = 400;
+  bool verbose = false;
+};
+
+struct FreeEdgeMidpoint {
+  int node = -1;
+  double radial = 0, axial = 0;  // closed position relative to the valve axis [m]
+};
+
+struct ClosingResult {
+  structure::NewtonResult newton;
+  std::vector<LeafletGroups> leaflets;
+  std::vector<FreeEdgeMidpoint> free_edge_midpoints;  // one per leaflet
+  LeafletPairsReport pairs;                           // crossings, distance, coaptation height
+  structure::OrificeArea orifice;                     // of the closed valve
+  structure::StressSummary stress;                    // von Mises over nodes
+  structure::Vec3 max_stress_position = structure::Vec3::Zero();
+  int max_stress_leaflet = -1;
+  double max_stress_to_attachment = 0;  // distance of that node to the attachment [m]
+  double thickness = 0;                 // mean leaflet thickness of the reference mesh [m]
+  double seconds = 0;
+};
+
+// Throws std::invalid_argument for a mesh without the leaflet groups (valve/leaflet_groups.hpp)
+// or bad options. A solve that does not converge returns newton.converged = false with the
+// diagnosis; the indices are then those of the last converged state.
+ClosingResult close_leaflets(const structure::SolidMesh& mesh, const structure::ValveFrame& valve,
+                             const ClosingOptions& options);
+
+}  // namespace valsalva::valve
