@@ -26,8 +26,8 @@
 #include <vector>
 
 #include "flow/local_mesh.hpp"
-#include "ibm/bucket_grid.hpp"
 #include "ibm/kernels.hpp"
+#include "structure/bucket_grid.hpp"
 
 namespace valsalva::ibm {
 
@@ -92,7 +92,7 @@ class DiracTransfer {
 
   flow::LocalMesh* mesh_;
   TransferOptions options_;
-  BucketGrid grid_;
+  structure::BucketGrid grid_;
   double h_max_ = 0.0;
   int outer_layer_ = 0;                   // outermost ghost layer of the distribution (0: none)
   std::vector<Eigen::Vector3d> periods_;  // independent periodic shifts seen on local edges

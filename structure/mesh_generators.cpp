@@ -66,6 +66,24 @@ SolidMesh structured_block(HexOrder order, std::array<int, 3> n,
   return mesh;
 }
 
+void append_body(SolidMesh& mesh, const SolidMesh& body, const std::string& prefix) {
+  if (mesh.num_nodes() == 0) mesh.order = body.order;
+  if (mesh.order != body.order)
+    throw std::invalid_argument("append_body: '" + prefix + "' has a different element order");
+  const int n0 = mesh.num_nodes(), e0 = mesh.num_elements();
+  mesh.X.conservativeResize(3, n0 + body.num_nodes());
+  mesh.X.rightCols(body.num_nodes()) = body.X;
+  for (int c : body.connectivity) mesh.connectivity.push_back(n0 + c);
+  for (const auto& [name, nodes] : body.node_sets) {
+    auto& set = mesh.node_sets[prefix + name];
+    for (int n : nodes) set.push_back(n0 + n);
+  }
+  for (const auto& [name, faces] : body.surface_sets) {
+    auto& set = mesh.surface_sets[prefix + name];
+    for (const FaceRef& f : faces) set.push_back({e0 + f.element, f.face});
+  }
+}
+
 void alias_sets(SolidMesh& mesh, const std::string& name, const std::string& alias) {
   mesh.node_sets[alias] = mesh.node_set(name);
   if (auto it = mesh.surface_sets.find(name); it != mesh.surface_sets.end())

@@ -38,6 +38,11 @@ struct Bar {
 // "front" (z).
 SolidMesh straight_bar(HexOrder order, const Bar& b);
 
+// Appends `body` to `mesh` as a separate body (its own nodes; orders must match): its node and
+// surface sets are added as prefix + name (e.g. "upper_w0"), its nodes and elements renumbered
+// after those of `mesh`. Several bodies in one mesh is how contact between bodies is set up.
+void append_body(SolidMesh& mesh, const SolidMesh& body, const std::string& prefix);
+
 // Adds node and surface set `alias` as a copy of existing set `name`.
 void alias_sets(SolidMesh& mesh, const std::string& name, const std::string& alias);
 

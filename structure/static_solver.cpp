@@ -6,6 +6,7 @@
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 namespace valsalva::structure {
@@ -24,6 +25,9 @@ class LinearSolver {
   explicit LinearSolver(bool symmetric) : symmetric_(symmetric) {}
   const char* name() const { return symmetric_ ? "Eigen::SimplicialLDLT" : "Eigen::SparseLU"; }
   bool factor(const Eigen::SparseMatrix<double>& K) {
+    // Contact couples new node pairs as it spreads: the pattern then grows.
+    if (K.nonZeros() != nnz_) analysed_ = false;
+    nnz_ = K.nonZeros();
     if (symmetric_) {
       if (!analysed_) ldlt_.analyzePattern(K);
       ldlt_.factorize(K);
@@ -39,6 +43,7 @@ class LinearSolver {
 
  private:
   bool symmetric_, analysed_ = false;
+  Eigen::Index nnz_ = -1;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
 };
@@ -60,6 +65,9 @@ class Newton {
     if (p.body_force.squaredNorm() > 0) add_body_force(mesh_, p.body_force, dead_);
     for (const TractionLoad& t : p.tractions) add_dead_traction(mesh_, t.faces, t.traction, dead_);
     f_.resize(3, n);
+    if (!p.contact.empty() || !p.obstacles.empty())
+      contact_ = std::make_unique<Contact>(mesh_, p.forces->material(), p.contact, p.obstacles,
+                                           p.contact_options);
   }
 
   // Residual r = f_int + lambda f_ext on free dofs (zero on fixed ones); returns |r| / scale.
@@ -72,6 +80,15 @@ class Newton {
       add_follower_pressure(mesh_, pl.faces, lambda * pl.pressure, x, g_, K);
     const double ext_norm = g_.norm();
     f_ += g_;
+    if (contact_) {
+      triplets_.clear();
+      contact_->add_forces(x, f_, K ? &triplets_ : nullptr);
+      if (K && !triplets_.empty()) {
+        Eigen::SparseMatrix<double> Kc(K->rows(), K->cols());
+        Kc.setFromTriplets(triplets_.begin(), triplets_.end());
+        *K = *K + Kc;  // pattern union: SolidForces::assemble reuses a superset pattern
+      }
+    }
     r = Eigen::Map<const Vec>(f_.data(), f_.size());
     double react = 0;
     for (int i = 0; i < r.size(); ++i)
@@ -98,7 +115,7 @@ class Newton {
 
   NewtonResult run(const Eigen::Matrix3Xd* initial) {
     NewtonResult res;
-    const bool symmetric = p_.pressures.empty();
+    const bool symmetric = p_.pressures.empty() && !contact_;
     LinearSolver solver(symmetric);
     res.solver = solver.name();
     Eigen::Matrix3Xd x = initial ? *initial : mesh_.X, x_prev = x;
@@ -150,6 +167,10 @@ class Newton {
     if (res.converged && d_ > 0) res.converged = relax(x, solver, K, res);
     res.load_factor = lambda;
     res.x = x;
+    if (contact_) {
+      Eigen::Matrix3Xd unused = Eigen::Matrix3Xd::Zero(3, mesh_.num_nodes());
+      res.contact = contact_->add_forces(x, unused);
+    }
     return res;
   }
 
@@ -273,6 +294,8 @@ class Newton {
   Eigen::Matrix3Xd prescribed_, dead_, f_, g_, x0_;
   double d_ = 0;
   double scale_ = 1;
+  std::unique_ptr<Contact> contact_;
+  std::vector<Eigen::Triplet<double>> triplets_;
 };
 
 }  // namespace

@@ -2,7 +2,9 @@
 // (adaptive: a failed increment is halved), backtracking line search on the residual norm, and a
 // diagnosis when it cannot converge (inverted element, singular tangent, non-finite or
 // stagnating residual). Dirichlet supports prescribe displacement components on node sets; the
-// prescribed displacement is scaled by the load factor too.
+// prescribed displacement is scaled by the load factor too. Frictionless contact between surface
+// pairs and against rigid obstacles (structure/contact.hpp) adds its penalty forces and their
+// exact, non-symmetric tangent.
 #pragma once
 
 #include <array>
@@ -10,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "structure/contact.hpp"
 #include "structure/loads.hpp"
 #include "structure/solid_forces.hpp"
 
@@ -36,7 +39,10 @@ struct StaticProblem {
   std::vector<Dirichlet> dirichlet;
   std::vector<PressureLoad> pressures;
   std::vector<TractionLoad> tractions;
-  Vec3 body_force = Vec3::Zero();  // per reference volume [N/m^3]
+  Vec3 body_force = Vec3::Zero();    // per reference volume [N/m^3]
+  std::vector<ContactPair> contact;  // pairs of surfaces of different bodies
+  std::vector<RigidObstacle> obstacles;
+  ContactOptions contact_options;
 };
 
 struct NewtonOptions {
@@ -63,6 +69,7 @@ struct NewtonResult {
   std::vector<double> last_residuals;  // relative residuals of the last increment
   std::string diagnosis;               // why it failed, empty on success
   std::string solver;                  // linear solver used
+  ContactSummary contact;              // at x (empty without contact)
 };
 
 NewtonResult solve_static(const StaticProblem& problem, const NewtonOptions& options,

@@ -23,6 +23,7 @@ Case womersley_case();
 Case womersley_periodic_case();
 Case ib_leakage_case();
 Case turek_hron_fsi_case();
+Case contact_patch_case();
 
 const std::vector<Case>& all_cases() {
   // clang-format off
@@ -45,6 +46,7 @@ const std::vector<Case>& all_cases() {
       womersley_periodic_case(),
       ib_leakage_case(),
       turek_hron_fsi_case(),
+      contact_patch_case(),
   };
   // clang-format on
   return cases;

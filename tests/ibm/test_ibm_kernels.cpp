@@ -6,9 +6,9 @@
 #include <cmath>
 #include <random>
 
-#include "ibm/bucket_grid.hpp"
 #include "ibm/kernels.hpp"
 #include "ibm/rkpm.hpp"
+#include "structure/bucket_grid.hpp"
 
 using namespace valsalva;
 using ibm::KernelType;
@@ -114,7 +114,7 @@ TEST_CASE("bucket grid finds the same nodes as brute force") {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<Eigen::Vector3d> points(3000);
   for (auto& p : points) p = Eigen::Vector3d(u(rng), 0.5 * u(rng), 0.3 * u(rng));
-  const ibm::BucketGrid grid(points, 0.05);
+  const structure::BucketGrid grid(points, 0.05);
   std::vector<int> found;
   for (int t = 0; t < 200; ++t) {
     const Eigen::Vector3d x(1.2 * u(rng) - 0.1, 0.6 * u(rng) - 0.05, 0.4 * u(rng) - 0.05);
@@ -135,5 +135,5 @@ TEST_CASE("bucket grid finds the same nodes as brute force") {
     CHECK(near.index == (best_d <= 0.3 ? best : -1));
   }
   CHECK(grid.nearest(Eigen::Vector3d(5, 5, 5), 1.0, [](int) { return true; }).index == -1);
-  CHECK_THROWS_AS(ibm::BucketGrid(points, 0.0), std::invalid_argument);
+  CHECK_THROWS_AS(structure::BucketGrid(points, 0.0), std::invalid_argument);
 }

@@ -1,6 +1,7 @@
 // Quick versions of the structure validation cases (label validation): each must pass all of its
 // metrics (Turek–Hron CSM tip displacement within 1%, strip bending within 2% of beam theory and
-// the elastica, leaflet closure converging and closing).
+// the elastica, leaflet closure converging and closing, contact patch pressure within 1 % of the
+// applied traction).
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 
@@ -36,4 +37,7 @@ TEST_CASE("strip_bending --quick") {
 }
 TEST_CASE("leaflet_closure --quick") {
   run_quick("leaflet_closure");
+}
+TEST_CASE("contact_patch --quick") {
+  run_quick("contact_patch");
 }

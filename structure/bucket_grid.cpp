@@ -1,10 +1,10 @@
-#include "ibm/bucket_grid.hpp"
+#include "structure/bucket_grid.hpp"
 
 #include <fmt/format.h>
 
 #include <stdexcept>
 
-namespace valsalva::ibm {
+namespace valsalva::structure {
 
 BucketGrid::BucketGrid(std::span<const Eigen::Vector3d> points, double cell_size)
     : points_(points), cell_(cell_size) {
@@ -64,4 +64,4 @@ void BucketGrid::in_box(const Eigen::Vector3d& centre, double radius, std::vecto
       }
 }
 
-}  // namespace valsalva::ibm
+}  // namespace valsalva::structure

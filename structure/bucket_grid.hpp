@@ -1,8 +1,8 @@
-// Point location over a fixed node cloud (a rank's owned and ghost fluid nodes): a uniform
-// bucket grid with cells about one mesh size wide. Finding the nodes in a marker's support box
-// visits only the buckets the box overlaps; the nearest node is found by growing rings of
-// buckets. Fluid nodes do not move, so the grid is built once; markers are located again
-// whenever they move.
+// Point location over a fixed point cloud: a uniform bucket grid with cells about one mesh size
+// wide. Finding the points in a box visits only the buckets the box overlaps; the nearest point
+// is found by growing rings of buckets. Used by the immersed boundary (a rank's fluid nodes, which
+// do not move: built once) and by contact search (face centres, rebuilt per evaluation). It lives
+// in structure/ because that library depends on nothing but Eigen and fmt.
 #pragma once
 
 #include <Eigen/Dense>
@@ -13,7 +13,7 @@
 #include <span>
 #include <vector>
 
-namespace valsalva::ibm {
+namespace valsalva::structure {
 
 class BucketGrid {
  public:
@@ -81,4 +81,4 @@ BucketGrid::Nearest BucketGrid::nearest(const Eigen::Vector3d& x, double max_dis
   return best;
 }
 
-}  // namespace valsalva::ibm
+}  // namespace valsalva::structure

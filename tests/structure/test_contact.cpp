@@ -1,0 +1,207 @@
+// Frictionless penalty contact (structure/contact.hpp): the gap against analytic distances (flat
+// and curved master surfaces), no force when separated, the exact tangent against central
+// differences of the force (pairs and obstacles, Q1 and Q2), and the force as minus the gradient
+// of the penalty energy along rigid translations.
+#include <doctest/doctest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <random>
+
+#include "structure/contact.hpp"
+#include "structure/mesh_generators.hpp"
+
+using namespace valsalva::structure;
+
+namespace {
+
+SolidMesh box(HexOrder order, std::array<int, 3> n, const Vec3& lo, const Vec3& hi) {
+  return structured_block(order, n,
+                          [&](const Vec3& s) { return Vec3(lo + s.cwiseProduct(hi - lo)); });
+}
+
+// Lower block [0,1]^2 x [0,0.5] (2x2 elements), upper block [0,1]^2 x [0.5+d, 1+d] (3x3).
+SolidMesh two_blocks(HexOrder order, double d) {
+  SolidMesh m;
+  append_body(m, box(order, {2, 2, 1}, Vec3(0, 0, 0), Vec3(1, 1, 0.5)), "lower_");
+  append_body(m, box(order, {3, 3, 1}, Vec3(0, 0, 0.5 + d), Vec3(1, 1, 1 + d)), "upper_");
+  return m;
+}
+
+ContactPair blocks_pair(const SolidMesh& m) {
+  return {"lower-upper", m.surface_set("lower_w1"), m.surface_set("upper_w0")};
+}
+
+Eigen::MatrixXd dense(const std::vector<Eigen::Triplet<double>>& t, int n) {
+  Eigen::SparseMatrix<double> K(n, n);
+  K.setFromTriplets(t.begin(), t.end());
+  return Eigen::MatrixXd(K);
+}
+
+// max |(f(x + h e_j) - f(x - h e_j)) / 2h + K e_j| / max |K| over all dofs j.
+double tangent_error(const Contact& c, const Eigen::Matrix3Xd& x, double h) {
+  const int n = static_cast<int>(x.size());
+  Eigen::Matrix3Xd f = Eigen::Matrix3Xd::Zero(3, x.cols());
+  std::vector<Eigen::Triplet<double>> t;
+  c.add_forces(x, f, &t);
+  const Eigen::MatrixXd K = dense(t, n);
+  REQUIRE(K.cwiseAbs().maxCoeff() > 0);
+  double err = 0;
+  for (int j = 0; j < n; ++j) {
+    Eigen::Matrix3Xd xp = x, xm = x;
+    xp.data()[j] += h;
+    xm.data()[j] -= h;
+    Eigen::Matrix3Xd fp = Eigen::Matrix3Xd::Zero(3, x.cols()), fm = fp;
+    c.add_forces(xp, fp);
+    c.add_forces(xm, fm);
+    const Eigen::Matrix3Xd df = (fp - fm) / (2 * h);
+    const Eigen::VectorXd d = Eigen::Map<const Eigen::VectorXd>(df.data(), n);
+    err = std::max(err, (d + K.col(j)).cwiseAbs().maxCoeff());
+  }
+  return err / K.cwiseAbs().maxCoeff();
+}
+
+// The upper block pushed 0.02 into the lower one, tilted and with randomly moved nodes.
+Eigen::Matrix3Xd perturbed(const SolidMesh& m, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-0.003, 0.003);
+  Eigen::Matrix3Xd x = m.X;
+  for (int n : m.node_set("upper_w0")) x(2, n) -= 0.02;
+  for (int n = 0; n < m.num_nodes(); ++n) {
+    x(2, n) += 0.01 * x(0, n) - 0.005 * x(1, n);
+    for (int k = 0; k < 3; ++k) x(k, n) += u(rng);
+  }
+  return x;
+}
+
+const auto kMaterial = make_linear_elastic(1e3, 0.3);
+
+}  // namespace
+
+TEST_CASE("separated blocks: the gap is their distance and there is no force") {
+  for (HexOrder order : {HexOrder::q1, HexOrder::q2}) {
+    const double d = 0.05;
+    const SolidMesh m = two_blocks(order, d);
+    const Contact c(m, *kMaterial, {blocks_pair(m)}, {}, {});
+    Eigen::Matrix3Xd f = Eigen::Matrix3Xd::Zero(3, m.num_nodes());
+    std::vector<Eigen::Triplet<double>> t;
+    const ContactSummary s = c.add_forces(m.X, f, &t);
+    CHECK(s.min_gap == doctest::Approx(d).epsilon(1e-12));
+    CHECK(f.cwiseAbs().maxCoeff() == 0.0);
+    CHECK(t.empty());
+    CHECK(s.force == 0.0);
+    CHECK(s.area == 0.0);
+    // Beyond the search radius (search_factor * h, h ~ 0.4 here) nothing is seen.
+    const SolidMesh far = two_blocks(order, 2.0);
+    const Contact cf(far, *kMaterial, {blocks_pair(far)}, {}, {});
+    CHECK(std::isinf(cf.add_forces(far.X, f).min_gap));
+  }
+}
+
+TEST_CASE("gap to a curved Q2 surface against the analytic distance to the cylinder") {
+  // Master: a cylindrical shell r in [1, 1.2] over 60..120 degrees (axis z); slave: a flat block
+  // whose lower face y = 1.22 lies above it.
+  SolidMesh m;
+  const double R = 1.2, y0 = 1.22;
+  append_body(m,
+              structured_block(HexOrder::q2, {2, 6, 1},
+                               [](const Vec3& s) {
+                                 const double th = M_PI / 3 * (1 + s[1]), r = 1 + 0.2 * s[0];
+                                 return Vec3(r * std::cos(th), r * std::sin(th), 0.2 * s[2]);
+                               }),
+              "shell_");
+  append_body(m, box(HexOrder::q2, {2, 1, 1}, Vec3(-0.2, y0, 0), Vec3(0.2, 1.5, 0.2)), "flat_");
+  // Shell: u -> radius, v -> angle (counter-clockwise), so the outer surface is u1.
+  const Contact c(m, *kMaterial,
+                  {{"flat-shell", m.surface_set("flat_v0"), m.surface_set("shell_u1")}}, {}, {});
+  int count[2] = {0, 0};
+  double err = 0;
+  for (const ContactPoint& p : c.points(m.X)) {
+    ++count[p.half];
+    const double exact = p.half == 0 ? std::hypot(p.x[0], p.x[1]) - R : y0 - p.x[1];
+    err = std::max(err, std::abs(p.gap - exact));
+  }
+  CHECK(count[0] == 2 * 16);  // every slave point of the flat face projects on the shell
+  CHECK(count[1] > 0);
+  // Q2 interpolation of a 10-degree arc deviates from the circle by ~ R (dtheta)^4 / 400 (< 3e-6).
+  MESSAGE("curved gap error " << err);
+  CHECK(err < 5e-6);
+}
+
+TEST_CASE("contact tangent equals minus the derivative of the force (central differences)") {
+  for (HexOrder order : {HexOrder::q1, HexOrder::q2}) {
+    CAPTURE(static_cast<int>(order));
+    const SolidMesh m = two_blocks(order, 0.0);
+    const Contact c(m, *kMaterial, {blocks_pair(m)}, {}, {});
+    const Eigen::Matrix3Xd x = perturbed(m, 3);
+    Eigen::Matrix3Xd f = Eigen::Matrix3Xd::Zero(3, m.num_nodes());
+    const ContactSummary s = c.add_forces(x, f);
+    REQUIRE(s.surfaces[0].active_points > 0);
+    // Central differences with h = 1e-6 (1e-4 of the penetration): truncation ~ h^2 |f'''|,
+    // round-off ~ 1e-16 |f| / h; both far below 1e-8 of |K| (measured: ~1e-10).
+    const double err = tangent_error(c, x, 1e-6);
+    MESSAGE("pair tangent relative error " << err);
+    CHECK(err < 1e-8);
+  }
+  // Obstacles: the lower face of the upper block against a plane and inside a cylinder.
+  for (HexOrder order : {HexOrder::q1, HexOrder::q2}) {
+    const SolidMesh m = two_blocks(order, 0.0);
+    RigidObstacle plane{
+        "plane", RigidObstacle::Shape::plane, Vec3(0, 0, 0.5), Vec3(0.1, 0.05, 1), 0,
+        true,    m.surface_set("upper_w0")};
+    RigidObstacle cyl{
+        "cylinder", RigidObstacle::Shape::cylinder, Vec3(0.5, 0.5, 0), Vec3(0, 1, 0.1), 0.52,
+        true,       m.surface_set("upper_w0")};
+    for (const RigidObstacle& o : {plane, cyl}) {
+      CAPTURE(o.name);
+      const Contact c(m, *kMaterial, {}, {o}, {});
+      const Eigen::Matrix3Xd x = perturbed(m, 5);
+      Eigen::Matrix3Xd f = Eigen::Matrix3Xd::Zero(3, m.num_nodes());
+      REQUIRE(c.add_forces(x, f).surfaces[0].active_points > 0);
+      const double err = tangent_error(c, x, 1e-6);
+      MESSAGE(o.name << " tangent relative error " << err);
+      CHECK(err < 1e-8);
+    }
+  }
+}
+
+TEST_CASE("obstacle force is minus the gradient of the penalty energy along translations") {
+  // Pi = eps/2 int <-g>^2 da; a rigid translation v keeps da and changes g by v . n, so
+  // sum_a f_a . v = -dPi/dtau along x + tau v.
+  const SolidMesh m = two_blocks(HexOrder::q2, 0.0);
+  const RigidObstacle plane{
+      "plane", RigidObstacle::Shape::plane, Vec3(0, 0, 0.5), Vec3(0.2, -0.1, 1), 0,
+      true,    m.surface_set("upper_w0")};
+  const Contact c(m, *kMaterial, {}, {plane}, {});
+  const Eigen::Matrix3Xd x = perturbed(m, 7);
+  const Vec3 v(0.3, 0.5, -0.8);
+  auto energy = [&](double tau) {
+    Eigen::Matrix3Xd y = x;
+    y.colwise() += tau * v;
+    Eigen::Matrix3Xd f = Eigen::Matrix3Xd::Zero(3, m.num_nodes());
+    const double eps = c.add_forces(y, f).surfaces[0].penalty;
+    double pi = 0;
+    for (const ContactPoint& p : c.points(y))
+      if (p.gap < 0) pi += 0.5 * eps * p.gap * p.gap * p.area;
+    return pi;
+  };
+  Eigen::Matrix3Xd f = Eigen::Matrix3Xd::Zero(3, m.num_nodes());
+  c.add_forces(x, f);
+  const double work = (f.transpose() * v).sum();
+  const double h = 1e-6;
+  const double dpi = (energy(h) - energy(-h)) / (2 * h);
+  REQUIRE(std::abs(work) > 0);
+  CHECK(work == doctest::Approx(-dpi).epsilon(1e-7));
+}
+
+TEST_CASE("contact pairs must belong to different bodies") {
+  const SolidMesh m = two_blocks(HexOrder::q1, 0.0);
+  CHECK_THROWS_WITH_AS(
+      Contact(m, *kMaterial, {{"self", m.surface_set("lower_w1"), m.surface_set("lower_u0")}}, {},
+              {}),
+      doctest::Contains("node"), std::invalid_argument);
+  ContactOptions o;
+  o.penalty_factor = -1;
+  CHECK_THROWS_WITH_AS(Contact(m, *kMaterial, {blocks_pair(m)}, {}, o),
+                       doctest::Contains("penalty_factor"), std::invalid_argument);
+}
