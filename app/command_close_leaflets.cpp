@@ -2,12 +2,13 @@
 
 #include <fmt/format.h>
 #include <mpi.h>
+#include <toml++/toml.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <stdexcept>
-#include <toml++/toml.h>
 
 #include "io/solid_gmsh_reader.hpp"
 #include "io/solid_gmsh_writer.hpp"
@@ -32,45 +33,55 @@ fs::path report_path(const fs::path& out) {
   return p;
 }
 
-toml::array vec(const structure::Vec3& v) { return toml::array{v.x(), v.y(), v.z()}; }
+toml::array vec(const structure::Vec3& v) {
+  return toml::array{v.x(), v.y(), v.z()};
+}
 
 toml::table report_table(const Options& o, const valve::ClosingResult& r) {
   const auto& n = r.newton;
-  toml::table t{{"leaflets_file", o.leaflets},
-                {"pressure_Pa", o.closing.pressure},
-                {"converged", n.converged},
-                {"load_steps", n.steps},
-                {"newton_iterations", n.iterations},
-                {"step_cuts", n.cuts},
-                {"final_relative_residual", n.last_residuals.empty() ? -1.0 : n.last_residuals.back()},
-                {"linear_solver", n.solver},
-                {"seconds", r.seconds},
-                {"thickness_m", r.thickness},
-                {"coaptation_height_m", r.pairs.coaptation_height},
-                {"min_mid_surface_distance_m", r.pairs.min_distance},
-                {"crossing_triangle_pairs", r.pairs.crossings},
-                {"orifice_area_m2", r.orifice.area},
-                {"orifice_raster_error_m2", r.orifice.raster_error},
-                {"opening_ratio", r.orifice.opening_ratio},
-                {"max_von_mises_Pa", r.stress.max},
-                {"von_mises_p99_Pa", r.stress.at_percentile},
-                {"max_von_mises_node", r.stress.max_node},
-                {"max_von_mises_position_m", vec(r.max_stress_position)},
-                {"max_von_mises_leaflet", r.max_stress_leaflet + 1},
-                {"max_von_mises_distance_to_attachment_m", r.max_stress_to_attachment}};
+  toml::table t{
+      {"leaflets_file", o.leaflets},
+      {"pressure_Pa", o.closing.pressure},
+      {"converged", n.converged},
+      {"load_steps", n.steps},
+      {"newton_iterations", n.iterations},
+      {"step_cuts", n.cuts},
+      {"final_relative_residual", n.last_residuals.empty() ? -1.0 : n.last_residuals.back()},
+      {"linear_solver", n.solver},
+      {"seconds", r.seconds},
+      {"thickness_m", r.thickness},
+      {"coaptation_height_m", r.pairs.coaptation_height},
+      {"min_mid_surface_distance_m", r.pairs.min_distance},
+      {"crossing_triangle_pairs", r.pairs.crossings},
+      {"orifice_area_m2", r.orifice.area},
+      {"orifice_raster_error_m2", r.orifice.raster_error},
+      {"opening_ratio", r.orifice.opening_ratio},
+      {"max_von_mises_Pa", r.stress.max},
+      {"von_mises_p99_Pa", r.stress.at_percentile},
+      {"max_von_mises_node", r.stress.max_node},
+      {"max_von_mises_position_m", vec(r.max_stress_position)},
+      {"max_von_mises_leaflet", r.max_stress_leaflet + 1},
+      {"max_von_mises_distance_to_attachment_m", r.max_stress_to_attachment},
+      {"contact", o.closing.contact}};
+  if (o.closing.contact) {
+    const auto& c = n.contact;
+    t.insert("contact_min_gap_m", std::isfinite(c.min_gap) ? c.min_gap : 1.0);
+    t.insert("contact_force_N", c.force);
+    t.insert("contact_area_m2", c.area);
+    t.insert("contact_max_pressure_Pa", c.max_pressure);
+  }
   toml::array mids;
   for (std::size_t k = 0; k < r.free_edge_midpoints.size(); ++k) {
     const auto& m = r.free_edge_midpoints[k];
-    mids.push_back(toml::table{{"leaflet", int(k) + 1},
-                               {"node", m.node},
-                               {"radius_m", m.radial},
-                               {"axial_m", m.axial}});
+    mids.push_back(toml::table{
+        {"leaflet", int(k) + 1}, {"node", m.node}, {"radius_m", m.radial}, {"axial_m", m.axial}});
   }
   t.insert("free_edge_midpoint", mids);
   toml::array pairs;
   for (const auto& p : r.pairs.pairs)
     pairs.push_back(toml::table{{"leaflets", toml::array{p.a + 1, p.b + 1}},
                                 {"crossings", p.crossings},
+                                {"crossing_at_m", vec(p.crossing_at)},
                                 {"min_distance_m", p.min_distance},
                                 {"coaptation_height_m", p.coaptation_height}});
   t.insert("pair", pairs);
@@ -79,21 +90,37 @@ toml::table report_table(const Options& o, const valve::ClosingResult& r) {
 
 void print_summary(const valve::ClosingResult& r) {
   const auto& n = r.newton;
-  fmt::print("close-leaflets: {} leaflets, {} load steps, {} Newton iterations, {} cuts, {:.1f} s\n",
-             r.leaflets.size(), n.steps, n.iterations, n.cuts, r.seconds);
+  fmt::print(
+      "close-leaflets: {} leaflets, {} load steps, {} Newton iterations, {} cuts, {:.1f} s\n",
+      r.leaflets.size(), n.steps, n.iterations, n.cuts, r.seconds);
   for (std::size_t k = 0; k < r.free_edge_midpoints.size(); ++k)
     fmt::print("  leaflet {}: free-edge midpoint at radius {:.3f} mm, height {:.3f} mm\n", k + 1,
                1e3 * r.free_edge_midpoints[k].radial, 1e3 * r.free_edge_midpoints[k].axial);
-  fmt::print("  coaptation height {:.3f} mm; smallest mid-surface distance {:.4f} mm "
-             "(thickness {:.4f} mm); {} crossing triangle pairs\n",
-             1e3 * r.pairs.coaptation_height, 1e3 * r.pairs.min_distance, 1e3 * r.thickness,
-             r.pairs.crossings);
-  fmt::print("  geometric orifice area {:.4g} mm^2 (raster error {:.2g} mm^2), opening ratio {:.4g}\n",
-             1e6 * r.orifice.area, 1e6 * r.orifice.raster_error, r.orifice.opening_ratio);
-  fmt::print("  largest von Mises stress {:.4g} MPa at node {} of leaflet {}, {:.3f} mm from the "
-             "attachment\n",
-             1e-6 * r.stress.max, r.stress.max_node, r.max_stress_leaflet + 1,
-             1e3 * r.max_stress_to_attachment);
+  fmt::print(
+      "  coaptation height {:.3f} mm; smallest mid-surface distance {:.4f} mm "
+      "(thickness {:.4f} mm); {} crossing triangle pairs\n",
+      1e3 * r.pairs.coaptation_height, 1e3 * r.pairs.min_distance, 1e3 * r.thickness,
+      r.pairs.crossings);
+  for (const auto& p : r.pairs.pairs)
+    if (p.crossings)
+      fmt::print(
+          "  leaflets {} and {} cross ({} triangle pairs) about r = {:.3f} mm, z = {:.3f} mm\n",
+          p.a + 1, p.b + 1, p.crossings, 1e3 * std::hypot(p.crossing_at.x(), p.crossing_at.y()),
+          1e3 * p.crossing_at.z());
+  fmt::print(
+      "  geometric orifice area {:.4g} mm^2 (raster error {:.2g} mm^2), opening ratio {:.4g}\n",
+      1e6 * r.orifice.area, 1e6 * r.orifice.raster_error, r.orifice.opening_ratio);
+  if (const auto& c = r.newton.contact; !c.surfaces.empty())
+    fmt::print(
+        "  contact: smallest gap {:.4g} mm ({:.2f} % of the thickness), force {:.4g} N, "
+        "area {:.4g} mm^2, largest pressure {:.4g} kPa\n",
+        1e3 * c.min_gap, 100 * c.min_gap / r.thickness, c.force, 1e6 * c.area,
+        1e-3 * c.max_pressure);
+  fmt::print(
+      "  largest von Mises stress {:.4g} MPa at node {} of leaflet {}, {:.3f} mm from the "
+      "attachment\n",
+      1e-6 * r.stress.max, r.stress.max_node, r.max_stress_leaflet + 1,
+      1e3 * r.max_stress_to_attachment);
 }
 
 int run(const Options& o) {
@@ -105,8 +132,8 @@ int run(const Options& o) {
     throw std::invalid_argument(fmt::format("close-leaflets: --out {}: give a .msh file", o.out));
   for (const fs::path& p : {out, report})
     if (fs::exists(p) && !o.overwrite)
-      throw std::invalid_argument(fmt::format(
-          "close-leaflets: {} exists (give --overwrite to replace it)", p.string()));
+      throw std::invalid_argument(
+          fmt::format("close-leaflets: {} exists (give --overwrite to replace it)", p.string()));
   if (!(o.annulus_radius > 0))
     throw std::invalid_argument("close-leaflets: --annulus-radius must be > 0 (metres)");
   const structure::SolidMesh mesh = io::read_solid_gmsh(o.leaflets);
@@ -129,8 +156,8 @@ int run(const Options& o) {
 
 CLI::App* add_close_leaflets(CLI::App& cli, std::function<int()>& action) {
   auto o = std::make_shared<Options>();
-  auto* c = cli.add_subcommand(
-      "close-leaflets", "Close manufactured leaflets by a pressure on their aortic faces");
+  auto* c = cli.add_subcommand("close-leaflets",
+                               "Close manufactured leaflets by a pressure on their aortic faces");
   c->add_option("leaflets", o->leaflets, "Leaflet mesh (valsalva make-valve's leaflets.msh)")
       ->required()
       ->check(CLI::ExistingFile);
@@ -142,6 +169,9 @@ CLI::App* add_close_leaflets(CLI::App& cli, std::function<int()>& action) {
   c->add_option("--load-steps", o->closing.load_steps, "Initial pressure increments (default 10)");
   c->add_option("--shear-modulus", o->closing.shear_modulus, "Neo-Hookean G [Pa] (2.4e6)");
   c->add_option("--bulk-modulus", o->closing.bulk_modulus, "Neo-Hookean K [Pa] (1.6e6)");
+  c->add_flag("!--no-contact", o->closing.contact, "Let the leaflets pass through each other");
+  c->add_option("--penalty-factor", o->closing.contact_options.penalty_factor,
+                "Contact penalty eps = factor * E / h (default 100)");
   c->add_flag("--overwrite", o->overwrite, "Replace CLOSED.msh and its report");
   c->add_flag("--verbose", o->closing.verbose, "Print the Newton iterations");
   action = [o] { return run(*o); };

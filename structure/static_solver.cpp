@@ -135,6 +135,7 @@ class Newton {
       for (int i = 0; i < 3 * mesh_.num_nodes(); ++i)
         if (fixed_[i])
           xt(i % 3, i / 3) = mesh_.X(i % 3, i / 3) + target * prescribed_(i % 3, i / 3);
+      if (o_.admissible && !o_.admissible(xt)) xt = x;  // the extrapolation crossed: start at x
       std::string why;
       x0_ = x;
       const bool ok = increment(xt, target, solver, K, res, why);
@@ -254,7 +255,7 @@ class Newton {
         xt = x + alpha * dU;
         double mj = 0;
         const double rel_trial = residual(xt, lambda, nullptr, r_trial, mj);
-        if (!(mj > 0) || !std::isfinite(rel_trial)) {
+        if (!(mj > 0) || !std::isfinite(rel_trial) || (o_.admissible && !o_.admissible(xt))) {
           alpha *= 0.5;
           continue;
         }
@@ -264,6 +265,10 @@ class Newton {
       }
       // Round-off floor: the update is negligible against the displacement (1e-10) and the
       // residual is small; further iterations cannot improve on round-off.
+      if (o_.admissible && !o_.admissible(xt)) {
+        why = fmt::format("iteration {}: every step the line search tried was inadmissible", it);
+        return false;
+      }
       const double step = alpha * dU.cwiseAbs().maxCoeff();
       const double umax = std::max((xt - mesh_.X).cwiseAbs().maxCoeff(), 1e-9 * L);
       x = xt;

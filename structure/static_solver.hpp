@@ -58,6 +58,13 @@ struct NewtonOptions {
   // until the undamped residual converges. 0 disables it.
   double damping = 0;
   int max_relaxation_steps = 200;
+  // A state test, empty = every state is admissible. A trial state it rejects is treated like
+  // one with an inverted element: the line search halves the step, and an increment that cannot
+  // avoid it is cut. The valve's closing uses it to refuse steps that push a leaflet through
+  // another faster than the contact penalty can act (a thin body is crossed in one Newton step;
+  // the filtered line search of Li et al., "Incremental Potential Contact", ACM Trans. Graph. 39
+  // (2020) 49, keeps every iterate intersection-free the same way).
+  std::function<bool(const Eigen::Matrix3Xd& x)> admissible;
   bool verbose = false;
 };
 

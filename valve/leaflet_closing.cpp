@@ -47,7 +47,8 @@ double mean_thickness(const structure::SolidMesh& mesh, const std::vector<Leafle
         xi[hf.axis] = s ? 1.0 : -1.0;
         structure::hex_shape(mesh.order, xi, N, dN);
         ends[s] = Vec3::Zero();
-        for (int a = 0; a < nen; ++a) ends[s] += N[a] * mesh.X.col(mesh.element_nodes(f.element)[a]);
+        for (int a = 0; a < nen; ++a)
+          ends[s] += N[a] * mesh.X.col(mesh.element_nodes(f.element)[a]);
       }
       sum += (ends[1] - ends[0]).norm();
       ++n;
@@ -103,12 +104,27 @@ ClosingResult close_leaflets(const structure::SolidMesh& mesh, const structure::
     // Positive pressure pushes into the solid: on the aortic face, towards the ventricle side.
     problem.pressures.push_back({mesh.surface_set(l.aortic_face), options.pressure});
   }
+  if (options.contact)
+    for (std::size_t a = 0; a < r.leaflets.size(); ++a)
+      for (std::size_t b = a + 1; b < r.leaflets.size(); ++b) {
+        const auto& la = r.leaflets[a];
+        const auto& lb = r.leaflets[b];
+        problem.contact.push_back(
+            {la.name + "-" + lb.name,
+             structure::contact_surface(mesh, {la.aortic_face, la.ventricular_face}),
+             structure::contact_surface(mesh, {lb.aortic_face, lb.ventricular_face})});
+      }
+  problem.contact_options = options.contact_options;
   structure::NewtonOptions newton;
   newton.load_steps = options.load_steps;
   newton.damping = options.damping;
   newton.rtol = options.rtol;
   newton.max_relaxation_steps = options.max_relaxation_steps;
   newton.verbose = options.verbose;
+  if (options.contact)
+    newton.admissible = [&](const Eigen::Matrix3Xd& x) {
+      return !leaflets_cross(mesh, x, r.leaflets);
+    };
   const auto t0 = std::chrono::steady_clock::now();
   r.newton = structure::solve_static(problem, newton);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -129,7 +145,8 @@ ClosingResult close_leaflets(const structure::SolidMesh& mesh, const structure::
   r.max_stress_position = x.col(r.stress.max_node);
   for (std::size_t k = 0; k < r.leaflets.size(); ++k) {
     const auto& set = mesh.node_set(r.leaflets[k].name);
-    if (std::binary_search(set.begin(), set.end(), r.stress.max_node)) r.max_stress_leaflet = int(k);
+    if (std::binary_search(set.begin(), set.end(), r.stress.max_node))
+      r.max_stress_leaflet = int(k);
   }
   r.max_stress_to_attachment = std::numeric_limits<double>::infinity();
   for (const auto& l : r.leaflets)

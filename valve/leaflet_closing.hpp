@@ -2,7 +2,9 @@
 // open (cylindrical) leaflets are pushed closed by a uniform follower pressure on their aortic
 // faces with their attachment curves clamped exactly (Dirichlet, no tether), by the static
 // Newton solver with load stepping and pseudo-transient continuation (structure/static_solver).
-// The closed shape is then the stress-free reference of the FSI run.
+// The closed shape is then the stress-free reference of the FSI run. With contact on, every pair
+// of leaflets is a frictionless contact pair (their aortic and ventricular faces,
+// structure/contact.hpp), so the leaflets coapt instead of passing through each other.
 #pragma once
 
 #include <Eigen/Core>
@@ -25,6 +27,8 @@ struct ClosingOptions {
   double damping = 1e-2;  // pseudo-transient continuation (NewtonOptions::damping)
   double rtol = 1e-6;     // relative residual (thin shells: round-off floor near 1e-7)
   int max_relaxation_steps = 400;
+  bool contact = true;
+  structure::ContactOptions contact_options;
   bool verbose = false;
 };
 

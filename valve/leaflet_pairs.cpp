@@ -24,18 +24,22 @@ std::vector<Box> triangle_boxes(const TriangleSurface& s) {
   return boxes;
 }
 
-long count_crossings(const TriangleSurface& s, const std::vector<Box>& sb,
-                     const TriangleSurface& t, const std::vector<Box>& tb) {
+long count_crossings(const TriangleSurface& s, const std::vector<Box>& sb, const TriangleSurface& t,
+                     const std::vector<Box>& tb, Vec3& mean) {
   long n = 0;
+  mean.setZero();
   for (std::size_t i = 0; i < s.triangles.size(); ++i)
     for (std::size_t j = 0; j < t.triangles.size(); ++j) {
       if (!sb[i].intersects(tb[j])) continue;
       const auto& a = s.triangles[i];
       const auto& b = t.triangles[j];
       if (triangles_intersect({s.points[a[0]], s.points[a[1]], s.points[a[2]]},
-                              {t.points[b[0]], t.points[b[1]], t.points[b[2]]}))
+                              {t.points[b[0]], t.points[b[1]], t.points[b[2]]})) {
         ++n;
+        mean += (s.points[a[0]] + s.points[a[1]] + s.points[a[2]]) / 3;
+      }
     }
+  if (n) mean /= double(n);
   return n;
 }
 
@@ -48,7 +52,8 @@ std::vector<double> distances(const TriangleSurface& s, const TriangleSurface& t
     for (std::size_t j = 0; j < t.triangles.size(); ++j) {
       if (tb[j].exteriorDistance(p) >= d[i]) continue;
       const auto& tr = t.triangles[j];
-      const Vec3 c = closest_point_on_triangle(p, t.points[tr[0]], t.points[tr[1]], t.points[tr[2]]);
+      const Vec3 c =
+          closest_point_on_triangle(p, t.points[tr[0]], t.points[tr[1]], t.points[tr[2]]);
       d[i] = std::min(d[i], (p - c).norm());
     }
   }
@@ -68,6 +73,21 @@ double axial_extent(const TriangleSurface& s, const std::vector<double>& d, doub
 
 }  // namespace
 
+bool leaflets_cross(const structure::SolidMesh& mesh, const Eigen::Matrix3Xd& x,
+                    const std::vector<LeafletGroups>& leaflets) {
+  std::vector<TriangleSurface> mids;
+  std::vector<std::vector<Box>> boxes;
+  for (const auto& l : leaflets) {
+    mids.push_back(mid_surface(mesh, x, l.aortic_face));
+    boxes.push_back(triangle_boxes(mids.back()));
+  }
+  Vec3 unused;
+  for (std::size_t a = 0; a < mids.size(); ++a)
+    for (std::size_t b = a + 1; b < mids.size(); ++b)
+      if (count_crossings(mids[a], boxes[a], mids[b], boxes[b], unused) > 0) return true;
+  return false;
+}
+
 LeafletPairsReport leaflet_pairs(const structure::SolidMesh& mesh, const Eigen::Matrix3Xd& x,
                                  const std::vector<LeafletGroups>& leaflets,
                                  const structure::ValveFrame& valve, double coaptation_distance) {
@@ -85,7 +105,8 @@ LeafletPairsReport leaflet_pairs(const structure::SolidMesh& mesh, const Eigen::
     for (int b = a + 1; b < n; ++b) {
       LeafletPair p;
       p.a = a, p.b = b;
-      p.crossings = count_crossings(mids[a], boxes[a], mids[b], boxes[b]);
+      p.crossings = count_crossings(mids[a], boxes[a], mids[b], boxes[b], p.crossing_at);
+      if (p.crossings) p.crossing_at = basis.to_local(p.crossing_at);
       const auto dab = distances(mids[a], mids[b], boxes[b]);
       const auto dba = distances(mids[b], mids[a], boxes[a]);
       p.min_distance = std::min(*std::min_element(dab.begin(), dab.end()),

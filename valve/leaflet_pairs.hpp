@@ -17,10 +17,12 @@
 namespace valsalva::valve {
 
 struct LeafletPair {
-  int a = 0, b = 0;                // leaflet indices (0-based)
-  long crossings = 0;              // intersecting triangle pairs
-  double min_distance = 0;         // smallest mid-surface distance [m]
-  double coaptation_height = 0;    // [m], 0 when they do not come within the distance
+  int a = 0, b = 0;              // leaflet indices (0-based)
+  long crossings = 0;            // intersecting triangle pairs
+  double min_distance = 0;       // smallest mid-surface distance [m]
+  double coaptation_height = 0;  // [m], 0 when they do not come within the distance
+  structure::Vec3 crossing_at = structure::Vec3::Zero();  // mean crossing point (valve axes:
+                                                          // in-plane e1, e2, axial) if any
 };
 
 struct LeafletPairsReport {
@@ -29,6 +31,10 @@ struct LeafletPairsReport {
   double min_distance = 0;
   double coaptation_height = 0;
 };
+
+// Whether some two leaflets' mid-surfaces intersect (the crossing test alone, for line searches).
+bool leaflets_cross(const structure::SolidMesh& mesh, const Eigen::Matrix3Xd& x,
+                    const std::vector<LeafletGroups>& leaflets);
 
 LeafletPairsReport leaflet_pairs(const structure::SolidMesh& mesh, const Eigen::Matrix3Xd& x,
                                  const std::vector<LeafletGroups>& leaflets,

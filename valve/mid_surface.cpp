@@ -9,8 +9,8 @@ namespace valsalva::valve {
 TriangleSurface mid_surface(const structure::SolidMesh& mesh, const Eigen::Matrix3Xd& x,
                             const std::string& face_set, int n) {
   if (x.cols() != mesh.num_nodes())
-    throw std::invalid_argument(fmt::format("{}: {} positions for {} nodes", mesh.source, x.cols(),
-                                            mesh.num_nodes()));
+    throw std::invalid_argument(
+        fmt::format("{}: {} positions for {} nodes", mesh.source, x.cols(), mesh.num_nodes()));
   if (n < 1) throw std::invalid_argument("mid_surface: subdivision below 1");
   const int nen = mesh.nodes_per_element();
   std::vector<double> N(nen), dN(3 * nen);

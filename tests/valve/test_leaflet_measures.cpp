@@ -18,9 +18,8 @@ namespace {
 void add_plate(structure::SolidMesh& mesh, int k, const std::function<Vec3(const Vec3&)>& map) {
   const double t = 0.15e-3;
   structure::SolidMesh p = structure::structured_block(
-      structure::HexOrder::q2, {5, 2, 1}, [&](const Vec3& s) {
-        return map(Vec3(10e-3 * s[0], 4e-3 * s[1], (s[2] - 0.5) * t));
-      });
+      structure::HexOrder::q2, {5, 2, 1},
+      [&](const Vec3& s) { return map(Vec3(10e-3 * s[0], 4e-3 * s[1], (s[2] - 0.5) * t)); });
   const int offset = mesh.num_nodes();
   const int eoff = mesh.num_elements();
   if (offset == 0) mesh.order = p.order;
@@ -39,7 +38,8 @@ void add_plate(structure::SolidMesh& mesh, int k, const std::function<Vec3(const
   mesh.node_sets[name + "_attachment"] = nodes("v0");
   mesh.node_sets[name + "_free_edge"] = nodes("v1");
   for (auto [set, group] : {std::pair{"w1", "_aortic_face"}, std::pair{"w0", "_ventricular_face"}})
-    for (auto f : p.surface_set(set)) mesh.surface_sets[name + group].push_back({f.element + eoff, f.face});
+    for (auto f : p.surface_set(set))
+      mesh.surface_sets[name + group].push_back({f.element + eoff, f.face});
 }
 
 structure::ValveFrame frame() {
@@ -80,9 +80,8 @@ TEST_CASE("leaflet pairs: parallel plates a gap apart, and plates crossing") {
   // The second plate tilted through the first along the line x = 5.1 mm.
   structure::SolidMesh crossing;
   add_plate(crossing, 1, [](const Vec3& p) { return p; });
-  add_plate(crossing, 2, [](const Vec3& p) {
-    return Vec3(p.x(), p.y(), 0.1 * (p.x() - 5.1e-3) + p.z());
-  });
+  add_plate(crossing, 2,
+            [](const Vec3& p) { return Vec3(p.x(), p.y(), 0.1 * (p.x() - 5.1e-3) + p.z()); });
   r = valve::leaflet_pairs(crossing, crossing.X, valve::leaflet_groups(crossing), frame(), 1e-4);
   CHECK(r.crossings > 0);
   CHECK(r.min_distance < 1e-12);
