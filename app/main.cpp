@@ -7,6 +7,7 @@
 #include <exception>
 
 #include "app/command_compare_piv.hpp"
+#include "app/command_make_valve.hpp"
 #include "app/command_psd.hpp"
 #include "app/commands.hpp"
 
@@ -59,6 +60,8 @@ int main(int argc, char** argv) {
   auto* piv = valsalva::app::add_compare_piv(cli, compare_piv);
   std::function<int()> psd;
   auto* psd_cmd = valsalva::app::add_psd(cli, psd);
+  std::function<int()> make_valve;
+  auto* make_valve_cmd = valsalva::app::add_make_valve(cli, make_valve);
 
   int code = 0;
   try {
@@ -77,6 +80,7 @@ int main(int argc, char** argv) {
     if (*docs) code = valsalva::app::docs_scenes();
     if (*piv) code = compare_piv();
     if (*psd_cmd) code = psd();
+    if (*make_valve_cmd) code = make_valve();
   } catch (const std::exception& e) {
     // Inputs are read on every rank, so every rank fails alike; with several ranks a failure on
     // one rank alone must not leave the others waiting in a collective.
