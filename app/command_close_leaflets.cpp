@@ -10,9 +10,10 @@
 #include <memory>
 #include <stdexcept>
 
-#include "io/solid_gmsh_reader.hpp"
 #include "io/solid_gmsh_writer.hpp"
 #include "valve/leaflet_closing.hpp"
+#include "valve/leaflet_mesh.hpp"
+#include "valve/valve_geometry.hpp"
 
 namespace valsalva::app {
 
@@ -123,6 +124,17 @@ void print_summary(const valve::ClosingResult& r) {
       1e3 * r.max_stress_to_attachment);
 }
 
+// The frame's inner radius from valve.toml beside the leaflet mesh (make-valve writes both).
+double annulus_from_valve_toml(const fs::path& leaflets) {
+  const fs::path toml = leaflets.parent_path() / "valve.toml";
+  if (!fs::exists(toml))
+    throw std::invalid_argument(fmt::format(
+        "close-leaflets: no {} beside the leaflet mesh: give --annulus-radius (metres)",
+        toml.string()));
+  const valve::ValveGeometry g = valve::read_valve_toml(toml);
+  return g.root_radius() - g.frame_thickness;
+}
+
 int run(const Options& o) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -134,11 +146,9 @@ int run(const Options& o) {
     if (fs::exists(p) && !o.overwrite)
       throw std::invalid_argument(
           fmt::format("close-leaflets: {} exists (give --overwrite to replace it)", p.string()));
-  if (!(o.annulus_radius > 0))
-    throw std::invalid_argument("close-leaflets: --annulus-radius must be > 0 (metres)");
-  const structure::SolidMesh mesh = io::read_solid_gmsh(o.leaflets);
+  const structure::SolidMesh mesh = valve::read_valve_leaflets(o.leaflets);
   structure::ValveFrame frame;
-  frame.annulus_radius = o.annulus_radius;
+  frame.annulus_radius = o.annulus_radius > 0 ? o.annulus_radius : annulus_from_valve_toml(o.leaflets);
   const valve::ClosingResult r = valve::close_leaflets(mesh, frame, o.closing);
   if (!r.newton.converged)
     throw std::runtime_error(fmt::format(
@@ -165,7 +175,8 @@ CLI::App* add_close_leaflets(CLI::App& cli, std::function<int()>& action) {
   c->add_option("--pressure", o->closing.pressure,
                 "Pressure on the aortic faces [Pa] (default 12400, 93 mmHg)");
   c->add_option("--annulus-radius", o->annulus_radius,
-                "Radius of the annulus disc for the orifice area [m]");
+                "Radius of the annulus disc for the orifice area [m] (default: the frame's inner "
+                "radius from valve.toml beside the leaflet mesh)");
   c->add_option("--load-steps", o->closing.load_steps, "Initial pressure increments (default 10)");
   c->add_option("--shear-modulus", o->closing.shear_modulus, "Neo-Hookean G [Pa] (2.4e6)");
   c->add_option("--bulk-modulus", o->closing.bulk_modulus, "Neo-Hookean K [Pa] (1.6e6)");

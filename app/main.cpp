@@ -8,6 +8,7 @@
 
 #include "app/command_close_leaflets.hpp"
 #include "app/command_compare_piv.hpp"
+#include "app/command_make_valve.hpp"
 #include "app/command_psd.hpp"
 #include "app/commands.hpp"
 
@@ -62,6 +63,8 @@ int main(int argc, char** argv) {
   auto* psd_cmd = valsalva::app::add_psd(cli, psd);
   std::function<int()> close_leaflets;
   auto* close_cmd = valsalva::app::add_close_leaflets(cli, close_leaflets);
+  std::function<int()> make_valve;
+  auto* make_valve_cmd = valsalva::app::add_make_valve(cli, make_valve);
 
   int code = 0;
   try {
@@ -81,6 +84,7 @@ int main(int argc, char** argv) {
     if (*piv) code = compare_piv();
     if (*psd_cmd) code = psd();
     if (*close_cmd) code = close_leaflets();
+    if (*make_valve_cmd) code = make_valve();
   } catch (const std::exception& e) {
     // Inputs are read on every rank, so every rank fails alike; with several ranks a failure on
     // one rank alone must not leave the others waiting in a collective.

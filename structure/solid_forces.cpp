@@ -9,6 +9,33 @@ namespace valsalva::structure {
 
 SolidForces::SolidForces(const SolidMesh& mesh, const Material& material, std::array<int, 3> gauss)
     : mesh_(mesh), material_(material), nen_(mesh.nodes_per_element()) {
+  setup(gauss);
+}
+
+namespace {
+const Material& first_material(const SolidMesh& mesh, const std::vector<const Material*>& m) {
+  if (m.size() != static_cast<std::size_t>(mesh.num_elements()) || m.empty())
+    throw std::invalid_argument(fmt::format("solid mesh {}: {} element materials for {} elements",
+                                            mesh.source, m.size(), mesh.num_elements()));
+  for (std::size_t e = 0; e < m.size(); ++e)
+    if (!m[e])
+      throw std::invalid_argument(
+          fmt::format("solid mesh {}: element {} has no material", mesh.source, e));
+  return *m.front();
+}
+}  // namespace
+
+SolidForces::SolidForces(const SolidMesh& mesh, std::vector<const Material*> element_materials,
+                         std::array<int, 3> gauss)
+    : mesh_(mesh),
+      material_(first_material(mesh, element_materials)),
+      element_materials_(std::move(element_materials)),
+      nen_(mesh.nodes_per_element()) {
+  setup(gauss);
+}
+
+void SolidForces::setup(std::array<int, 3> gauss) {
+  const SolidMesh& mesh = mesh_;
   const QuadratureRule q = gauss_hex(gauss);
   ngp_ = q.size();
   weights_ = q.weights;
@@ -80,7 +107,7 @@ double SolidForces::forces_kernel(const double* x, double* f) const {
       const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> Jinv(ji + 9 * g);
       const Mat3 F = dxdxi * Jinv;
       min_det = std::min(min_det, F.determinant());
-      const Mat3 Q = wd[g] * material_.pk1(F) * Jinv.transpose();
+      const Mat3 Q = wd[g] * material(e).pk1(F) * Jinv.transpose();
       for (int i = 0; i < 3; ++i)
         for (int k = 0; k < 3; ++k) {
           const double q = Q(i, k);
@@ -193,7 +220,7 @@ double SolidForces::assemble(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& f,
       }
       const Mat3 F = dxdxi * Jinv;
       min_det = std::min(min_det, F.determinant());
-      material_.pk1_tangent(F, P, A);
+      material(e).pk1_tangent(F, P, A);
       for (int a = 0; a < nen_; ++a) {
         const Vec3 g3(gN[3 * a], gN[3 * a + 1], gN[3 * a + 2]);
         f.col(en[a]) -= w * (P * g3);

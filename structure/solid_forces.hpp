@@ -32,9 +32,20 @@ class SolidForces {
   SolidForces(const SolidMesh& mesh, const Material& material, std::array<int, 3> gauss);
   SolidForces(const SolidMesh& mesh, const Material& material)
       : SolidForces(mesh, material, default_gauss(mesh.order)) {}
+  // One material per element (an anisotropic law with each element's own fibre axes, e.g.
+  // valve/leaflet_fibres.hpp); the materials must outlive this object. Uses the generic
+  // per-Gauss-point material call (no inline neo-Hookean pack kernel).
+  SolidForces(const SolidMesh& mesh, std::vector<const Material*> element_materials,
+              std::array<int, 3> gauss);
+  SolidForces(const SolidMesh& mesh, std::vector<const Material*> element_materials)
+      : SolidForces(mesh, std::move(element_materials), default_gauss(mesh.order)) {}
 
   const SolidMesh& mesh() const { return mesh_; }
+  // The material of element 0 (of every element unless one per element was given).
   const Material& material() const { return material_; }
+  const Material& material(int element) const {
+    return element_materials_.empty() ? material_ : *element_materials_[element];
+  }
   int gauss_points_per_element() const { return ngp_; }
 
   // f (3 x nodes, resized by the caller) = internal forces at positions x. Returns the smallest
@@ -67,6 +78,7 @@ class SolidForces {
   double forces_kernel(const double* x, double* f) const;
   template <int NX, int NY, int NZ>
   double sumfact_kernel(const double* x, double* f) const;
+  void setup(std::array<int, 3> gauss);
   void setup_sumfact(const QuadratureRule& q, std::array<int, 3> gauss);
 
   struct SumFact;  // solid_forces_sumfact.cpp
@@ -75,6 +87,7 @@ class SolidForces {
 
   const SolidMesh& mesh_;
   const Material& material_;
+  std::vector<const Material*> element_materials_;  // empty: material_ everywhere
   int nen_, ngp_;
   std::vector<double> weights_;  // reference rule weights (ngp)
   std::vector<double> dNxi_;     // [g][k][a]: dN_a/dxi_k, shared by all elements

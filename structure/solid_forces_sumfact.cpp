@@ -234,7 +234,8 @@ void SolidForces::setup_sumfact(const QuadratureRule& q, std::array<int, 3> gaus
       for (int l = 0; l < kLanes; ++l)
         s->node[(static_cast<std::size_t>(b) * 27 + a) * kLanes + l] =
             mesh_.element_nodes(elem(b, l))[perm[a]];
-  if (const auto gk = material_.neo_hookean_parameters()) {
+  if (const auto gk =
+          element_materials_.empty() ? material_.neo_hookean_parameters() : std::nullopt) {
     s->neo_hookean = true;
     s->G = (*gk)[0];
     s->K = (*gk)[1];
@@ -293,7 +294,7 @@ double SolidForces::sumfact_kernel(const double* x, double* f) const {
           const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> Jinv(ji + 9 * g);
           const Mat3 F = dxdxi * Jinv;
           min_det = std::min(min_det, F.determinant());
-          const Mat3 Q = wd[g] * material_.pk1(F) * Jinv.transpose();
+          const Mat3 Q = wd[g] * material(e).pk1(F) * Jinv.transpose();
           for (int c = 0; c < 3; ++c)
             for (int k = 0; k < 3; ++k) G[c][k][g][l] = Q(c, k);
         }

@@ -19,7 +19,7 @@ NodalStress nodal_stress(const SolidForces& forces, const Eigen::Matrix3Xd& x) {
   for (int e = 0; e < m.num_elements(); ++e)
     for (int a = 0; a < nen; ++a) {
       const Mat3 F = forces.deformation_gradient(x, e, hex_reference_node(m.order, a));
-      const Mat3 s = forces.material().pk1(F) * F.transpose() / F.determinant();
+      const Mat3 s = forces.material(e).pk1(F) * F.transpose() / F.determinant();
       const Mat3 E = 0.5 * (F.transpose() * F - Mat3::Identity());
       const int node = m.element_nodes(e)[a];
       sig.col(node) +=

@@ -10,6 +10,7 @@ Case taylor_green_case();
 Case turek_hron_csm_case();
 Case strip_bending_case();
 Case leaflet_closure_case();
+Case valve_closure_case();
 Case membrane_relaxation_case();
 Case tgv_inviscid_case();
 Case stability_case();
@@ -33,6 +34,7 @@ const std::vector<Case>& all_cases() {
       turek_hron_csm_case(),
       strip_bending_case(),
       leaflet_closure_case(),
+      valve_closure_case(),
       membrane_relaxation_case(),
       tgv_inviscid_case(),
       stability_case(),

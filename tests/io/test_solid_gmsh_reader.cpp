@@ -14,6 +14,7 @@
 #include "io/solid_gmsh_reader.hpp"
 #include "structure/loads.hpp"
 #include "structure/solid_forces.hpp"
+#include "tests/structure/solid_volume.hpp"
 
 using namespace valsalva;
 namespace fs = std::filesystem;
@@ -56,19 +57,7 @@ fs::path make_box(int order, bool tets = false) {
 }
 
 double volume(const structure::SolidMesh& m) {
-  const auto q = structure::gauss_hex(structure::default_gauss(m.order));
-  const int nen = m.nodes_per_element();
-  std::vector<double> N(nen), dN(3 * nen);
-  double V = 0;
-  for (int e = 0; e < m.num_elements(); ++e)
-    for (int g = 0; g < q.size(); ++g) {
-      structure::hex_shape(m.order, q.points[g], N, dN);
-      structure::Mat3 J = structure::Mat3::Zero();
-      for (int n = 0; n < nen; ++n)
-        for (int k = 0; k < 3; ++k) J.col(k) += m.X.col(m.element_nodes(e)[n]) * dN[3 * n + k];
-      V += q.weights[g] * J.determinant();
-    }
-  return V;
+  return structure::testing::solid_volume(m);
 }
 
 }  // namespace

@@ -41,3 +41,6 @@ TEST_CASE("leaflet_closure --quick") {
 TEST_CASE("contact_patch --quick") {
   run_quick("contact_patch");
 }
+TEST_CASE("valve_closure --quick") {
+  run_quick("valve_closure");
+}

@@ -20,33 +20,25 @@
 #include <cmath>
 
 #include "io/solid_output.hpp"
-#include "structure/mesh_generators.hpp"
 #include "structure/stress_recovery.hpp"
 #include "validation/case.hpp"
+#include "valve/leaflet_mesh.hpp"
 
 namespace valsalva::validation {
 
 using namespace valsalva::structure;
 
 SolidMesh scalloped_leaflet(const LeafletGeometry& g, int n_angle, int n_height) {
-  SolidMesh m = structured_block(HexOrder::q2, {n_angle, n_height, 1}, [&](const Vec3& s) {
-    const double q = 2 * s[0] - 1, th = 0.5 * q * g.angle;
-    const double za = (g.height - g.post) * q * q;
-    const double r = g.radius + (s[2] - 0.5) * g.thickness;
-    return Vec3(r * std::cos(th), r * std::sin(th), za + s[1] * (g.height - za));
-  });
-  m.source = fmt::format("<scalloped leaflet R={} t={} H={} post={}>", g.radius, g.thickness,
-                         g.height, g.post);
-  std::vector<int> att = m.node_set("v0");
-  for (const char* side : {"u0", "u1"})
-    att.insert(att.end(), m.node_set(side).begin(), m.node_set(side).end());
-  std::sort(att.begin(), att.end());
-  att.erase(std::unique(att.begin(), att.end()), att.end());
-  m.node_sets["attachment"] = att;
-  alias_sets(m, "v1", "free_edge");
-  alias_sets(m, "w0", "inner");
-  alias_sets(m, "w1", "outer");
-  return m;
+  valve::LeafletPatch p;
+  p.radius = g.radius;
+  p.thickness = g.thickness;
+  p.span = g.angle;
+  p.z_base = 0;
+  p.z_free = g.height;
+  p.side_attachment = g.post;
+  p.n_angle = n_angle;
+  p.n_height = n_height;
+  return valve::scalloped_leaflet(p);
 }
 
 LeafletClosure close_leaflet(bool fine, double pressure, bool verbose) {
@@ -61,9 +53,9 @@ LeafletClosure close_leaflet(bool fine, double pressure, bool verbose) {
   StaticProblem prob;
   prob.forces = &forces;
   prob.dirichlet.push_back({c.mesh.node_set("attachment"), {true, true, true}, {}});
-  // Outward normal of "outer" points away from the axis; positive pressure pushes into the solid,
-  // i.e. towards the axis.
-  prob.pressures.push_back({c.mesh.surface_set("outer"), pressure});
+  // Outward normal of "aortic_face" (outer) points away from the axis; positive pressure pushes
+  // into the solid, i.e. towards the axis.
+  prob.pressures.push_back({c.mesh.surface_set("aortic_face"), pressure});
   NewtonOptions o;
   o.load_steps = 5;
   o.damping = 1e-2;  // pseudo-transient continuation through the snap-through

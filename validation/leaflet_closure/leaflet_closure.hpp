@@ -23,8 +23,9 @@ struct LeafletClosure {
   double seconds = 0;      // wall time of the static solve
 };
 
-// Q2 mesh n_angle x n_height x 1 with node/surface sets "attachment" (scallop + both posts, the
-// clamped curve including the commissures), "free_edge", "inner", "outer".
+// Q2 mesh n_angle x n_height x 1 (valve::scalloped_leaflet) with node/surface sets "attachment"
+// (scallop + both posts, the clamped curve including the commissures), "free_edge",
+// "ventricular_face" (inner), "aortic_face" (outer).
 structure::SolidMesh scalloped_leaflet(const LeafletGeometry& g, int n_angle, int n_height);
 
 // fine: 512 Q2 elements (one leaflet of the reference study's 1536-element mesh), else 128.
