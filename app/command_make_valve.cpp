@@ -49,8 +49,8 @@ int run(const Options& o) {
     const auto& a = r.attachment;
     fmt::print(
         "make-valve: attachment nodes: {} in all, {} inside the fluid mesh, {} on its "
-        "boundary (frame edge), {} in the frame's part within the root wall\n",
-        a.nodes, a.inside, a.on_boundary, a.in_frame_wall);
+        "boundary, {} on the frame (its edge or its part within the root wall), {} elsewhere\n",
+        a.nodes, a.inside, a.on_boundary, a.on_frame, a.lost);
     valve::require_attachment(a, std::filesystem::path(o.out) / "root.msh",
                               std::filesystem::path(o.out) / "leaflets.msh");
   }

@@ -39,8 +39,9 @@ void require_attachment(const AttachmentCheck& c, const fs::path& root_msh,
   if (c.lost > 0)
     throw std::runtime_error(fmt::format(
         "make-valve: {} of {} attachment nodes of '{}' lie neither in the fluid mesh '{}' nor on "
-        "the frame",
-        c.lost, c.nodes, leaflets_msh.string(), root_msh.string()));
+        "the frame (the first: node {} at ({:.6g}, {:.6g}, {:.6g}) m)",
+        c.lost, c.nodes, leaflets_msh.string(), root_msh.string(), c.first_lost + 1,
+        c.first_lost_at[0], c.first_lost_at[1], c.first_lost_at[2]));
 }
 
 AttachmentCheck check_attachment(const fs::path& root_msh, const fs::path& leaflets_msh,
@@ -56,11 +57,12 @@ AttachmentCheck check_attachment(const fs::path& root_msh, const fs::path& leafl
       ++c.inside;
     else if (locator.locate(x, 0.05))
       ++c.on_boundary;
-    else if (on_frame(g, x.x(), x.y(), x.z(), 1e-9) &&
-             std::hypot(x.x(), x.y()) >= g.root_radius() - 1e-12)
-      ++c.in_frame_wall;
-    else
-      ++c.lost;
+    else if (on_frame(g, x.x(), x.y(), x.z(), 1e-6 * g.root_diameter))
+      ++c.on_frame;
+    else if (c.lost++ == 0) {
+      c.first_lost = n;
+      c.first_lost_at = {x.x(), x.y(), x.z()};
+    }
   }
   return c;
 }

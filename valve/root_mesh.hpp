@@ -2,9 +2,10 @@
 // Gmsh's OpenCASCADE kernel, the rigid frame cut out of it, linear tetrahedra of size mesh_size.
 //
 // Construction: inflow cylinder r = R from the inlet to z = ring_height / 2; the sinus region as a
-// loft (ThruSections) through closed periodic splines r_wall(theta, z_k) at sections every
-// ~0.7 mm up to the STJ (the first and last sections exact circles, so that they join the
-// cylinders exactly); a cone to the aorta; the aorta cylinder to the outlet; all fused. The frame
+// ruled loft (ThruSections) through closed periodic splines through r_wall(theta, z_k) at 24
+// angles, sections every 2 mm up to the STJ (the first and last sections exact circles, so that
+// they join the cylinders exactly); the frame cut out of these two; then fused with a cone to
+// the aorta and the aorta cylinder to the outlet. The frame
 // is the tube R - frame_thickness <= r <= R + bury, 0 <= z <= post_height, from which three lofts
 // through radial rectangles above the scallop remove the part between the posts. The frame's
 // outer radius R + bury lies inside the root wall (no coincident surfaces for the boolean cut,

@@ -55,8 +55,8 @@ struct ValveGeometry {
   double stj_diameter = 28e-3;
   double aorta_diameter = 31e-3;
   double aorta_transition_length = 6e-3;
-  double inlet_length = 25e-3;
-  double outlet_length = 75e-3;
+  double inlet_length = 50e-3;
+  double outlet_length = 92e-3;
   double mesh_size = 1e-3;
 
   // Derived quantities.
