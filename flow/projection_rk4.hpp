@@ -11,6 +11,15 @@
 // correction at t + dt; dp is Neumann at velocity boundaries and Dirichlet (dp = 0) at pressure
 // outlets (the caller puts BoundaryConditions::pressure_dirichlet() into poisson.dirichlet).
 // Periodic patches carry no boundary faces.
+// Face flux (flow/face_flux.hpp): the projection also corrects the dual-face volume flux F with
+// the Poisson matrix's own compact gradient, so that sum_k F_jk + B_j = 0 at every node to the
+// Poisson tolerance; F is part of the state (face_flux(), saved in checkpoints). The convective
+// term of stage i is the skew-symmetric form (flow/convection_scheme.hpp) carried by
+//   F_i = P_c(w_{i-1}) + [F^n - P_p(v^n)],
+// P_p the projection divergence's face value, P_c the scheme's ((u_j + u_k)/2 for central2,
+// the Hermite value for central4): F^n at the first stage, following the stage velocity after
+// it (the time order of the nodal flux is kept). The convective term is energy-neutral for any
+// F; F^n is what makes it consistent with div(u u).
 #pragma once
 
 #include <functional>
@@ -78,11 +87,30 @@ class ProjectionRK4 {
   ProjectionRK4(const LocalMesh& mesh, ProjectionOptions options,
                 std::vector<double> poisson_weights = {});
 
-  // Advances `state` by dt; ghosts of the state are valid on return.
+  // Advances `state` by dt; ghosts of the state are valid on return. The face flux of the last
+  // step is used when state.velocity is still the velocity it belongs to; otherwise (a new or
+  // modified state) it starts from the face value of the nodal velocity.
   StepReport step(FlowState& state, double dt);
 
-  // Momentum right-hand side without the pressure gradient: -div(u u) + nu lap(u); `stage` is
-  // handed to the subgrid hook.
+  // The projection of step() on its own (no pressure damping, dt / rho = 1): solves
+  // lap(q) = div(u) with the face flux of u, corrects u -= grad q and the face flux by the
+  // compact gradient of q, and keeps that flux as the state's for `u` (velocity boundary
+  // conditions are not imposed). `q` is the warm start on entry, the solution on return.
+  PoissonResult project(VectorField& u, ScalarField& q);
+
+  // The face flux of the state (one value per local edge, LocalMesh::edges orientation) and the
+  // velocity it belongs to: restarts set both (a checkpoint stores the flux by global edge).
+  const EdgeField& face_flux() const { return flux_; }
+  void set_face_flux(const EdgeField& flux, const VectorField& velocity);
+  // The flux the convective term of a step's first stage uses for `u`: face_flux() when u is
+  // the velocity it belongs to, else the face value of u.
+  const EdgeField& convective_flux(const VectorField& u);
+
+  // Momentum right-hand side without the pressure gradient: -div(u u) + nu lap(u) with the
+  // convective term carried by `flux` (one value per local edge); `stage` is handed to the
+  // subgrid hook.
+  void momentum_rhs(const VectorField& u, const EdgeField& flux, VectorField& rhs, int stage = 0);
+  // The same with the flux of a step's first stage for u (convective_flux(u)).
   void momentum_rhs(const VectorField& u, VectorField& rhs, int stage = 0);
 
   const std::vector<double>& laplacian_weights() const { return weights_; }
@@ -118,14 +146,19 @@ class ProjectionRK4 {
   std::unique_ptr<ConvectionScheme> convection_;
   std::unique_ptr<Order4Operators> order4_;  // only with options.fourth_order_operators
   PressurePoisson poisson_;
-  ScalarField dp_, div_;            // dp_ is kept between steps: warm start of the next solve
-  ScalarField div_grad_p_, lap_p_;  // pressure damping with boundary conditions (step())
-  // Owned values of the Poisson matrix's operator applied to p (per unit volume), plus the
-  // boundary-face flux of grad p.
-  void matrix_laplacian(const ScalarField& p, const VectorField& grad_p, ScalarField& out) const;
+  ScalarField dp_, div_;  // dp_ is kept between steps: warm start of the next solve
   // The pressure gradient and the divergence of the projection: 2nd or 4th order.
   void pressure_gradient(const ScalarField& p, VectorField& grad);
   void projection_divergence(const VectorField& u, ScalarField& div);
+  // F = P_p(u) (projection_flux) or P_c(u) (scheme_flux) on every local edge.
+  void projection_flux(const VectorField& u, EdgeField& flux);
+  void scheme_flux(const VectorField& u, EdgeField& flux);
+  // Solves lap(dp) = (rho/dt) div(F) (with the boundary flux of u) and corrects u and F; dp is
+  // the warm start on entry.
+  PoissonResult correct(VectorField& u, EdgeField& flux, double dt_over_rho, ScalarField& dp);
+  EdgeField flux_, stage_flux_, flux_offset_;
+  VectorField flux_velocity_;  // the velocity flux_ belongs to (empty: none)
+  TensorField grad_flux_;      // velocity gradient of the Hermite face value
   VectorField grad_p_, rhs_, conv_, stage_;
   TensorField grad_u_;
   ScalarField nu_sgs_, nu_eff_;  // LES only: subgrid and total viscosity
