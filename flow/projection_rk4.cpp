@@ -212,7 +212,7 @@ StepReport ProjectionRK4::step(FlowState& state, double dt) {
   // Projection: lap(dp) = rho div(v*) / dt, warm-started from the previous increment, with the
   // divergence of the predicted face flux F* = P_p(v*) (+ the damping flux below).
   projection_flux(stage_, flux_);
-  if (bc && options_.pressure_damping) {
+  if ((bc || options_.periodic_pressure_damping) && options_.pressure_damping) {
     // Pressure damping (Rhie & Chow, AIAA J. 21, 1983, in its node-centred form): the face flux
     // of v* takes the face-velocity correction dt/rho (avg(grad p^n) - grad p^n|_face), i.e.
     // the divergence gains div(grad p^n) - lap(p^n) with the wide divergence of the wide
