@@ -17,9 +17,14 @@
 // term of stage i is the skew-symmetric form (flow/convection_scheme.hpp) carried by
 //   F_i = P_c(w_{i-1}) + [F^n - P_p(v^n)],
 // P_p the projection divergence's face value, P_c the scheme's ((u_j + u_k)/2 for central2,
-// the Hermite value for central4): F^n at the first stage, following the stage velocity after
-// it (the time order of the nodal flux is kept). The convective term is energy-neutral for any
-// F; F^n is what makes it consistent with div(u u).
+// the Hermite value for central4): F^n at the first stage when P_c = P_p, following the stage
+// velocity after it (the time order of the nodal flux is kept). The convective term is
+// energy-neutral for any F; the projected F^n is what makes it consistent with div(u u).
+// Mass balance: at walls and inlets the boundary flux B_j = u_j . A_j that the projection used
+// is the one the next step sees (both are the imposed values); at outlets the corrected (held)
+// velocity changes B_j after the projection, and Dirichlet (pressure-outlet) nodes are not
+// balanced by the Poisson solve, so there F is not divergence-free: the convective term's
+// energy contribution is still exactly the kinetic-energy flux sum_j B_j |u_j|^2 / 2.
 #pragma once
 
 #include <functional>
@@ -151,6 +156,9 @@ class ProjectionRK4 {
   ProjectionOptions options_;
   std::vector<double> weights_, poisson_weights_;
   std::unique_ptr<ConvectionScheme> convection_;
+  // central4 without the 4th-order operators: the flux form apply(u, conv), not energy-neutral
+  // (the skew form is not yet validated on that, the LES, path).
+  bool old_convection_ = false;
   std::unique_ptr<Order4Operators> order4_;  // only with options.fourth_order_operators
   PressurePoisson poisson_;
   ScalarField dp_, div_;  // dp_ is kept between steps: warm start of the next solve
