@@ -132,6 +132,7 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
   std::int64_t start_step = 0;
   flow::FlowState start;
   flow::ScalarField start_dp, start_nu_sgs;
+  flow::EdgeField start_flux;
   std::uint64_t hash = 0;
   const auto every_steps =
       static_cast<std::int64_t>(scene.get<int>("output.checkpoint_every_steps"));
@@ -152,6 +153,8 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
     if (immersed) immersed->restore(in);
     if (in.has("pressure_increment"))  // the Poisson warm start (bitwise restarts)
       start_dp = io::read_nodal_array(in, local, "pressure_increment");
+    if (in.has("face_flux"))  // the projected face flux of the state (bitwise restarts)
+      start_flux = io::read_edge_array(in, local, "face_flux");
     if (les.subgrid_viscosity && in.has("subgrid_viscosity"))  // the first dt of an LES
       start_nu_sgs = io::read_nodal_array(in, local, "subgrid_viscosity");
     if (analysis) analysis->restore(in);
@@ -214,7 +217,7 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
   run_options.boundary = std::move(boundary);
   flow::RunLoop loop(mesh, metrics, local, run_options, sink);
   if (checkpoint) {
-    loop.resume(std::move(start), start_step, start_dp, start_nu_sgs);
+    loop.resume(std::move(start), start_step, start_dp, start_nu_sgs, start_flux);
     les.resume(loop.subgrid_viscosity());
   }
   if (analysis && !checkpoint) analysis->sample(loop.state(), 0);
@@ -258,6 +261,8 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
         for (auto& a : immersed->checkpoint_arrays()) extras.push_back(std::move(a));
       extras.push_back(
           io::nodal_checkpoint_array("pressure_increment", local, loop.pressure_increment()));
+      if (!loop.face_flux().empty())
+        extras.push_back(io::edge_checkpoint_array("face_flux", local, loop.face_flux()));
       if (!loop.subgrid_viscosity().empty())
         extras.push_back(
             io::nodal_checkpoint_array("subgrid_viscosity", local, loop.subgrid_viscosity()));

@@ -94,4 +94,41 @@ void ConvectionCentral4::apply(const VectorField& u, VectorField& conv) {
   const_cast<Halo&>(mesh_.halo).exchange(conv, HaloMode::insert);
 }
 
+void ConvectionCentral4::apply(const VectorField& u, const EdgeField& flux, VectorField& conv) {
+  if (form_ != Form::edge4)
+    throw std::logic_error(
+        "flow::ConvectionCentral4: the deconvolution form has no skew-symmetric form (it is kept "
+        "only to measure its truncation order)");
+  if (u.size() != static_cast<std::size_t>(mesh_.num_local()) || flux.size() != mesh_.edges.size())
+    throw std::invalid_argument("flow::ConvectionCentral4: " + std::to_string(u.size()) +
+                                " velocities and " + std::to_string(flux.size()) +
+                                " face fluxes for " + std::to_string(mesh_.num_local()) +
+                                " nodes and " + std::to_string(mesh_.edges.size()) + " edges");
+  const int n = mesh_.num_local();
+  local_gradient(mesh_, u, grad_);  // owned and layer-1 ghosts
+  // T_i on every local node (complete at owned and layer-1 ghosts: all their edges are local).
+  adjoint_.assign(n, Eigen::Matrix3d::Zero());
+  for (std::size_t e = 0; e < mesh_.edges.size(); ++e) {
+    const auto [j, k] = mesh_.edges[e];
+    const Eigen::Matrix3d a = (flux[e] / 6.0) * (u[j] - u[k]) * mesh_.edge_vector[e].transpose();
+    adjoint_[j] += a;
+    adjoint_[k] -= a;
+  }
+  for (int i = 0; i < n; ++i)
+    adjoint_[i] = adjoint_[i] * mesh_.gradient_correction[i] / mesh_.volume[i];
+  conv.assign(n, Eigen::Vector3d::Zero());
+  for (int e = 0; e < mesh_.num_owned_edges; ++e) {
+    const auto [j, k] = mesh_.edges[e];
+    const double half = 0.5 * flux[e];
+    // (1/2) [Q - Q^*]: the Hermite flux F (G_j - G_k) d / 6 and the adjoint (W_j + W_k) S / 2.
+    const Eigen::Vector3d q = (half / 6.0) * ((grad_[j] - grad_[k]) * mesh_.edge_vector[e]);
+    const Eigen::Vector3d q_adj = 0.25 * (adjoint_[j] + adjoint_[k]) * mesh_.edge_normal[e];
+    conv[j] += half * u[k] + q + q_adj;
+    conv[k] -= half * u[j] + q + q_adj;
+  }
+  for (const auto& b : mesh_.boundary) conv[b.node] += 0.5 * u[b.node].dot(b.area) * u[b.node];
+  for (int i = 0; i < mesh_.num_owned; ++i) conv[i] /= mesh_.volume[i];
+  const_cast<Halo&>(mesh_.halo).exchange(conv, HaloMode::insert);
+}
+
 }  // namespace valsalva::flow

@@ -20,7 +20,22 @@
 // values misses. On uniform hexahedra this is the classical 4th-order centred difference
 // (7/12, -1/12 weights). On irregular meshes the order drops (measured, tests/flow).
 //
-// Not energy-conserving: the Hermite term and the product term are not skew-symmetric, and the
+// apply(u, flux, conv), the solver's form: the skew-symmetric part of the transport by the
+// projected face flux F (flow/convection_scheme.hpp), C_F(u)_j = sum_k F_jk u~_jk(u):
+//   V_j conv_j = (1/2) sum_k F_jk u_k + (1/2) [Q(u) - Q^*(u)]_j + B_j u_j / 2,
+//   Q(u)_j = sum_k F_jk (G_j - G_k) d / 6      (the Hermite part of u~)
+//   Q^*(u)_j = sum_k (W_j + W_k) S_jk / 2,  W_i = T_i M_i / V_i,  T_i = sum_k F_ik (u_i - u_k) d^T
+//   / 6
+// (Q^* is the adjoint of Q through the gradient G_i = (1/V_i) sum_k (u_k - u_i) S^T M_i^T / 2).
+// The product term above is a symmetric operator of the transported field, so it has no skew
+// part and drops out. The split (skew-symmetric) form is how 4th-order centred schemes keep
+// kinetic energy (Kuya, Totani & Kawai, J. Comput. Phys. 375, 823-853, 2018; Pirozzoli, Annu.
+// Rev. Fluid Mech. 43, 163-194, 2011); with F the 4th-order projected flux S . u~ the two forms
+// agree where sum_k F_jk + B_j = 0. Exactly energy-neutral for any F (round-off), the order
+// it keeps is measured (validation/taylor_green).
+//
+// apply(u, conv), the flux form with the product term (the truncation tests' operator), is not
+// energy-conserving: the Hermite term and the product term are not skew-symmetric, and the
 // 4th-order mass flux u~.S is not the projection's divergence. Tried and not kept: subtracting
 // u_j/2 times the divergence of that mass flux (the usual skew correction of collocated
 // schemes; the truncation order stays 3.99) stops the no-model TGV Re 1600 from blowing up at
@@ -54,6 +69,8 @@ class ConvectionCentral4 final : public ConvectionScheme {
 
   explicit ConvectionCentral4(const LocalMesh& mesh, Form form = Form::edge4);
   void apply(const VectorField& u, VectorField& conv) override;
+  // The skew-symmetric form (edge4 only; the deconvolution form throws std::logic_error).
+  void apply(const VectorField& u, const EdgeField& flux, VectorField& conv) override;
   std::string name() const override {
     return form_ == Form::edge4 ? "central4" : "central4_deconvolution";
   }
@@ -64,6 +81,7 @@ class ConvectionCentral4 final : public ConvectionScheme {
   const LocalMesh& mesh_;
   Form form_;
   TensorField grad_;
+  TensorField adjoint_;                                  // T_i, then W_i, of the skew form
   VectorField nodal_;                                    // deconvolution form: point values
   std::vector<std::array<Eigen::Matrix3d, 3>> hessian_;  // per component, deconvolution form
 };

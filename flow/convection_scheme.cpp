@@ -13,6 +13,9 @@ class ConvectionCentral2 final : public ConvectionScheme {
  public:
   explicit ConvectionCentral2(const LocalMesh& mesh) : mesh_(mesh) {}
   void apply(const VectorField& u, VectorField& conv) override { convection(mesh_, u, u, conv); }
+  void apply(const VectorField& u, const EdgeField& flux, VectorField& conv) override {
+    skew_convection(mesh_, u, flux, conv);
+  }
   std::string name() const override { return "central2"; }
 
  private:

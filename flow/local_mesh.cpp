@@ -153,6 +153,8 @@ LocalMesh distribute(const Mesh& mesh, const DualMetrics& m, MPI_Comm mpi_comm,
       local.edges.push_back({flip ? b : a, flip ? a : b});
       local.edge_normal.push_back(flip ? Eigen::Vector3d(-m.edge_normal[e]) : m.edge_normal[e]);
       local.edge_vector.push_back(flip ? Eigen::Vector3d(-m.edge_vector[e]) : m.edge_vector[e]);
+      local.global_edge.push_back(static_cast<GlobalIndex>(e));
+      local.edge_flipped.push_back(flip ? 1 : 0);
     }
     if (pass == 0) local.num_owned_edges = static_cast<int>(local.edges.size());
   }

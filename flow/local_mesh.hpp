@@ -41,6 +41,11 @@ struct LocalMesh {
   std::vector<Eigen::Vector3d> edge_normal;
   std::vector<Eigen::Vector3d> edge_vector;
   int num_owned_edges = 0;
+  // Index of each local edge in DualMetrics::edges, and whether the local orientation (lower to
+  // higher local index) is the reverse of the global one (lower to higher dual node): edge data
+  // such as the face mass flux is stored by global edge in checkpoints.
+  std::vector<GlobalIndex> global_edge;
+  std::vector<char> edge_flipped;
 
   struct BoundaryFace {
     int node = 0;

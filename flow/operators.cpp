@@ -143,6 +143,25 @@ void convection(const LocalMesh& mesh, const VectorField& u, const VectorField& 
   finish_field(mesh, conv, 3);
 }
 
+void skew_convection(const LocalMesh& mesh, const VectorField& u, const std::vector<double>& flux,
+                     VectorField& conv) {
+  check_size(mesh, u.size(), "u");
+  if (flux.size() != mesh.edges.size())
+    throw std::invalid_argument("flow::skew_convection: " + std::to_string(flux.size()) +
+                                " face fluxes for " + std::to_string(mesh.edges.size()) +
+                                " local edges");
+  conv.assign(mesh.num_local(), Eigen::Vector3d::Zero());
+  for (int e = 0; e < mesh.num_owned_edges; ++e) {
+    const auto [j, k] = mesh.edges[e];
+    const double half = 0.5 * flux[e];
+    conv[j] += half * u[k];
+    conv[k] -= half * u[j];
+  }
+  for (const auto& b : mesh.boundary) conv[b.node] += 0.5 * u[b.node].dot(b.area) * u[b.node];
+  for (int i = 0; i < mesh.num_owned; ++i) conv[i] /= mesh.volume[i];
+  finish_field(mesh, conv, 3);
+}
+
 void viscous(const LocalMesh& mesh, const std::vector<double>& weights, double nu,
              const VectorField& v, const TensorField& grad, VectorField& out, bool correction) {
   check_size(mesh, v.size(), "v");

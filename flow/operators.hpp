@@ -53,6 +53,13 @@ void laplacian(const LocalMesh& mesh, const std::vector<double>& weights, const 
 void convection(const LocalMesh& mesh, const VectorField& u, const VectorField& v,
                 VectorField& conv);
 
+// The skew-symmetric 2nd-order convective term carried by the face flux F (one value per local
+// edge, flow/face_flux.hpp): conv_j = (1/2V_j) [sum_k F_jk u_k + sum_faces (u_j . A_j) u_j]
+// (see flow/convection_scheme.hpp); sum_j V_j u_j . conv_j is the boundary faces' kinetic-energy
+// flux to round-off, for any F.
+void skew_convection(const LocalMesh& mesh, const VectorField& u, const std::vector<double>& flux,
+                     VectorField& conv);
+
 // Viscous term nu lap(v) for constant nu, per unit volume, componentwise Laplacian with the
 // same correction; `grad` is the velocity gradient tensor.
 // correction = false: no non-orthogonal correction (the P1 stiffness weights of

@@ -11,6 +11,20 @@
 // correction at t + dt; dp is Neumann at velocity boundaries and Dirichlet (dp = 0) at pressure
 // outlets (the caller puts BoundaryConditions::pressure_dirichlet() into poisson.dirichlet).
 // Periodic patches carry no boundary faces.
+// Face flux (flow/face_flux.hpp): the projection also corrects the dual-face volume flux F with
+// the Poisson matrix's own compact gradient, so that sum_k F_jk + B_j = 0 at every node to the
+// Poisson tolerance; F is part of the state (face_flux(), saved in checkpoints). The convective
+// term of stage i is the skew-symmetric form (flow/convection_scheme.hpp) carried by
+//   F_i = P_c(w_{i-1}) + [F^n - P_p(v^n)],
+// P_p the projection divergence's face value, P_c the scheme's ((u_j + u_k)/2 for central2,
+// the Hermite value for central4): F^n at the first stage when P_c = P_p, following the stage
+// velocity after it (the time order of the nodal flux is kept). The convective term is
+// energy-neutral for any F; the projected F^n is what makes it consistent with div(u u).
+// Mass balance: at walls and inlets the boundary flux B_j = u_j . A_j that the projection used
+// is the one the next step sees (both are the imposed values); at outlets the corrected (held)
+// velocity changes B_j after the projection, and Dirichlet (pressure-outlet) nodes are not
+// balanced by the Poisson solve, so there F is not divergence-free: the convective term's
+// energy contribution is still exactly the kinetic-energy flux sum_j B_j |u_j|^2 / 2.
 #pragma once
 
 #include <functional>
@@ -43,6 +57,13 @@ struct ProjectionOptions {
   bool stiffness_viscous = false;
   // The pressure damping term of step() (with boundary conditions); false only for studies.
   bool pressure_damping = true;
+  // The same damping also without boundary conditions (periodic boxes). It turns the
+  // incremental projection into a non-incremental one (p^{n+1} = L^-1 div(v* + dt grad p^n /
+  // rho) rho / dt), which removes pressure modes that the wide gradient hardly sees and that
+  // otherwise decay over thousands of steps on irregular tetrahedra (validation/stability), at
+  // the price of an O(h^2) pressure error (twice the Taylor-Green central2 error on hexahedra),
+  // so it is off by default.
+  bool periodic_pressure_damping = false;
   // 4th-order laminar viscous term, pressure gradient and divergence (flow/operators_order4.hpp;
   // the viscous term with the Poisson matrix's edge weights): with central4, a 4th-order
   // velocity on uniform hexahedra and split tetrahedra (validation/taylor_green). The Poisson
@@ -78,11 +99,30 @@ class ProjectionRK4 {
   ProjectionRK4(const LocalMesh& mesh, ProjectionOptions options,
                 std::vector<double> poisson_weights = {});
 
-  // Advances `state` by dt; ghosts of the state are valid on return.
+  // Advances `state` by dt; ghosts of the state are valid on return. The face flux of the last
+  // step is used when state.velocity is still the velocity it belongs to; otherwise (a new or
+  // modified state) it starts from the face value of the nodal velocity.
   StepReport step(FlowState& state, double dt);
 
-  // Momentum right-hand side without the pressure gradient: -div(u u) + nu lap(u); `stage` is
-  // handed to the subgrid hook.
+  // The projection of step() on its own (no pressure damping, dt / rho = 1): solves
+  // lap(q) = div(u) with the face flux of u, corrects u -= grad q and the face flux by the
+  // compact gradient of q, and keeps that flux as the state's for `u` (velocity boundary
+  // conditions are not imposed). `q` is the warm start on entry, the solution on return.
+  PoissonResult project(VectorField& u, ScalarField& q);
+
+  // The face flux of the state (one value per local edge, LocalMesh::edges orientation) and the
+  // velocity it belongs to: restarts set both (a checkpoint stores the flux by global edge).
+  const EdgeField& face_flux() const { return flux_; }
+  void set_face_flux(const EdgeField& flux, const VectorField& velocity);
+  // The flux the convective term of a step's first stage uses for `u`: face_flux() when u is
+  // the velocity it belongs to, else the face value of u.
+  const EdgeField& convective_flux(const VectorField& u);
+
+  // Momentum right-hand side without the pressure gradient: -div(u u) + nu lap(u) with the
+  // convective term carried by `flux` (one value per local edge); `stage` is handed to the
+  // subgrid hook.
+  void momentum_rhs(const VectorField& u, const EdgeField& flux, VectorField& rhs, int stage = 0);
+  // The same with the flux of a step's first stage for u (convective_flux(u)).
   void momentum_rhs(const VectorField& u, VectorField& rhs, int stage = 0);
 
   const std::vector<double>& laplacian_weights() const { return weights_; }
@@ -116,16 +156,24 @@ class ProjectionRK4 {
   ProjectionOptions options_;
   std::vector<double> weights_, poisson_weights_;
   std::unique_ptr<ConvectionScheme> convection_;
+  // central4 without the 4th-order operators: the flux form apply(u, conv), not energy-neutral
+  // (the skew form is not yet validated on that, the LES, path).
+  bool old_convection_ = false;
   std::unique_ptr<Order4Operators> order4_;  // only with options.fourth_order_operators
   PressurePoisson poisson_;
-  ScalarField dp_, div_;            // dp_ is kept between steps: warm start of the next solve
-  ScalarField div_grad_p_, lap_p_;  // pressure damping with boundary conditions (step())
-  // Owned values of the Poisson matrix's operator applied to p (per unit volume), plus the
-  // boundary-face flux of grad p.
-  void matrix_laplacian(const ScalarField& p, const VectorField& grad_p, ScalarField& out) const;
+  ScalarField dp_, div_;  // dp_ is kept between steps: warm start of the next solve
   // The pressure gradient and the divergence of the projection: 2nd or 4th order.
   void pressure_gradient(const ScalarField& p, VectorField& grad);
   void projection_divergence(const VectorField& u, ScalarField& div);
+  // F = P_p(u) (projection_flux) or P_c(u) (scheme_flux) on every local edge.
+  void projection_flux(const VectorField& u, EdgeField& flux);
+  void scheme_flux(const VectorField& u, EdgeField& flux);
+  // Solves lap(dp) = (rho/dt) div(F) (with the boundary flux of u) and corrects u and F; dp is
+  // the warm start on entry.
+  PoissonResult correct(VectorField& u, EdgeField& flux, double dt_over_rho, ScalarField& dp);
+  EdgeField flux_, stage_flux_, flux_offset_;
+  VectorField flux_velocity_;  // the velocity flux_ belongs to (empty: none)
+  TensorField grad_flux_;      // velocity gradient of the Hermite face value
   VectorField grad_p_, rhs_, conv_, stage_;
   TensorField grad_u_;
   ScalarField nu_sgs_, nu_eff_;  // LES only: subgrid and total viscosity

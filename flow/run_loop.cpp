@@ -55,7 +55,7 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
 }
 
 void RunLoop::resume(FlowState state, std::int64_t step, const ScalarField& pressure_increment,
-                     const ScalarField& subgrid_viscosity) {
+                     const ScalarField& subgrid_viscosity, const EdgeField& face_flux) {
   const auto n = static_cast<std::size_t>(local_.num_local());
   if (state.velocity.size() != n || state.pressure.size() != n)
     throw RunError(
@@ -67,6 +67,7 @@ void RunLoop::resume(FlowState state, std::int64_t step, const ScalarField& pres
   step_ = step;
   if (!pressure_increment.empty()) solver_.set_pressure_increment(pressure_increment);
   if (!subgrid_viscosity.empty()) solver_.set_subgrid_viscosity(subgrid_viscosity);
+  if (!face_flux.empty()) solver_.set_face_flux(face_flux, state_.velocity);
   resumed_ = true;
 }
 

@@ -136,12 +136,14 @@ class RunLoop {
   // `step` steps instead of the initial condition; log.csv is appended to when it exists.
   // `pressure_increment` (all local nodes; empty = zero) restores the Poisson warm start,
   // `subgrid_viscosity` (all local nodes; empty = zero) the previous step's nu_sgs of an LES,
-  // which bounds the first time step (choose_dt).
+  // which bounds the first time step (choose_dt), `face_flux` (all local edges; empty = the face
+  // value of the velocity) the projected face flux of the state (bitwise restarts).
   void resume(FlowState state, std::int64_t step, const ScalarField& pressure_increment = {},
-              const ScalarField& subgrid_viscosity = {});
+              const ScalarField& subgrid_viscosity = {}, const EdgeField& face_flux = {});
   // The last pressure increment and nu_sgs (for checkpoints; nu_sgs is empty without a model).
   const ScalarField& pressure_increment() const { return solver_.pressure_increment(); }
   const ScalarField& subgrid_viscosity() const { return solver_.subgrid_viscosity(); }
+  const EdgeField& face_flux() const { return solver_.face_flux(); }
 
   // Runs from the initial condition (or the resumed state) to time.end (or max_steps), or until
   // hooks.stop_requested(). Throws RunError.

@@ -146,6 +146,34 @@ flow::ScalarField read_nodal_array(const CheckpointReader& reader, const flow::L
   return reader.read_array(name, rows);
 }
 
+CheckpointArray edge_checkpoint_array(const std::string& name, const flow::LocalMesh& local,
+                                      const std::vector<double>& field) {
+  if (field.size() != local.edges.size())
+    throw std::invalid_argument(
+        fmt::format("edge_checkpoint_array {}: {} values for {} local edges", name, field.size(),
+                    local.edges.size()));
+  std::int64_t count = 0;
+  for (const auto e : local.global_edge) count = std::max<std::int64_t>(count, e + 1);
+  CheckpointArray a{name, local.comm.max(count), 0, {}, {}};
+  for (std::size_t e = 0; e < local.edges.size(); ++e) {
+    const bool flipped = local.edge_flipped[e] != 0;
+    const int first = flipped ? local.edges[e][1] : local.edges[e][0];
+    if (first >= local.num_owned) continue;
+    a.rows.push_back(local.global_edge[e]);
+    a.data.push_back(flipped ? -field[e] : field[e]);
+  }
+  return a;
+}
+
+std::vector<double> read_edge_array(const CheckpointReader& reader, const flow::LocalMesh& local,
+                                    const std::string& name) {
+  const std::vector<std::int64_t> rows(local.global_edge.begin(), local.global_edge.end());
+  std::vector<double> values = reader.read_array(name, rows);
+  for (std::size_t e = 0; e < values.size(); ++e)
+    if (local.edge_flipped[e] != 0) values[e] = -values[e];
+  return values;
+}
+
 std::optional<std::filesystem::path> latest_checkpoint(const std::filesystem::path& dir,
                                                        const std::string& basename) {
   if (!std::filesystem::is_directory(dir)) return std::nullopt;

@@ -88,6 +88,15 @@ class CheckpointReader;
 flow::ScalarField read_nodal_array(const CheckpointReader& reader, const flow::LocalMesh& local,
                                    const std::string& name);
 
+// An edge field (one value per local edge, LocalMesh::edges orientation, e.g. the face flux of
+// flow::ProjectionRK4) as an extra array with rows by global edge (DualMetrics::edges, its
+// orientation), each edge written by the rank owning its first node; and its inverse: every
+// local edge's value. Collective.
+CheckpointArray edge_checkpoint_array(const std::string& name, const flow::LocalMesh& local,
+                                      const std::vector<double>& field);
+std::vector<double> read_edge_array(const CheckpointReader& reader, const flow::LocalMesh& local,
+                                    const std::string& name);
+
 // Newest complete checkpoint <basename>_<step>.h5 in `dir` (highest step), or nullopt.
 std::optional<std::filesystem::path> latest_checkpoint(const std::filesystem::path& dir,
                                                        const std::string& basename = "checkpoint");

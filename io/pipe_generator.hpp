@@ -24,4 +24,12 @@ struct PipeMeshOptions {
 flow::Mesh generate_pipe_mesh(double radius, double length, double target_size,
                               const PipeMeshOptions& options);
 
+// A curved pipe: a section of a torus (OpenCASCADE addTorus) of tube radius `radius` whose
+// centre line is an arc of radius `bend_radius` over `angle` radians about the z axis, meshed
+// like generate_pipe_mesh (Delaunay, deterministic). Patches "inlet" (the end at angle 0),
+// "outlet" (the end at `angle`), "wall"; region "fluid". Throws std::invalid_argument for
+// non-positive or non-finite arguments, bend_radius <= radius or angle outside (0, 2 pi).
+flow::Mesh generate_bent_pipe_mesh(double radius, double bend_radius, double angle,
+                                   double target_size);
+
 }  // namespace valsalva::io
