@@ -91,23 +91,38 @@ void declare_flow_keys(Schema& s) {
       .in_range(0, 1)
       .unit_of("-")
       .doc("BoomerAMG strength threshold (0.5 is hypre's advice in 3D)");
+  // The preconditioner of PCG must be a fixed symmetric positive definite operator: BoomerAMG's
+  // V-cycle is one when its restriction is P^T (hypre's default, any interpolation) and its
+  // smoother is symmetric (the same on the down and up cycle). The lists keep the values hypre
+  // 2.26 documents that meet this on a scalar elliptic matrix.
   s.integer("poisson.coarsen_type")
       .def(10)
-      .in_range(0, 22)
-      .unit_of("-")
-      .doc("BoomerAMG coarsening, hypre numbering (6 Falgout, 8 PMIS, 10 HMIS)");
-  s.integer("poisson.interp_type")
-      .def(6)
-      .in_range(0, 17)
-      .unit_of("-")
-      .doc("BoomerAMG interpolation, hypre numbering (0 classical, 6 extended+i)");
-  s.integer("poisson.relax_type")
-      .def(6)
-      .in_range(0, 18)
+      .one_of({0, 1, 3, 6, 7, 8, 9, 10, 11, 21, 22})
       .unit_of("-")
       .doc(
-          "BoomerAMG smoother, hypre numbering (6 hybrid symmetric Gauss-Seidel, 3 hybrid "
-          "Gauss-Seidel)");
+          "BoomerAMG coarsening, hypre numbering: 0 CLJP, 1 Ruge-Stueben, 3 RS + boundary pass, 6 "
+          "Falgout, 7 CLJP fixed random, 8 PMIS, 9 PMIS fixed random, 10 HMIS, 11 one-pass RS, 21 "
+          "CGC, 22 CGC-E (every documented splitting; the other numbers are none)");
+  s.integer("poisson.interp_type")
+      .def(6)
+      .one_of({0, 3, 4, 5, 6, 7, 8, 9, 12, 13, 14, 16, 17, 18})
+      .unit_of("-")
+      .doc(
+          "BoomerAMG interpolation, hypre numbering: 0 classical, 3 direct, 4/5 multipass, 6 "
+          "extended+i, 7 extended+i (no common C), 8/9 standard, 12 FF, 13 FF1, 14 extended, "
+          "16-18 matrix-matrix extended forms; refused: 1 (LS, needs GSMG: crashes hypre), 2 (for "
+          "hyperbolic PDEs), 10/11 (block, for systems: the Poisson matrix is scalar), 15 (GPU "
+          "only)");
+  s.integer("poisson.relax_type")
+      .def(6)
+      .one_of({0, 6, 8, 16, 17, 18})
+      .unit_of("-")
+      .doc(
+          "BoomerAMG smoother (down and up cycle), hypre numbering: 0 Jacobi, 6 hybrid symmetric "
+          "Gauss-Seidel, 8 l1 symmetric Gauss-Seidel, 16 Chebyshev, 17 FCF-Jacobi, 18 l1-Jacobi; "
+          "PCG needs a symmetric fixed smoother, so refused: forward or backward Gauss-Seidel (1-4, "
+          "13, 14: the V-cycle is not symmetric), 5 (OpenMP chaotic), 9 (Gaussian elimination, "
+          "coarsest level only: aborts hypre), 15 (CG, not a fixed operator)");
   s.integer("poisson.aggressive_levels")
       .def(0)
       .in_range(0, 10)
