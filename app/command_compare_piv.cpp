@@ -73,14 +73,14 @@ flow::Mesh read_xdmf_mesh(const fs::path& file) {
     }
     const int n = flow::node_count(type);
     if (i + 1 + n > topo.size())
-      throw std::runtime_error(fmt::format("'{}': topology ends inside the cell at entry {}",
-                                           file.string(), i));
+      throw std::runtime_error(
+          fmt::format("'{}': topology ends inside the cell at entry {}", file.string(), i));
     std::vector<flow::GlobalIndex> nodes(topo.begin() + i + 1, topo.begin() + i + 1 + n);
     for (auto node : nodes)
       if (node < 0 || node >= num_nodes)
-        throw std::runtime_error(fmt::format(
-            "'{}': topology entry {} refers to node {}, but the file has {} nodes", file.string(),
-            i, node, num_nodes));
+        throw std::runtime_error(
+            fmt::format("'{}': topology entry {} refers to node {}, but the file has {} nodes",
+                        file.string(), i, node, num_nodes));
     if (type == flow::CellType::prism) std::swap(nodes[1], nodes[2]), std::swap(nodes[4], nodes[5]);
     mesh.add_cell(type, nodes);
     i += 1 + n;
@@ -120,9 +120,9 @@ io::SimulationStatistics read_bin(const fs::path& file, const flow::Mesh& mesh,
     auto v = io::read_nodal_field(file, name);
     if (v.size() != per_node * nodes)
       throw std::runtime_error(fmt::format(
-          "compare-piv: '{}' dataset '{}' has {} values for {} nodes, but the statistics mesh "
-          "'{}' has {} nodes: the bin and the mesh come from different runs",
-          file.string(), name, v.size(), per_node, mesh_file.string(), nodes));
+          "compare-piv: '{}' dataset '{}' has {} values ({} per node: {} nodes), but the "
+          "statistics mesh '{}' has {} nodes: the bin and the mesh come from different runs",
+          file.string(), name, v.size(), per_node, v.size() / per_node, mesh_file.string(), nodes));
     return v;
   };
   io::SimulationStatistics s;

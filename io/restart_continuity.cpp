@@ -90,8 +90,8 @@ namespace {
 void flatten(const toml::table& table, const std::string& prefix,
              std::map<std::string, std::string>& out) {
   for (const auto& [key, node] : table) {
-    const std::string path = prefix.empty() ? std::string(key.str())
-                                            : prefix + "." + std::string(key.str());
+    const std::string path =
+        prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
     if (const auto* sub = node.as_table()) {
       flatten(*sub, path, out);
     } else {
@@ -133,7 +133,8 @@ std::string restart_scene_change(const fs::path& recorded, const Scene& scene) {
   for (const auto& [k, unused] : keys) {
     const std::string a = value(before, k), b = value(after, k);
     if (a != b && !may_change(k))
-      changes.push_back(fmt::format("{} = {} in the run, {} in {}", k, a, b, scene.file().string()));
+      changes.push_back(
+          fmt::format("{} = {} in the run, {} in {}", k, a, b, scene.file().string()));
   }
   if (changes.empty()) return {};
   std::string message = fmt::format(
@@ -155,8 +156,7 @@ std::vector<fs::path> superseded_restart_outputs(const fs::path& dir, std::int64
     for (const auto& entry : fs::directory_iterator(folder)) {
       std::smatch m;
       const std::string name = entry.path().filename().string();
-      if (entry.is_regular_file() && std::regex_match(name, m, pattern) &&
-          std::stoll(m[1]) >= step)
+      if (entry.is_regular_file() && std::regex_match(name, m, pattern) && std::stoll(m[1]) >= step)
         found.push_back(entry.path());
     }
   };
@@ -167,8 +167,7 @@ std::vector<fs::path> superseded_restart_outputs(const fs::path& dir, std::int64
 }
 
 void continue_in_place(const fs::path& dir, const Scene& scene, std::int64_t step, double time,
-                       double dt, const std::vector<std::string>& series,
-                       const flow::Comm& comm) {
+                       double dt, const std::vector<std::string>& series, const flow::Comm& comm) {
   std::string error;
   if (comm.root()) {
     try {
@@ -192,7 +191,8 @@ void continue_in_place(const fs::path& dir, const Scene& scene, std::int64_t ste
       std::ofstream out(record, std::ios::binary | std::ios::trunc);
       out << scene.resolved();
       out.close();
-      if (!out) throw std::runtime_error(fmt::format("restart: cannot write '{}'", record.string()));
+      if (!out)
+        throw std::runtime_error(fmt::format("restart: cannot write '{}'", record.string()));
     } catch (const std::exception& e) {
       error = e.what();
     }

@@ -6,10 +6,9 @@
 #include <algorithm>
 #include <chrono>
 #include <ctime>
+#include <fstream>
 #include <random>
 #include <regex>
-
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -133,8 +132,9 @@ std::string create(const fs::path& dir, bool overwrite, const std::string& resol
   }
   fs::create_directories(dir, ec);
   if (ec) return fmt::format("cannot create run directory '{}': {}", dir.string(), ec.message());
-  for (const auto& [name, text] : {std::pair{std::string(RunDirectory::marker_name), new_marker(dir)},
-                                   std::pair{std::string(RunDirectory::resolved_scene_name), resolved}}) {
+  for (const auto& [name, text] :
+       {std::pair{std::string(RunDirectory::marker_name), new_marker(dir)},
+        std::pair{std::string(RunDirectory::resolved_scene_name), resolved}}) {
     std::ofstream out(dir / name, std::ios::binary);
     out << text;
     out.close();

@@ -120,7 +120,8 @@ void declare_flow_keys(Schema& s) {
       .doc(
           "BoomerAMG smoother (down and up cycle), hypre numbering: 0 Jacobi, 6 hybrid symmetric "
           "Gauss-Seidel, 8 l1 symmetric Gauss-Seidel, 16 Chebyshev, 17 FCF-Jacobi, 18 l1-Jacobi; "
-          "PCG needs a symmetric fixed smoother, so refused: forward or backward Gauss-Seidel (1-4, "
+          "PCG needs a symmetric fixed smoother, so refused: forward or backward Gauss-Seidel "
+          "(1-4, "
           "13, 14: the V-cycle is not symmetric), 5 (OpenMP chaotic), 9 (Gaussian elimination, "
           "coarsest level only: aborts hypre), 15 (CG, not a fixed operator)");
   s.integer("poisson.aggressive_levels")

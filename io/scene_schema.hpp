@@ -51,9 +51,9 @@ struct KeyDecl {
   std::string default_note;  // replaces the literal default in docs, e.g. "runs/<scene stem>"
   std::string unit;          // SI unit or "-"
   std::string text;          // one-line doc
-  std::vector<std::string> choices;   // choice: accepted values; string_list: accepted elements
-  std::optional<Bound> lower, upper;  // numbers, element-wise for arrays and tables
-  std::size_t min_size = 0;           // real_list / string_list
+  std::vector<std::string> choices;    // choice: accepted values; string_list: accepted elements
+  std::optional<Bound> lower, upper;   // numbers, element-wise for arrays and tables
+  std::size_t min_size = 0;            // real_list / string_list
   std::vector<std::int64_t> integers;  // integer: the only accepted values, when not empty
 
   KeyDecl& def(bool v);

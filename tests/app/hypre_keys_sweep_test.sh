@@ -80,7 +80,7 @@ while IFS= read -r row; do
       runs=$((runs + 1))
       sed "/^\[time\]/i [poisson]\n$key = $value" $scene.toml > run.toml
       timeout 120 "${launch[@]}" "$app" run run.toml --out "out_${key}_${value}_$scene" --quiet \
-        > run.out 2> run.err
+        < /dev/null > run.out 2> run.err
       code=$?
       if [ $code -eq 0 ]; then continue; fi
       if { [ $code -eq 1 ] || [ $code -eq 2 ]; } && grep -q "valsalva: error: .*poisson\.$key" run.err; then

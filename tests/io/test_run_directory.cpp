@@ -115,10 +115,10 @@ TEST_CASE("prepare creates the directory, writes the resolved scene, and guards 
                        RunDirectoryError);
   if (rank == 0) fs::copy_file(dir / "valsalva_run.toml", other / "valsalva_run.toml");
   barrier();
+  const std::string written_for =
+      "was written for '" + fs::weakly_canonical(fs::absolute(dir)).string();
   CHECK_THROWS_WITH_AS(RunDirectory::prepare(other, true, scene, MPI_COMM_WORLD),
-                       doctest::Contains("was written for '" +
-                                         fs::weakly_canonical(fs::absolute(dir)).string()),
-                       RunDirectoryError);
+                       doctest::Contains(written_for.c_str()), RunDirectoryError);
   CHECK(read(other / "thesis.tex") == "precious");
 
   // An existing empty directory is fine without overwrite.
