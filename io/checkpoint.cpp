@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <regex>
 #include <stdexcept>
@@ -260,6 +261,18 @@ void CheckpointReader::read_state(flow::FlowState& state) const {
   for (int i = 0; i < local.num_local(); ++i)
     state.velocity[i] = Eigen::Vector3d(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
   state.time = info_.time;
+  // A state that is not finite is no state to continue (the run would stop at once and blame
+  // the flow): refused naming the file.
+  int bad = -1;
+  for (int i = 0; i < local.num_owned && bad < 0; ++i)
+    if (!state.velocity[i].allFinite() || !std::isfinite(state.pressure[i])) bad = i;
+  const std::int64_t first =
+      local.comm.max(bad >= 0 ? static_cast<std::int64_t>(local.dual_node[bad]) : std::int64_t(-1));
+  if (first >= 0)
+    throw std::runtime_error(fmt::format(
+        "checkpoint '{}': the state is not finite (velocity or pressure of node {} is NaN or "
+        "inf); restart from an older checkpoint",
+        file_.path().string(), first));
 }
 
 std::pair<std::int64_t, int> CheckpointReader::shape(const std::string& name) const {

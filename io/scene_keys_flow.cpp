@@ -3,12 +3,19 @@
 // field output; and their reader flow_run_options.
 #include "io/scene_keys_flow.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
 #include "io/scene_keys.hpp"
 
 namespace valsalva::io {
+
+namespace {
+constexpr double max_field_outputs = 1e5;  // fields written per run (output.interval in s)
+constexpr double max_time_steps = 1e9;     // steps a fixed time.dt may take to time.end
+}  // namespace
 
 void declare_flow_keys(Schema& s) {
   s.section("flow", "Fluid properties and the discretisation of the momentum equation.");
@@ -55,8 +62,9 @@ void declare_flow_keys(Schema& s) {
       .unit_of("s")
       .doc("End time; 0 takes no time step (only the initial state is written)");
   s.real("time.dt").def(0.0).at_least(0).unit_of("s").doc(
-      "Fixed time step, refused beyond the RK4 stability limit; 0 = from time.cfl and time.fourier "
-      "at every step");
+      "Fixed time step, refused beyond the RK4 stability limit and when it takes more than 1e9 "
+      "steps to time.end without time.max_steps; 0 = from time.cfl and time.fourier at every "
+      "step");
   s.real("time.cfl")
       .def(0.5)
       .above(0)
@@ -164,7 +172,9 @@ void declare_flow_keys(Schema& s) {
       .def(0.0)
       .at_least(0)
       .unit_of("s or steps")
-      .doc("Write the fields at t = 0, every interval and at the end; 0 = no fields");
+      .doc(
+          "Write the fields at t = 0, every interval and at the end; 0 = no fields; an interval "
+          "in s giving more than 1e5 writes up to time.end is refused");
   s.choice("output.interval_unit", {"s", "steps"})
       .def("s")
       .unit_of("-")
@@ -247,6 +257,21 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   if (out.interval_in_steps && out.interval != std::floor(out.interval))
     throw scene.error("output.interval", "a step interval must be a whole number of steps",
                       "0, 1, 2, ...");
+  // Scenes that would bury a run in output or never end (issue 23): refused up front.
+  const double end = o.time.end;
+  if (out.interval > 0 && !out.interval_in_steps && end / out.interval > max_field_outputs)
+    throw scene.error(
+        "output.interval",
+        fmt::format("{:g} s writes the fields {:.3g} times up to time.end = {:g} s "
+                    "(each write also shortens the time step to land on it)",
+                    out.interval, end / out.interval, end),
+        fmt::format(">= time.end / {:g} = {:g} s", max_field_outputs, end / max_field_outputs));
+  if (o.time.dt > 0 && end / o.time.dt > max_time_steps && o.time.max_steps == 0)
+    throw scene.error("time.dt",
+                      fmt::format("{:g} s takes {:.3g} steps to time.end = {:g} s", o.time.dt,
+                                  end / o.time.dt, end),
+                      fmt::format(">= time.end / {:g} = {:g} s, or set time.max_steps",
+                                  max_time_steps, end / max_time_steps));
   const auto fields = scene.get<std::vector<std::string>>("output.fields");
   auto wants = [&](const char* f) {
     return std::find(fields.begin(), fields.end(), f) != fields.end();
