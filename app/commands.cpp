@@ -47,6 +47,7 @@ int check_scene(const std::filesystem::path& scene_file) {
   io::read_immersed_setup(scene, mesh);       // structure meshes, materials, clamped sets
   io::check_les_scene(scene);                 // LES output fields
   io::flow_run_options(scene, {});            // time step, output volume
+  io::check_initial_state(scene, mesh);       // a Taylor-Green start on a 2 pi L-periodic mesh
   if (world_rank() == 0)
     fmt::print("{}: scene and mesh are valid ({} nodes, {} cells, {} boundary patches)\n",
                scene_file.string(), metrics.num_nodes(), mesh.num_cells(), mesh.patch_names.size());

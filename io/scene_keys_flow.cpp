@@ -283,4 +283,32 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   return o;
 }
 
+void check_initial_state(const Scene& scene, const flow::Mesh& mesh) {
+  if (scene.get<std::string>("initial.type") != "taylor_green") return;
+  const double length = scene.get<double>("initial.taylor_green.length");
+  const double period = 2 * M_PI * length;
+  for (int axis : {0, 1}) {
+    const char* name = axis == 0 ? "x" : "y";
+    double found = 0;  // the translation along this axis, 0 if none
+    for (const auto& link : mesh.periodic) {
+      const Eigen::Vector3d t = link.translation.cwiseAbs();
+      if (t[axis] > 0 && t[axis] >= 1e3 * (t.sum() - t[axis])) found = t[axis];
+    }
+    if (found == 0)
+      throw scene.error("initial.taylor_green.length",
+                        fmt::format("the Taylor-Green vortex is periodic in {0}, the mesh is not "
+                                    "(no periodic pair along {0})",
+                                    name),
+                        "a mesh periodic in x and y");
+    const double k = std::round(found / period);
+    if (k < 1 || std::abs(found - k * period) > 1e-9 * found)
+      throw scene.error(
+          "initial.taylor_green.length",
+          fmt::format("{:g} m: the mesh's periodic length in {} is {:.9g} m, not a whole multiple "
+                      "of 2 pi L = {:.9g} m, so the vortex is not its exact solution",
+                      length, name, found, period),
+          fmt::format("L = {:.9g} m / (2 pi k), k = 1, 2, ...", found));
+  }
+}
+
 }  // namespace valsalva::io
