@@ -13,6 +13,10 @@
 namespace valsalva::io {
 
 namespace {
+constexpr double min_mesh_span = 1e-6, max_mesh_span = 1e4;  // m
+}  // namespace
+
+namespace {
 
 BoxSpec box_spec(const Scene& scene) {
   BoxSpec spec;
@@ -69,8 +73,27 @@ flow::Mesh build_mesh(const Scene& scene) {
                               scene.get<double>("mesh.pipe.size"));
   }
   const double scale = scene.get<double>("mesh.scale");
-  if (scale != 1.0)
+  if (scale != 1.0) {
     for (auto& x : mesh.nodes) x *= scale;
+    // A generator's periodic pairs are in the mesh's units too (a scaled periodic box used to be
+    // refused: its translations no longer matched the nodes).
+    for (auto& link : mesh.periodic) link.translation *= scale;
+  }
+
+  // SI units: a mesh a micrometre across or of ten kilometres is a unit mistake, and far below that
+  // the dual-face metrics underflow (a box of 1e-200 m failed inside the Poisson weights).
+  if (!mesh.nodes.empty()) {
+    Eigen::Vector3d lo = mesh.nodes.front(), hi = lo;
+    for (const auto& x : mesh.nodes) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+    const double span = (hi - lo).lpNorm<Eigen::Infinity>();  // no underflow, unlike norm()
+    if (!(span >= min_mesh_span && span <= max_mesh_span))
+      throw scene.error(
+          scale != 1.0 ? "mesh.scale" : "mesh.source",
+          fmt::format("the mesh spans {:.3g} m (largest bounding-box side): valsalva "
+                      "works in SI units (mesh.scale converts a mesh drawn in mm)",
+                      span),
+          fmt::format("a mesh spanning [{:g}, {:g}] m", min_mesh_span, max_mesh_span));
+  }
 
   for (const auto& pair : scene.names("mesh.periodic")) {
     const std::string prefix = "mesh.periodic." + pair;
