@@ -61,6 +61,8 @@ int mesh_info(const std::filesystem::path& mesh_file, double scale) {
   auto mesh = io::read_gmsh(mesh_file);
   for (auto& x : mesh.nodes) x *= scale;
   flow::check_mesh(mesh);
+  if (const auto pieces = io::disconnected_pieces(mesh); !pieces.empty())
+    throw std::runtime_error(pieces);
   if (world_rank() == 0) std::cout << io::mesh_info(mesh);
   return 0;
 }

@@ -105,7 +105,8 @@ void flatten(const toml::table& table, const std::string& prefix,
 bool may_change(const std::string& key) {
   static const std::regex allowed(
       "time\\.(end|max_steps)|output\\.(interval|interval_unit|checkpoint_every_steps|"
-      "checkpoint_every_minutes|checkpoint_keep|checkpoint_on_signal)|run\\..*|sample\\..*");
+      "checkpoint_every_minutes|checkpoint_keep|checkpoint_on_signal)|run\\..*|partition\\..*|"
+      "sample\\..*");
   return std::regex_match(key, allowed);
 }
 
@@ -139,8 +140,8 @@ std::string restart_scene_change(const fs::path& recorded, const Scene& scene) {
   if (changes.empty()) return {};
   std::string message = fmt::format(
       "restart: the scene differs from the run's ({}) in keys a restart must not change "
-      "(only time.end, time.max_steps, output intervals and checkpoints, run.* and [sample.*] "
-      "sections may change):",
+      "(only time.end, time.max_steps, output intervals and checkpoints, run.*, partition.* and "
+      "[sample.*] sections may change):",
       recorded.string());
   for (const auto& c : changes) message += "\n  " + c;
   return message;

@@ -38,8 +38,9 @@ std::size_t truncate_series(const std::filesystem::path& file, bool by_step, std
                             double time, double dt);
 
 // Keys a restart may change: time.end, time.max_steps, the output intervals and checkpoint
-// settings, run.* (progress and where results go), and [sample.<name>] sections added or
-// removed (each writes files of its own). Every other difference between the recorded scene
+// settings, run.* (progress and where results go), partition.* (results agree to round-off
+// across partitions, as across rank counts), and [sample.<name>] sections added or removed (each
+// writes files of its own). Every other difference between the recorded scene
 // (the run directory's resolved_scene.toml) and `scene` is refused: the message names each key
 // and both values (a key only one of them has shows "(absent)"). Empty when none.
 std::string restart_scene_change(const std::filesystem::path& recorded, const Scene& scene);

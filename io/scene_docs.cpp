@@ -57,8 +57,8 @@ void write_scene_docs(std::ostream& out, const Schema& schema) {
          "`valsalva run SCENE --restart latest` continues a run in its directory from its newest\n"
          "checkpoint: the CSV series are cut back to the checkpoint's step, the scene is kept as\n"
          "`resolved_scene_restart_<step>.toml`, and only `time.end`, `time.max_steps`, the\n"
-         "`output` intervals and checkpoint keys, `[run]` and `[sample.<name>]` sections may "
-         "differ\n"
+         "`output` intervals and checkpoint keys, `[run]`, `[partition]` and `[sample.<name>]`\n"
+         "sections may differ "
          "from the run's scene; any other change is refused naming the key and both values.\n";
   for (const auto& section : schema.sections()) {
     out << fmt::format("\n## `[{}]`\n\n{}\n", section.path, cell(section.text));

@@ -133,6 +133,10 @@ def main():
             NAMES)
     # A ninth node that no cell uses (format 4.1: the 2.2 reader of Gmsh drops such nodes).
     write41("unused_node.msh", NODES + [(2, 2, 2)], TETS, BOUNDARY)
+    # Two unit cubes 2 m apart: a mesh in two pieces.
+    far = [(x + 3, y, z) for (x, y, z) in NODES]
+    write41("two_pieces.msh", NODES + far, TETS + [[n + 8 for n in t] for t in TETS],
+            BOUNDARY + [[n + 8 for n in f] for f in BOUNDARY])
     # Node tag 8 defined twice (the second at (2, 2, 2)): refused, not one silently winning.
     write41("duplicate_node_tag.msh", NODES + [(2, 2, 2)], TETS, BOUNDARY,
             node_tags=list(range(1, 9)) + [8])
