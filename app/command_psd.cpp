@@ -101,6 +101,14 @@ int run(const Options& o) {
     std::vector<double> v = series.column(c);
     if (!sampling.uniform) v = io::resample_uniform(time, v, n);
     const io::PowerSpectrum s = io::welch_psd(v, fs_hz, w);
+    // Finite samples can still overflow in the squares (|x| ~ 1e155 and beyond).
+    if (!std::all_of(s.psd.begin(), s.psd.end(), [](double p) { return std::isfinite(p); }))
+      throw std::runtime_error(fmt::format(
+          "psd: column '{}' of '{}': the spectrum overflows (values up to {:.3g}); rescale the "
+          "series",
+          c, o.file, *std::max_element(v.begin(), v.end(), [](double a, double b) {
+            return std::abs(a) < std::abs(b);
+          })));
     const fs::path csv = fs::path(o.out) / (file_stem(c) + ".csv");
     {
       auto f = fmt::output_file(csv.string());

@@ -19,6 +19,7 @@
 #include "io/field_output.hpp"
 #include "io/immersed_run.hpp"
 #include "io/mesh_source.hpp"
+#include "io/restart_continuity.hpp"
 #include "io/run_analysis.hpp"
 #include "io/run_directory.hpp"
 #include "io/scene.hpp"
@@ -102,6 +103,11 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
         "--restart {} with --overwrite (or run.overwrite) would delete the checkpoint with the "
         "run directory {}: drop --overwrite to continue there, or give another --out",
         checkpoint->string(), dir.string()));
+  if (in_place)
+    if (const auto change =
+            io::restart_scene_change(dir / io::RunDirectory::resolved_scene_name, scene);
+        !change.empty())
+      throw std::runtime_error(change);
 
   // Everything the scene can get wrong is checked before the run directory is touched.
   const auto mesh = io::build_mesh(scene);
@@ -110,6 +116,8 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
   const auto analysis_options = io::read_analysis_options(scene, mesh);
   auto immersed_setup = io::read_immersed_setup(scene, mesh);
   io::check_les_scene(scene);
+  io::flow_run_options(scene, dir);  // its checks (time step, output volume), before any write
+  io::check_initial_state(scene, mesh);
   const fs::path run_path =
       in_place ? dir : io::RunDirectory::prepare(dir, wipe, scene, MPI_COMM_WORLD).path();
 
@@ -124,6 +132,32 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
   run_options.output.progress = progress_mode(scene, quiet);
   run_options.output.cycle_period = cycle_period(analysis_options, boundary);
   const double rho = run_options.projection.density;
+  std::uint64_t hash = 0;
+  const auto every_steps =
+      static_cast<std::int64_t>(scene.get<int>("output.checkpoint_every_steps"));
+  const double every_seconds = 60 * scene.get<double>("output.checkpoint_every_minutes");
+  const bool on_signal = scene.get<bool>("output.checkpoint_on_signal");
+  if (checkpoint || every_steps > 0 || every_seconds > 0 || on_signal) hash = io::mesh_hash(mesh);
+  std::optional<io::CheckpointReader> in;
+  if (checkpoint) {
+    in.emplace(local, hash, *checkpoint);  // throws on another mesh
+    const double end = scene.get<double>("time.end");
+    if (end < in->info().time * (1 - 1e-12))
+      throw scene.error("time.end",
+                        fmt::format("{:.9g} s is before the time of checkpoint '{}', {:.9g} s: "
+                                    "nothing to continue",
+                                    end, checkpoint->string(), in->info().time),
+                        fmt::format(">= {:.9g}", in->info().time));
+    if (in_place) {
+      std::vector<std::string> series{"log.csv"};
+      if (!analysis_options.probes.points.empty()) series.push_back("probes.csv");
+      if (!analysis_options.pressure_drops.empty()) series.push_back("pressure_drop.csv");
+      if (!analysis_options.wall_shear.patches.empty()) series.push_back("wall_shear_history.csv");
+      if (!immersed_setup.empty()) series.push_back("structures.csv");
+      io::continue_in_place(run_path, scene, in->info().step, in->info().time, in->info().dt,
+                            series, local.comm);
+    }
+  }
   std::optional<io::RunAnalysis> analysis;
   if (!analysis_options.empty())
     analysis.emplace(mesh, metrics, local, analysis_options, rho,
@@ -133,31 +167,24 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
   flow::FlowState start;
   flow::ScalarField start_dp, start_nu_sgs;
   flow::EdgeField start_flux;
-  std::uint64_t hash = 0;
-  const auto every_steps =
-      static_cast<std::int64_t>(scene.get<int>("output.checkpoint_every_steps"));
-  const double every_seconds = 60 * scene.get<double>("output.checkpoint_every_minutes");
-  const bool on_signal = scene.get<bool>("output.checkpoint_on_signal");
-  if (checkpoint || every_steps > 0 || every_seconds > 0 || on_signal) hash = io::mesh_hash(mesh);
   std::optional<io::ImmersedRun> immersed;  // only with [structure.<name>] tables
   auto make_immersed = [&](std::int64_t step) {
     if (!immersed_setup.empty())
       immersed.emplace(std::move(immersed_setup), local, run_path, in_place, step);
   };
   if (!checkpoint) make_immersed(0);
-  if (checkpoint) {
-    io::CheckpointReader in(local, hash, *checkpoint);  // throws on another mesh
-    in.read_state(start);
-    start_step = in.info().step;
+  if (in) {
+    in->read_state(start);
+    start_step = in->info().step;
     make_immersed(start_step);
-    if (immersed) immersed->restore(in);
-    if (in.has("pressure_increment"))  // the Poisson warm start (bitwise restarts)
-      start_dp = io::read_nodal_array(in, local, "pressure_increment");
-    if (in.has("face_flux"))  // the projected face flux of the state (bitwise restarts)
-      start_flux = io::read_edge_array(in, local, "face_flux");
-    if (les.subgrid_viscosity && in.has("subgrid_viscosity"))  // the first dt of an LES
-      start_nu_sgs = io::read_nodal_array(in, local, "subgrid_viscosity");
-    if (analysis) analysis->restore(in);
+    if (immersed) immersed->restore(*in);
+    if (in->has("pressure_increment"))  // the Poisson warm start (bitwise restarts)
+      start_dp = io::read_nodal_array(*in, local, "pressure_increment");
+    if (in->has("face_flux"))  // the projected face flux of the state (bitwise restarts)
+      start_flux = io::read_edge_array(*in, local, "face_flux");
+    if (les.subgrid_viscosity && in->has("subgrid_viscosity"))  // the first dt of an LES
+      start_nu_sgs = io::read_nodal_array(*in, local, "subgrid_viscosity");
+    if (analysis) analysis->restore(*in);
     if (rank == 0)
       fmt::print("restart: {} (step {}, t = {:.9g} s)\n", checkpoint->string(), start_step,
                  start.time);
@@ -170,10 +197,6 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
   std::map<std::string, std::unique_ptr<io::FieldOutput>> outputs;
   const std::string fields_name =
       in_place ? fmt::format("fields_restart_{:09d}", start_step) : std::string("fields");
-  if (in_place && fs::exists(run_path / (fields_name + ".xmf")) && !wipe)
-    throw std::runtime_error(fmt::format(
-        "{} exists: this checkpoint was already restarted from in {}; give another --out",
-        (run_path / (fields_name + ".xmf")).string(), run_path.string()));
   auto sink = [&](const std::string& stream, double time, const flow::FieldSet& set) {
     const std::string basename = stream == "fields" ? fields_name : stream;
     auto& o = outputs[basename];

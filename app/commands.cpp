@@ -4,6 +4,7 @@
 #include <mpi.h>
 
 #include <chrono>
+#include <cmath>
 #include <iostream>
 
 #include "flow/dual_metrics.hpp"
@@ -16,6 +17,7 @@
 #include "io/scene_docs.hpp"
 #include "io/scene_keys_analysis.hpp"
 #include "io/scene_keys_boundary.hpp"
+#include "io/scene_keys_flow.hpp"
 #include "io/scene_keys_les.hpp"
 #include "io/scene_keys_structure.hpp"
 #include "validation/case.hpp"
@@ -44,6 +46,8 @@ int check_scene(const std::filesystem::path& scene_file) {
   io::read_analysis_options(scene, mesh);     // probes, samples, statistics, wall shear
   io::read_immersed_setup(scene, mesh);       // structure meshes, materials, clamped sets
   io::check_les_scene(scene);                 // LES output fields
+  io::flow_run_options(scene, {});            // time step, output volume
+  io::check_initial_state(scene, mesh);       // a Taylor-Green start on a 2 pi L-periodic mesh
   if (world_rank() == 0)
     fmt::print("{}: scene and mesh are valid ({} nodes, {} cells, {} boundary patches)\n",
                scene_file.string(), metrics.num_nodes(), mesh.num_cells(), mesh.patch_names.size());
@@ -51,9 +55,14 @@ int check_scene(const std::filesystem::path& scene_file) {
 }
 
 int mesh_info(const std::filesystem::path& mesh_file, double scale) {
+  if (!(scale > 0) || !std::isfinite(scale))
+    throw std::invalid_argument(fmt::format(
+        "mesh-info: --scale {} must be a positive finite factor (e.g. 0.001 for mm)", scale));
   auto mesh = io::read_gmsh(mesh_file);
   for (auto& x : mesh.nodes) x *= scale;
   flow::check_mesh(mesh);
+  if (const auto pieces = io::disconnected_pieces(mesh); !pieces.empty())
+    throw std::runtime_error(pieces);
   if (world_rank() == 0) std::cout << io::mesh_info(mesh);
   return 0;
 }

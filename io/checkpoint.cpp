@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
 #include <cstring>
 #include <regex>
 #include <stdexcept>
@@ -48,6 +50,62 @@ void on_root(const flow::Comm& comm, F&& action) {
     }
   }
   h5::settle(comm.get(), error);
+}
+
+// Checksums of datasets (attributes checksum_<name>_hi/_lo): the sum modulo 2^64 of one FNV-1a
+// hash per row (row id, then its values' bits), so it does not depend on which rank holds a row.
+// All-zero rows add nothing: rows no rank writes (sparse arrays) read back as zeros.
+std::uint64_t row_checksum(std::span<const std::int64_t> rows, std::span<const double> data,
+                           int cols) {
+  const std::size_t width = static_cast<std::size_t>(std::max(cols, 1));
+  std::uint64_t sum = 0;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    Hasher row;
+    row.add(static_cast<std::uint64_t>(rows[r]));
+    bool zero = true;
+    for (std::size_t c = 0; c < width; ++c) {
+      row.add(data[r * width + c]);
+      zero = zero && std::bit_cast<std::uint64_t>(data[r * width + c]) == 0;
+    }
+    if (!zero) sum += row.h;
+  }
+  return sum;
+}
+
+std::uint64_t global_checksum(const flow::Comm& comm, std::uint64_t local) {
+  std::uint64_t total = 0;
+  if (MPI_Allreduce(&local, &total, 1, MPI_UINT64_T, MPI_SUM, comm.get()) != MPI_SUCCESS)
+    throw std::runtime_error("checkpoint: MPI_Allreduce of a checksum failed");
+  return total;
+}
+
+void write_checksum(h5::File& file, const flow::Comm& comm, const std::string& name,
+                    std::span<const std::int64_t> rows, std::span<const double> data, int cols) {
+  const std::uint64_t sum = global_checksum(comm, row_checksum(rows, data, cols));
+  file.write_attribute("checksum_" + name + "_hi", hi(sum));
+  file.write_attribute("checksum_" + name + "_lo", lo(sum));
+}
+
+// Collective: every rank hashes one contiguous block of rows; throws naming file and dataset
+// when the data no longer match the checksum written with them.
+void verify_checksum(const h5::File& file, const flow::Comm& comm, const std::string& name) {
+  const auto dims = file.dims(name);
+  const std::int64_t n = dims.at(0);
+  const int cols = dims.size() > 1 ? static_cast<int>(dims[1]) : 0;
+  const std::int64_t first = n * comm.rank() / comm.size(),
+                     end = n * (comm.rank() + 1) / comm.size();
+  std::vector<std::int64_t> rows(static_cast<std::size_t>(end - first));
+  for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = first + static_cast<std::int64_t>(i);
+  const auto data = file.read_rows<double>(name, rows);
+  const std::uint64_t sum = global_checksum(comm, row_checksum(rows, data, cols));
+  const std::uint64_t stored =
+      (static_cast<std::uint64_t>(file.read_attribute("checksum_" + name + "_hi")) << 32) |
+      static_cast<std::uint64_t>(file.read_attribute("checksum_" + name + "_lo"));
+  if (sum != stored)
+    throw std::runtime_error(fmt::format(
+        "checkpoint '{}': dataset '{}' does not match its checksum (stored {}, computed {}): the "
+        "file was altered or damaged after it was written; restart from an older checkpoint",
+        file.path().string(), name, hex(stored), hex(sum)));
 }
 
 }  // namespace
@@ -97,16 +155,19 @@ std::filesystem::path CheckpointWriter::write(const flow::FlowState& state, std:
     file.write_attribute("mesh_hash_hi", hi(hash_));
     file.write_attribute("mesh_hash_lo", lo(hash_));
     const auto n = static_cast<std::size_t>(local.num_owned);
-    file.write_rows<double>("velocity", local.global_nodes, 3, owned_rows_,
-                            std::span<const double>(state.velocity.data()->data(), 3 * n));
-    file.write_rows<double>("pressure", local.global_nodes, 0, owned_rows_,
-                            std::span<const double>(state.pressure.data(), n));
+    const std::span<const double> velocity(state.velocity.data()->data(), 3 * n);
+    const std::span<const double> pressure(state.pressure.data(), n);
+    file.write_rows<double>("velocity", local.global_nodes, 3, owned_rows_, velocity);
+    file.write_rows<double>("pressure", local.global_nodes, 0, owned_rows_, pressure);
+    write_checksum(file, local.comm, "velocity", owned_rows_, velocity, 3);
+    write_checksum(file, local.comm, "pressure", owned_rows_, pressure, 0);
     for (const auto& a : extras) {
       if (a.name == "velocity" || a.name == "pressure" ||
           !std::regex_match(a.name, std::regex("[A-Za-z0-9_]+")))
         throw std::invalid_argument(
             fmt::format("checkpoint '{}': bad extra array name '{}'", tmp_path.string(), a.name));
       file.write_rows<double>(a.name, a.global_rows, a.cols, a.rows, a.data);
+      write_checksum(file, local.comm, a.name, a.rows, a.data, a.cols);
     }
     file.close();
   }
@@ -220,12 +281,26 @@ CheckpointReader::CheckpointReader(const flow::LocalMesh& local, std::uint64_t m
 void CheckpointReader::read_state(flow::FlowState& state) const {
   const flow::LocalMesh& local = *local_;
   const std::span<const std::int64_t> rows(local.dual_node.data(), local.dual_node.size());
+  verify_checksum(file_, local.comm, "velocity");
+  verify_checksum(file_, local.comm, "pressure");
   const auto v = file_.read_rows<double>("velocity", rows);
   state.pressure = file_.read_rows<double>("pressure", rows);
   state.velocity.resize(local.num_local());
   for (int i = 0; i < local.num_local(); ++i)
     state.velocity[i] = Eigen::Vector3d(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
   state.time = info_.time;
+  // A state that is not finite is no state to continue (the run would stop at once and blame
+  // the flow): refused naming the file.
+  int bad = -1;
+  for (int i = 0; i < local.num_owned && bad < 0; ++i)
+    if (!state.velocity[i].allFinite() || !std::isfinite(state.pressure[i])) bad = i;
+  const std::int64_t first =
+      local.comm.max(bad >= 0 ? static_cast<std::int64_t>(local.dual_node[bad]) : std::int64_t(-1));
+  if (first >= 0)
+    throw std::runtime_error(fmt::format(
+        "checkpoint '{}': the state is not finite (velocity or pressure of node {} is NaN or "
+        "inf); restart from an older checkpoint",
+        file_.path().string(), first));
 }
 
 std::pair<std::int64_t, int> CheckpointReader::shape(const std::string& name) const {
@@ -239,6 +314,7 @@ std::pair<std::int64_t, int> CheckpointReader::shape(const std::string& name) co
 std::vector<double> CheckpointReader::read_array(const std::string& name,
                                                  std::span<const std::int64_t> rows) const {
   shape(name);
+  verify_checksum(file_, local_->comm, name);
   return file_.read_rows<double>(name, rows);
 }
 

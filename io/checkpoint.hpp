@@ -4,7 +4,8 @@
 // so a restart at the same rank count continues bit for bit.
 //
 // File <dir>/<basename>_<step, 9 digits>.h5:
-//   attributes  format_version, time, step, dt, global_nodes, mesh_hash_hi, mesh_hash_lo
+//   attributes  format_version, time, step, dt, global_nodes, mesh_hash_hi, mesh_hash_lo, and
+//               checksum_<dataset>_hi/_lo of every dataset (verified on every read)
 //   datasets    velocity [N x 3], pressure [N], and the extra arrays (any name, own row count)
 // Writing goes to "<file>.tmp", closed, then renamed by rank 0, so a crash mid-write never
 // leaves a truncated file under the final name; afterwards only the newest `keep` are kept.
@@ -34,7 +35,8 @@
 
 namespace valsalva::io {
 
-inline constexpr int checkpoint_format_version = 1;
+// Version 2: every dataset carries a checksum, verified when it is read.
+inline constexpr int checkpoint_format_version = 2;
 
 // 64-bit hash of node coordinates (bit patterns), cell types and connectivity: identifies the
 // mesh a checkpoint belongs to independently of the partition. Same value on every rank.

@@ -53,14 +53,23 @@ std::string gmsh_type_name(int gmsh_type) {
   return fmt::format("'{}' (Gmsh type {}, {} nodes, order {})", name, gmsh_type, nodes, order);
 }
 
-// Maps Gmsh node tags (possibly sparse) to 0..n-1 in the order Gmsh returns them.
+// Maps Gmsh node tags (possibly sparse) to 0..n-1 in the order Gmsh returns them. Gmsh returns a
+// tag defined twice twice: refused, else the later node would silently replace the earlier.
 class NodeNumbering {
  public:
-  explicit NodeNumbering(const std::vector<std::size_t>& tags) {
+  NodeNumbering(const std::vector<std::size_t>& tags, const std::vector<double>& coords,
+                const std::string& source) {
     const std::size_t max_tag = tags.empty() ? 0 : *std::max_element(tags.begin(), tags.end());
     dense_ = max_tag <= 4 * tags.size() + 1024;
     if (dense_) index_.assign(max_tag + 1, -1);
     for (std::size_t i = 0; i < tags.size(); ++i) {
+      if (const auto earlier = (*this)(tags[i]); earlier >= 0) {
+        const auto at = [&](std::size_t k) {
+          return fmt::format("({}, {}, {})", coords[3 * k], coords[3 * k + 1], coords[3 * k + 2]);
+        };
+        throw MeshFileError(fmt::format("{}: node tag {} is defined twice, at {} and at {}", source,
+                                        tags[i], at(std::size_t(earlier)), at(i)));
+      }
       if (dense_)
         index_[tags[i]] = static_cast<flow::GlobalIndex>(i);
       else
@@ -230,7 +239,7 @@ flow::Mesh mesh_from_gmsh_model(const std::string& source) {
     mesh.nodes.reserve(tags.size());
     for (std::size_t i = 0; i < tags.size(); ++i)
       mesh.nodes.emplace_back(coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]);
-    const NodeNumbering number(tags);
+    const NodeNumbering number(tags, coords, source);
     add_cells(mesh, number, source);
     if (mesh.num_cells() == 0)
       throw MeshFileError(fmt::format(

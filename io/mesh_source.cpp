@@ -1,7 +1,9 @@
 #include "io/mesh_source.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "flow/mesh_check.hpp"
@@ -11,6 +13,10 @@
 #include "io/pipe_generator.hpp"
 
 namespace valsalva::io {
+
+namespace {
+constexpr double min_mesh_span = 1e-6, max_mesh_span = 1e4;  // m
+}  // namespace
 
 namespace {
 
@@ -29,7 +35,38 @@ BoxSpec box_spec(const Scene& scene) {
   return spec;
 }
 
+// A mesh in several pieces (cells sharing no node, periodic pairs aside) is a mistake: each piece
+// has its own pressure null space and the Poisson solve fails far from the cause.
 }  // namespace
+
+std::string disconnected_pieces(const flow::Mesh& mesh) {
+  std::vector<flow::GlobalIndex> parent(static_cast<std::size_t>(mesh.num_nodes()));
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<flow::GlobalIndex>(i);
+  auto root = [&](flow::GlobalIndex n) {
+    while (parent[n] != n) n = parent[n] = parent[parent[n]];
+    return n;
+  };
+  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
+    const auto nodes = mesh.cell(c);
+    for (std::size_t k = 1; k < nodes.size(); ++k) parent[root(nodes[k])] = root(nodes[0]);
+  }
+  std::vector<flow::GlobalIndex> first_cell;  // one cell of each piece
+  std::vector<flow::GlobalIndex> seen;
+  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
+    const auto r = root(mesh.cell(c)[0]);
+    if (std::find(seen.begin(), seen.end(), r) == seen.end()) {
+      seen.push_back(r);
+      first_cell.push_back(c);
+      if (seen.size() > 8) break;
+    }
+  }
+  if (first_cell.size() < 2) return {};
+  return fmt::format("mesh '{}' is in {}{} disconnected pieces (one cell of each: {})",
+                     mesh.source, first_cell.size() > 8 ? "more than " : "",
+                     std::min<std::size_t>(first_cell.size(), 8), fmt::join(first_cell, ", "));
+}
+
+namespace {}  // namespace
 
 flow::Mesh build_mesh(const Scene& scene) {
   const std::string source = scene.get<std::string>("mesh.source");
@@ -69,8 +106,27 @@ flow::Mesh build_mesh(const Scene& scene) {
                               scene.get<double>("mesh.pipe.size"));
   }
   const double scale = scene.get<double>("mesh.scale");
-  if (scale != 1.0)
+  if (scale != 1.0) {
     for (auto& x : mesh.nodes) x *= scale;
+    // A generator's periodic pairs are in the mesh's units too (a scaled periodic box used to be
+    // refused: its translations no longer matched the nodes).
+    for (auto& link : mesh.periodic) link.translation *= scale;
+  }
+
+  // SI units: a mesh a micrometre across or of ten kilometres is a unit mistake, and far below that
+  // the dual-face metrics underflow (a box of 1e-200 m failed inside the Poisson weights).
+  if (!mesh.nodes.empty()) {
+    Eigen::Vector3d lo = mesh.nodes.front(), hi = lo;
+    for (const auto& x : mesh.nodes) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+    const double span = (hi - lo).lpNorm<Eigen::Infinity>();  // no underflow, unlike norm()
+    if (!(span >= min_mesh_span && span <= max_mesh_span))
+      throw scene.error(
+          scale != 1.0 ? "mesh.scale" : "mesh.source",
+          fmt::format("the mesh spans {:.3g} m (largest bounding-box side): valsalva "
+                      "works in SI units (mesh.scale converts a mesh drawn in mm)",
+                      span),
+          fmt::format("a mesh spanning [{:g}, {:g}] m", min_mesh_span, max_mesh_span));
+  }
 
   for (const auto& pair : scene.names("mesh.periodic")) {
     const std::string prefix = "mesh.periodic." + pair;
@@ -87,6 +143,8 @@ flow::Mesh build_mesh(const Scene& scene) {
     mesh.periodic.push_back(link);
   }
   flow::check_mesh(mesh);
+  if (const auto pieces = disconnected_pieces(mesh); !pieces.empty())
+    throw scene.error("mesh.source", pieces, "one connected mesh");
   return mesh;
 }
 

@@ -2,6 +2,8 @@
 // with the scene's periodic pairs, checked before use.
 #pragma once
 
+#include <string>
+
 #include "flow/mesh.hpp"
 #include "io/scene.hpp"
 
@@ -10,5 +12,9 @@ namespace valsalva::io {
 // Errors in the scene (a periodic patch the mesh lacks, an unreadable file) are SceneErrors
 // pointing at the key; errors in the mesh itself name the mesh file, cell or node.
 flow::Mesh build_mesh(const Scene& scene);
+
+// Empty when every cell is connected to every other through shared nodes (periodic pairs
+// aside); else a message naming the mesh and one cell of each piece (up to 8).
+std::string disconnected_pieces(const flow::Mesh& mesh);
 
 }  // namespace valsalva::io

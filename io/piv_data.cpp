@@ -230,6 +230,9 @@ PivData read_piv_tecplot(const std::filesystem::path& path) {
     if (head == "zone" || (in_zone_header && alpha && t.find('=') != std::string::npos)) {
       if (names.empty()) r.fail(line_no, "ZONE before the VARIABLES line");
       if (head == "zone") {
+        if (in_zone_header)  // the previous zone ended before its first data line
+          r.fail(zone_line, fmt::format("zone '{}' has no data (the next ZONE is on line {})",
+                                        data.frames.back().label, line_no));
         close_zone(line_no);
         zone_line = line_no;
         data.frames.emplace_back();

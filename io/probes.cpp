@@ -3,11 +3,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
 
 #include "flow/comm.hpp"
+#include "io/numeric_table.hpp"
 
 namespace valsalva::io {
 
@@ -115,44 +117,18 @@ std::vector<double> ProbeSeries::column(const std::string& name) const {
   return out;
 }
 
+// The shared strict reader (io/numeric_table.hpp): header required, finite values, unique
+// column names, errors at FILE:LINE:COLUMN.
 ProbeSeries read_probe_csv(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(fmt::format("probe file '{}': cannot open", path.string()));
+  if (!std::ifstream(path))
+    throw std::runtime_error(fmt::format("probe file '{}': cannot open", path.string()));
+  auto table = read_numeric_table(path, TableHeader::required);
+  if (table.columns.empty())
+    throw std::runtime_error(fmt::format("probe file '{}': empty", path.string()));
   ProbeSeries s;
-  s.source = path.string();
-  std::string line;
-  int line_no = 0;
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (line.empty()) continue;
-    std::stringstream ss(line);
-    std::string cell;
-    std::vector<std::string> cells;
-    while (std::getline(ss, cell, ',')) cells.push_back(cell);
-    if (s.columns.empty()) {
-      s.columns = cells;
-      continue;
-    }
-    if (cells.size() != s.columns.size())
-      throw std::runtime_error(fmt::format("probe file '{}' line {}: {} values, header has {}",
-                                           s.source, line_no, cells.size(), s.columns.size()));
-    std::vector<double> row;
-    for (const auto& c : cells) {
-      std::size_t used = 0;
-      double v = 0;
-      try {
-        v = std::stod(c, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != c.size())
-        throw std::runtime_error(
-            fmt::format("probe file '{}' line {}: '{}' is not a number", s.source, line_no, c));
-      row.push_back(v);
-    }
-    s.rows.push_back(std::move(row));
-  }
-  if (s.columns.empty()) throw std::runtime_error(fmt::format("probe file '{}': empty", s.source));
+  s.source = table.source;
+  s.columns = std::move(table.columns);
+  s.rows = std::move(table.rows);
   return s;
 }
 

@@ -52,7 +52,14 @@ void write_scene_docs(std::ostream& out, const Schema& schema) {
          "written `<name>` is a table name of your choice: `[mesh.periodic.<pair>]` accepts\n"
          "`[mesh.periodic.x]`. `valsalva check SCENE` validates a scene without running it; every\n"
          "run saves the scene with all defaults filled in as `resolved_scene.toml` in its run\n"
-         "directory.\n";
+         "directory, next to `valsalva_run.toml` (the run's identity, which `--overwrite` "
+         "needs).\n\n"
+         "`valsalva run SCENE --restart latest` continues a run in its directory from its newest\n"
+         "checkpoint: the CSV series are cut back to the checkpoint's step, the scene is kept as\n"
+         "`resolved_scene_restart_<step>.toml`, and only `time.end`, `time.max_steps`, the\n"
+         "`output` intervals and checkpoint keys, `[run]`, `[partition]` and `[sample.<name>]`\n"
+         "sections may differ "
+         "from the run's scene; any other change is refused naming the key and both values.\n";
   for (const auto& section : schema.sections()) {
     out << fmt::format("\n## `[{}]`\n\n{}\n", section.path, cell(section.text));
     for (const auto* c : schema.conditions_for(section.pattern))

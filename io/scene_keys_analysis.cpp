@@ -72,7 +72,11 @@ void declare_analysis_keys(Schema& s) {
       .at_least(0)
       .unit_of("s")
       .doc("Cycle period; 0 = plain time average (bins must be 1)");
-  s.integer(st + ".bins").def(1).at_least(1).unit_of("-").doc("Phase bins per period");
+  s.integer(st + ".bins")
+      .def(1)
+      .at_least(1)
+      .unit_of("-")
+      .doc("Phase bins per period; with a fixed time.dt, bins no narrower than dt");
   s.real(st + ".start_time")
       .def(0.0)
       .at_least(0)
@@ -192,6 +196,15 @@ AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh
     s.phase.bins = scene.get<int>(k + ".bins");
     if (s.phase.period == 0 && s.phase.bins != 1)
       throw scene.error(k + ".bins", "a plain time average (period = 0) has one bin", "1");
+    // A bin narrower than a fixed time step stays empty in most cycles.
+    if (const double dt = scene.get<double>("time.dt");
+        s.phase.period > 0 && dt > 0 && s.phase.period / s.phase.bins < dt)
+      throw scene.error(
+          k + ".bins",
+          fmt::format("{} bins of period {:g} s are {:.3g} s wide, less than time.dt = {:g} s: "
+                      "most bins would get no sample",
+                      s.phase.bins, s.phase.period, s.phase.period / s.phase.bins, dt),
+          fmt::format("<= period / time.dt = {}", static_cast<long>(s.phase.period / dt)));
     s.phase.start_time = scene.get<double>(k + ".start_time");
     s.phase.density = rho;
     s.phase.name = name;

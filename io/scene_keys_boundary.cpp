@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <set>
 
+#include "io/numeric_table.hpp"
 #include "io/scene_keys.hpp"
 
 namespace valsalva::io {
@@ -132,7 +133,12 @@ std::vector<flow::BoundarySpec> read_boundary_conditions(const Scene& scene,
       if (waveform == "table") {
         try {
           q = flow::read_waveform_csv(scene.path(key + ".file"));
+          // The strict reader too: flow's takes any first line that does not parse for a
+          // header, which drops a first data row with a typo.
+          read_numeric_table(scene.path(key + ".file"), TableHeader::optional, 2, true);
         } catch (const flow::WaveformError& e) {
+          throw scene.error(key + ".file", e.what());
+        } catch (const TableError& e) {
           throw scene.error(key + ".file", e.what());
         }
       } else {

@@ -3,12 +3,19 @@
 // field output; and their reader flow_run_options.
 #include "io/scene_keys_flow.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
 #include "io/scene_keys.hpp"
 
 namespace valsalva::io {
+
+namespace {
+constexpr double max_field_outputs = 1e5;  // fields written per run (output.interval in s)
+constexpr double max_time_steps = 1e9;     // steps a fixed time.dt may take to time.end
+}  // namespace
 
 void declare_flow_keys(Schema& s) {
   s.section("flow", "Fluid properties and the discretisation of the momentum equation.");
@@ -55,8 +62,9 @@ void declare_flow_keys(Schema& s) {
       .unit_of("s")
       .doc("End time; 0 takes no time step (only the initial state is written)");
   s.real("time.dt").def(0.0).at_least(0).unit_of("s").doc(
-      "Fixed time step, refused beyond the RK4 stability limit; 0 = from time.cfl and time.fourier "
-      "at every step");
+      "Fixed time step, refused beyond the RK4 stability limit and when it takes more than 1e9 "
+      "steps to time.end without time.max_steps; 0 = from time.cfl and time.fourier at every "
+      "step");
   s.real("time.cfl")
       .def(0.5)
       .above(0)
@@ -91,23 +99,39 @@ void declare_flow_keys(Schema& s) {
       .in_range(0, 1)
       .unit_of("-")
       .doc("BoomerAMG strength threshold (0.5 is hypre's advice in 3D)");
+  // The preconditioner of PCG must be a fixed symmetric positive definite operator: BoomerAMG's
+  // V-cycle is one when its restriction is P^T (hypre's default, any interpolation) and its
+  // smoother is symmetric (the same on the down and up cycle). The lists keep the values hypre
+  // 2.26 documents that meet this on a scalar elliptic matrix.
   s.integer("poisson.coarsen_type")
       .def(10)
-      .in_range(0, 22)
-      .unit_of("-")
-      .doc("BoomerAMG coarsening, hypre numbering (6 Falgout, 8 PMIS, 10 HMIS)");
-  s.integer("poisson.interp_type")
-      .def(6)
-      .in_range(0, 17)
-      .unit_of("-")
-      .doc("BoomerAMG interpolation, hypre numbering (0 classical, 6 extended+i)");
-  s.integer("poisson.relax_type")
-      .def(6)
-      .in_range(0, 18)
+      .one_of({0, 1, 3, 6, 7, 8, 9, 10, 11, 21, 22})
       .unit_of("-")
       .doc(
-          "BoomerAMG smoother, hypre numbering (6 hybrid symmetric Gauss-Seidel, 3 hybrid "
-          "Gauss-Seidel)");
+          "BoomerAMG coarsening, hypre numbering: 0 CLJP, 1 Ruge-Stueben, 3 RS + boundary pass, 6 "
+          "Falgout, 7 CLJP fixed random, 8 PMIS, 9 PMIS fixed random, 10 HMIS, 11 one-pass RS, 21 "
+          "CGC, 22 CGC-E (every documented splitting; the other numbers are none)");
+  s.integer("poisson.interp_type")
+      .def(6)
+      .one_of({0, 3, 4, 5, 6, 7, 8, 9, 12, 13, 14, 16, 17, 18})
+      .unit_of("-")
+      .doc(
+          "BoomerAMG interpolation, hypre numbering: 0 classical, 3 direct, 4/5 multipass, 6 "
+          "extended+i, 7 extended+i (no common C), 8/9 standard, 12 FF, 13 FF1, 14 extended, "
+          "16-18 matrix-matrix extended forms; refused: 1 (LS, needs GSMG: crashes hypre), 2 (for "
+          "hyperbolic PDEs), 10/11 (block, for systems: the Poisson matrix is scalar), 15 (GPU "
+          "only)");
+  s.integer("poisson.relax_type")
+      .def(6)
+      .one_of({0, 6, 8, 16, 17, 18})
+      .unit_of("-")
+      .doc(
+          "BoomerAMG smoother (down and up cycle), hypre numbering: 0 Jacobi, 6 hybrid symmetric "
+          "Gauss-Seidel, 8 l1 symmetric Gauss-Seidel, 16 Chebyshev, 17 FCF-Jacobi, 18 l1-Jacobi; "
+          "PCG needs a symmetric fixed smoother, so refused: forward or backward Gauss-Seidel "
+          "(1-4, "
+          "13, 14: the V-cycle is not symmetric), 5 (OpenMP chaotic), 9 (Gaussian elimination, "
+          "coarsest level only: aborts hypre), 15 (CG, not a fixed operator)");
   s.integer("poisson.aggressive_levels")
       .def(0)
       .in_range(0, 10)
@@ -148,7 +172,9 @@ void declare_flow_keys(Schema& s) {
       .def(0.0)
       .at_least(0)
       .unit_of("s or steps")
-      .doc("Write the fields at t = 0, every interval and at the end; 0 = no fields");
+      .doc(
+          "Write the fields at t = 0, every interval and at the end; 0 = no fields; an interval "
+          "in s giving more than 1e5 writes up to time.end is refused");
   s.choice("output.interval_unit", {"s", "steps"})
       .def("s")
       .unit_of("-")
@@ -231,6 +257,21 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   if (out.interval_in_steps && out.interval != std::floor(out.interval))
     throw scene.error("output.interval", "a step interval must be a whole number of steps",
                       "0, 1, 2, ...");
+  // Scenes that would bury a run in output or never end (issue 23): refused up front.
+  const double end = o.time.end;
+  if (out.interval > 0 && !out.interval_in_steps && end / out.interval > max_field_outputs)
+    throw scene.error(
+        "output.interval",
+        fmt::format("{:g} s writes the fields {:.3g} times up to time.end = {:g} s "
+                    "(each write also shortens the time step to land on it)",
+                    out.interval, end / out.interval, end),
+        fmt::format(">= time.end / {:g} = {:g} s", max_field_outputs, end / max_field_outputs));
+  if (o.time.dt > 0 && end / o.time.dt > max_time_steps && o.time.max_steps == 0)
+    throw scene.error("time.dt",
+                      fmt::format("{:g} s takes {:.3g} steps to time.end = {:g} s", o.time.dt,
+                                  end / o.time.dt, end),
+                      fmt::format(">= time.end / {:g} = {:g} s, or set time.max_steps",
+                                  max_time_steps, end / max_time_steps));
   const auto fields = scene.get<std::vector<std::string>>("output.fields");
   auto wants = [&](const char* f) {
     return std::find(fields.begin(), fields.end(), f) != fields.end();
@@ -240,6 +281,34 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   out.vorticity = wants("vorticity");
   out.q_criterion = wants("q_criterion");
   return o;
+}
+
+void check_initial_state(const Scene& scene, const flow::Mesh& mesh) {
+  if (scene.get<std::string>("initial.type") != "taylor_green") return;
+  const double length = scene.get<double>("initial.taylor_green.length");
+  const double period = 2 * M_PI * length;
+  for (int axis : {0, 1}) {
+    const char* name = axis == 0 ? "x" : "y";
+    double found = 0;  // the translation along this axis, 0 if none
+    for (const auto& link : mesh.periodic) {
+      const Eigen::Vector3d t = link.translation.cwiseAbs();
+      if (t[axis] > 0 && t[axis] >= 1e3 * (t.sum() - t[axis])) found = t[axis];
+    }
+    if (found == 0)
+      throw scene.error("initial.taylor_green.length",
+                        fmt::format("the Taylor-Green vortex is periodic in {0}, the mesh is not "
+                                    "(no periodic pair along {0})",
+                                    name),
+                        "a mesh periodic in x and y");
+    const double k = std::round(found / period);
+    if (k < 1 || std::abs(found - k * period) > 1e-9 * found)
+      throw scene.error(
+          "initial.taylor_green.length",
+          fmt::format("{:g} m: the mesh's periodic length in {} is {:.9g} m, not a whole multiple "
+                      "of 2 pi L = {:.9g} m, so the vortex is not its exact solution",
+                      length, name, found, period),
+          fmt::format("L = {:.9g} m / (2 pi k), k = 1, 2, ...", found));
+  }
 }
 
 }  // namespace valsalva::io

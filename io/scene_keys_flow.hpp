@@ -14,4 +14,9 @@ namespace valsalva::io {
 // that is not a whole number).
 flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::path& run_dir);
 
+// The initial state against the mesh: a Taylor-Green start needs a mesh periodic in x and y
+// with translations that are whole multiples of 2 pi L (else the "exact solution" the run's
+// error is measured against is not one). Throws SceneError naming initial.taylor_green.length.
+void check_initial_state(const Scene& scene, const flow::Mesh& mesh);
+
 }  // namespace valsalva::io

@@ -16,8 +16,9 @@ void declare_run_keys(Schema& s) {
       .def(false)
       .unit_of("-")
       .doc(
-          "Allow reusing a non-empty run directory (same as --overwrite); its old contents are "
-          "deleted");
+          "Allow reusing a non-empty run directory (same as --overwrite): only one whose "
+          "valsalva_run.toml names it, and then only the files and folders valsalva writes are "
+          "deleted; any other entry there is listed and the run refused");
   s.integer("run.log_every")
       .def(10)
       .at_least(1)

@@ -253,6 +253,16 @@ ImmersedSetup read_immersed_setup(const Scene& scene, const flow::Mesh& mesh) {
     } catch (const std::invalid_argument& e) {
       throw SceneError({e.what()});
     }
+    // Mooney-Rivlin's shear modulus is 2 (C10 + C01): each may be 0, not both (a solid that
+    // resists no shear lets the leaflet fold through the flow).
+    if (const auto p = scene.get<std::map<std::string, double>>(k + ".parameters");
+        scene.get<std::string>(k + ".material") == "mooney_rivlin" &&
+        !(p.at("C10") + p.at("C01") > 0))
+      throw scene.error(k + ".parameters",
+                        fmt::format("material 'mooney_rivlin': the shear modulus 2 (C10 + C01) = "
+                                    "{:g} Pa is not positive",
+                                    2 * (p.at("C10") + p.at("C01"))),
+                        "C10 + C01 > 0");
     st.body.name = name;
     st.body.clamped_sets = scene.get<std::vector<std::string>>(k + ".clamped");
     for (const auto& set : st.body.clamped_sets)

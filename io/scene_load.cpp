@@ -190,7 +190,8 @@ bool Loader::number(const KeyDecl& decl, const toml::node& v, const std::string&
     return false;
   };
   if (!std::isfinite(x)) return report("not a finite number", true);
-  if (!within_bounds(decl, x)) return report("out of range", true);
+  if (!within_bounds(decl, x))
+    return report(decl.integers.empty() ? "out of range" : "not an accepted value", true);
   // Integers are read as int by the code; keep them in its range.
   if (integer && std::abs(x) > 2147483647.0) return report("does not fit a 32-bit integer", false);
   return true;

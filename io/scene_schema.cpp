@@ -1,6 +1,7 @@
 #include "io/scene_schema.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cctype>
@@ -92,6 +93,9 @@ KeyDecl& KeyDecl::at_most(double v) {
 }
 KeyDecl& KeyDecl::below(double v) {
   return upper = Bound{v, false}, *this;
+}
+KeyDecl& KeyDecl::one_of(std::vector<std::int64_t> v) {
+  return integers = std::move(v), *this;
 }
 KeyDecl& KeyDecl::in_range(double lo, double hi) {
   lower = Bound{lo, true};
@@ -282,7 +286,8 @@ bool within_bounds(const KeyDecl& key, double x) {
     return false;
   if (key.upper && (key.upper->inclusive ? x > key.upper->value : x >= key.upper->value))
     return false;
-  return true;
+  return key.integers.empty() ||
+         std::find(key.integers.begin(), key.integers.end(), x) != key.integers.end();
 }
 
 static bool default_is_accepted(const KeyDecl& key) {
@@ -336,6 +341,8 @@ void Schema::check() const {
     if (key.text.empty()) fail(key.path, "has no doc line");
     if (key.unit.empty()) fail(key.path, "has no unit (use \"-\" for none)");
     if (key.type == KeyType::choice && key.choices.empty()) fail(key.path, "choice without values");
+    if (!key.integers.empty() && key.type != KeyType::integer)
+      fail(key.path, "one_of() is for integer keys");
     if (key.fallback && !value_has_type(*key.fallback, key.type))
       fail(key.path, "default has the wrong type");
     if (key.fallback && !default_is_accepted(key))
@@ -439,6 +446,8 @@ std::string accepted_values(const KeyDecl& key) {
                             ? "any strings"
                             : "each of " + quoted_list(key.choices) + ", no repeats");
     case KeyType::integer:
+      if (!key.integers.empty()) return fmt::format("one of {}", fmt::join(key.integers, ", "));
+      return range.empty() ? "any" : range;
     case KeyType::real:
       return range.empty() ? "any" : range;
     case KeyType::real3:

@@ -51,9 +51,10 @@ struct KeyDecl {
   std::string default_note;  // replaces the literal default in docs, e.g. "runs/<scene stem>"
   std::string unit;          // SI unit or "-"
   std::string text;          // one-line doc
-  std::vector<std::string> choices;   // choice: accepted values; string_list: accepted elements
-  std::optional<Bound> lower, upper;  // numbers, element-wise for arrays and tables
-  std::size_t min_size = 0;           // real_list / string_list
+  std::vector<std::string> choices;    // choice: accepted values; string_list: accepted elements
+  std::optional<Bound> lower, upper;   // numbers, element-wise for arrays and tables
+  std::size_t min_size = 0;            // real_list / string_list
+  std::vector<std::int64_t> integers;  // integer: the only accepted values, when not empty
 
   KeyDecl& def(bool v);
   KeyDecl& def(int v);
@@ -76,6 +77,7 @@ struct KeyDecl {
   KeyDecl& at_most(double v);
   KeyDecl& below(double v);
   KeyDecl& in_range(double lo, double hi);
+  KeyDecl& one_of(std::vector<std::int64_t> v);  // integer keys: a list, not a range
   KeyDecl& at_least_size(std::size_t n);
 };
 
@@ -146,7 +148,7 @@ std::string normalise_pattern(std::string_view path);  // "<x>" segments -> "*"
 std::vector<std::string> split_path(std::string_view path);
 bool is_wildcard(std::string_view segment);
 bool pattern_matches(std::string_view pattern, std::string_view concrete);
-bool within_bounds(const KeyDecl& key, double x);  // lower/upper bounds of the key
+bool within_bounds(const KeyDecl& key, double x);  // bounds (and one_of list) of the key
 std::string type_name(KeyType type);               // "float", "int[3]", ...
 std::string accepted_values(const KeyDecl& key);   // "> 0", "\"box\", \"gmsh\"", "any"
 std::string format_value(const KeyValue& value);   // TOML literal: 1.0, "hexa", [1, 2, 3]

@@ -16,11 +16,11 @@ grep -q 'restart: .*checkpoint_000000008.h5 (step 8' rest.out
 # The restart kept the first half's fields and continued the log.
 test -s part/fields_000000.h5 && test -s part/fields.xmf
 grep -q '^8,' part/log.csv && grep -q '^12,' part/log.csv
-# A second restart from the same checkpoint into the same directory is refused.
-if "$app" run "$here/scenes/$scene.toml" --out part --restart latest > again.out 2>&1; then
-  echo "second restart was not refused"; exit 1
-fi
-grep -q 'already restarted' again.out
+# A second restart from the same checkpoint (as after a second crash) recomputes the same steps:
+# it replaces the first restart's fields and cuts the logs back to the checkpoint, so nothing is
+# written twice (the comparisons below then hold for it).
+$mpiexec --oversubscribe -n "$np_full" "$app" run "$here/scenes/$scene.toml" --out part --restart latest > again.out
+grep -q 'restart: .*fields_restart_000000008.xmf (an earlier restart' again.out
 full_last=$(ls full/fields_0*.h5 | sort | tail -1)
 part_last=$(ls part/fields_restart_000000008_0*.h5 | sort | tail -1)
 # LES scenes also write nu_sgs/nu and the subgrid energy fraction: compared as well.

@@ -49,6 +49,7 @@ TEST_CASE("every bad mesh file gives its specific message") {
       {"missing_group.msh",
        {"missing physical group", "2 boundary faces", "(0, 0, 1) - (1, 1, 1)"}},
       {"unused_node.msh", {"unused node 8", "(2, 2, 2)"}},
+      {"duplicate_node_tag.msh", {"node tag 8 is defined twice", "(1, 1, 1)", "(2, 2, 2)"}},
       {"non_manifold.msh", {"non-manifold", "more than two cells"}},
       {"stray_face.msh", {"not a face of any cell", "'wall'"}},
       {"interior_face.msh", {"lies inside", "'wall'"}},

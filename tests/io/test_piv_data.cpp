@@ -73,6 +73,8 @@ TEST_CASE("PIV readers: malformed files name file, line and problem") {
       {"tecplot_long_zone.dat",
        "line 5: zone 'p0' (line 2) declares I*J = 2 points, this is one more"},
       {"tecplot_wrong_values.dat", "line 3: 3 values, VARIABLES names 4"},
+      // A zone with no points followed by a complete one (issue 23, item 10).
+      {"tecplot_empty_zone.dat", "line 2: zone 'phase 1' has no data (the next ZONE is on line 3)"},
   };
   for (const auto& c : cases) {
     CAPTURE(c.file);

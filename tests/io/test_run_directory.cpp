@@ -1,5 +1,6 @@
 // Run directories: created collectively, resolved_scene.toml written, a non-empty directory
-// refused without overwrite, and only run directories are cleared with it. Runs at 1 and 2 ranks.
+// refused without overwrite, and with it only valsalva's own entries of a directory its marker
+// names are cleared. Runs at 1 and 2 ranks.
 #include <doctest/doctest.h>
 #include <mpi.h>
 #include <unistd.h>
@@ -68,22 +69,56 @@ TEST_CASE("prepare creates the directory, writes the resolved scene, and guards 
     CHECK(m.find("run.overwrite") != std::string::npos);
   }
 
-  // With overwrite the old contents go.
-  if (rank == 0) std::ofstream(dir / "old_result.dat") << "old";
+  // With overwrite valsalva's own results go (files and folders it writes).
+  const std::string marker = read(dir / "valsalva_run.toml");
+  CHECK(marker.find("directory = \"" + fs::weakly_canonical(fs::absolute(dir)).string() + "\"") !=
+        std::string::npos);
+  if (rank == 0) {
+    std::ofstream(dir / "log.csv") << "old";
+    std::ofstream(dir / "fields_000003.h5") << "old";
+    fs::create_directories(dir / "checkpoints");
+    std::ofstream(dir / "checkpoints" / "checkpoint_000000008.h5") << "old";
+  }
   barrier();
   RunDirectory::prepare(dir, true, scene, MPI_COMM_WORLD);
-  CHECK_FALSE(fs::exists(dir / "old_result.dat"));
+  CHECK_FALSE(fs::exists(dir / "log.csv"));
+  CHECK_FALSE(fs::exists(dir / "fields_000003.h5"));
+  CHECK_FALSE(fs::exists(dir / "checkpoints"));
   CHECK(fs::exists(dir / "resolved_scene.toml"));
+  // A new run, a new identity.
+  CHECK(read(dir / "valsalva_run.toml") != marker);
 
-  // A non-empty folder that is not a run directory is never cleared, even with overwrite.
+  // Anything valsalva did not write makes --overwrite refuse, listing it, and nothing goes.
+  if (rank == 0) {
+    std::ofstream(dir / "log.csv") << "old";
+    std::ofstream(dir / "notes.txt") << "mine";
+    fs::create_directories(dir / "paper");
+  }
+  barrier();
+  CHECK_THROWS_WITH_AS(RunDirectory::prepare(dir, true, scene, MPI_COMM_WORLD),
+                       doctest::Contains("entries valsalva did not write: notes.txt, paper"),
+                       RunDirectoryError);
+  CHECK(read(dir / "notes.txt") == "mine");
+  CHECK(fs::exists(dir / "log.csv"));
+
+  // A folder with a copied scene (no marker) or a copied marker (naming another folder) is a
+  // user's folder: never cleared, even with overwrite.
   const fs::path other = root / "not_a_run";
   if (rank == 0) {
     fs::create_directories(other);
     std::ofstream(other / "thesis.tex") << "precious";
+    fs::copy_file(dir / "resolved_scene.toml", other / "resolved_scene.toml");
   }
   barrier();
   CHECK_THROWS_WITH_AS(RunDirectory::prepare(other, true, scene, MPI_COMM_WORLD),
-                       doctest::Contains("refusing to delete its contents"), RunDirectoryError);
+                       doctest::Contains("holds no valsalva marker valsalva_run.toml"),
+                       RunDirectoryError);
+  if (rank == 0) fs::copy_file(dir / "valsalva_run.toml", other / "valsalva_run.toml");
+  barrier();
+  const std::string written_for =
+      "was written for '" + fs::weakly_canonical(fs::absolute(dir)).string();
+  CHECK_THROWS_WITH_AS(RunDirectory::prepare(other, true, scene, MPI_COMM_WORLD),
+                       doctest::Contains(written_for.c_str()), RunDirectoryError);
   CHECK(read(other / "thesis.tex") == "precious");
 
   // An existing empty directory is fine without overwrite.

@@ -70,14 +70,15 @@ def write22(name, nodes, elements, names, cut=None):
         f.write(text)
 
 
-def write41(name, nodes, tets, triangles):
+def write41(name, nodes, tets, triangles, node_tags=None):
     """Format 4.1 ASCII: one volume entity ("fluid") holding every node, one surface ("wall")."""
     n, nt, nf = len(nodes), len(tets), len(triangles)
+    node_tags = node_tags or [i + 1 for i in range(n)]
     lines = ["$MeshFormat", "4.1 0 8", "$EndMeshFormat", "$PhysicalNames", "2",
              '2 1 "wall"', '3 2 "fluid"', "$EndPhysicalNames", "$Entities", "0 0 1 1",
              "1 0 0 0 1 1 1 1 1 0", "1 0 0 0 1 1 1 1 2 1 1", "$EndEntities",
-             "$Nodes", f"1 {n} 1 {n}", f"3 1 0 {n}"]
-    lines += [str(i + 1) for i in range(n)]
+             "$Nodes", f"1 {n} 1 {max(node_tags)}", f"3 1 0 {n}"]
+    lines += [str(t) for t in node_tags]
     lines += [f"{x:.17g} {y:.17g} {z:.17g}" for (x, y, z) in nodes]
     lines += ["$EndNodes", "$Elements", f"2 {nt + nf} 1 {nt + nf}", f"3 1 4 {nt}"]
     lines += [" ".join(map(str, [i + 1, *t])) for i, t in enumerate(tets)]
@@ -132,6 +133,13 @@ def main():
             NAMES)
     # A ninth node that no cell uses (format 4.1: the 2.2 reader of Gmsh drops such nodes).
     write41("unused_node.msh", NODES + [(2, 2, 2)], TETS, BOUNDARY)
+    # Two unit cubes 2 m apart: a mesh in two pieces.
+    far = [(x + 3, y, z) for (x, y, z) in NODES]
+    write41("two_pieces.msh", NODES + far, TETS + [[n + 8 for n in t] for t in TETS],
+            BOUNDARY + [[n + 8 for n in f] for f in BOUNDARY])
+    # Node tag 8 defined twice (the second at (2, 2, 2)): refused, not one silently winning.
+    write41("duplicate_node_tag.msh", NODES + [(2, 2, 2)], TETS, BOUNDARY,
+            node_tags=list(range(1, 9)) + [8])
     # A third tetrahedron on an interior face: the face is shared by three cells.
     a, b, c = INTERIOR[0]
     apex = len(NODES) + 1

@@ -1,0 +1,63 @@
+// Continuing a run in its own directory from one of its checkpoints (`valsalva run --restart`)
+// so that the directory ends up as an uninterrupted run would have left it:
+// - the scene may change only in what does not alter the computed history (restart_scene_change),
+//   and each restart's scene is recorded next to the first (resolved_scene_restart_<step>.toml);
+// - every CSV series the run appends to is cut back to the checkpoint (truncate_series), so rows
+//   written after it by the interrupted run are not repeated;
+// - field and Lagrangian-mesh series of earlier restarts from this checkpoint or a later one are
+//   superseded and removed (superseded_restart_outputs), so the printed "--restart latest"
+//   works after any number of crashes.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "flow/comm.hpp"
+#include "io/scene.hpp"
+
+namespace valsalva::io {
+
+// A CSV series appended to by a run, and whether its first column is the step (else the time).
+struct AppendedSeries {
+  std::string file;  // relative to the run directory
+  bool by_step = false;
+};
+
+// The appended series of a run directory: log.csv, probes.csv, pressure_drop.csv,
+// wall_shear_history.csv, structures.csv.
+const std::vector<AppendedSeries>& appended_series();
+
+// Keeps the header line and the rows written up to the checkpoint: first column <= `step` (step
+// series) or <= time + dt / 2 (time series: rows come one per step at most, so half the last
+// step separates the checkpoint's row from the next one whatever digits were printed). A torn
+// last line (a kill during the write) is dropped. Throws naming file and line when a row's first
+// column is not a number. Returns the number of rows removed.
+std::size_t truncate_series(const std::filesystem::path& file, bool by_step, std::int64_t step,
+                            double time, double dt);
+
+// Keys a restart may change: time.end, time.max_steps, the output intervals and checkpoint
+// settings, run.* (progress and where results go), partition.* (results agree to round-off
+// across partitions, as across rank counts), and [sample.<name>] sections added or removed (each
+// writes files of its own). Every other difference between the recorded scene
+// (the run directory's resolved_scene.toml) and `scene` is refused: the message names each key
+// and both values (a key only one of them has shows "(absent)"). Empty when none.
+std::string restart_scene_change(const std::filesystem::path& recorded, const Scene& scene);
+
+// Outputs of earlier restarts from checkpoint step >= `step` (fields_restart_<S>.xmf and its
+// HDF5 files, structures/<name>_restart_<S>*): they cover times after the checkpoint, which this
+// restart computes again.
+std::vector<std::filesystem::path> superseded_restart_outputs(const std::filesystem::path& dir,
+                                                              std::int64_t step);
+
+// Collective. Prepares run directory `dir` for a restart from the checkpoint at `step` (time,
+// dt): every series in `series` (names from appended_series() the scene writes) must exist and
+// is truncated, the superseded restart outputs are removed, and the scene is recorded as
+// resolved_scene_restart_<step>.toml. Rank 0 does the work and prints what it cut; an error
+// is thrown on every rank.
+void continue_in_place(const std::filesystem::path& dir, const Scene& scene, std::int64_t step,
+                       double time, double dt, const std::vector<std::string>& series,
+                       const flow::Comm& comm);
+
+}  // namespace valsalva::io

@@ -1,0 +1,166 @@
+// Seeded random-mutation fuzzing of the text readers and the scene loader (issue 23, evidence):
+// each good input is mutated (bytes flipped, deleted, duplicated; hostile tokens such as nan,
+// 1e999, ",", "=", "[", quotes and line breaks inserted; lines repeated or dropped) a fixed
+// number of times with a fixed seed, and each reader must either accept the result or throw its
+// documented error (std::runtime_error and its subclasses: TableError, SceneError). A crash, a
+// hang, a std::logic_error (out_of_range, invalid_argument: an internal bug) or any other
+// exception fails the test. Build with the asan preset to also catch silent memory errors.
+#include <doctest/doctest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "io/numeric_table.hpp"
+#include "io/piv_data.hpp"
+#include "io/probes.hpp"
+#include "io/scene.hpp"
+
+namespace fs = std::filesystem;
+using namespace valsalva;
+
+namespace {
+
+const fs::path source = fs::path(VALSALVA_SOURCE_DIR);
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string mutate(std::string text, std::mt19937_64& random) {
+  static const std::vector<std::string> tokens{"nan",
+                                               "inf",
+                                               "-inf",
+                                               "1e999",
+                                               "-1e-999",
+                                               "1e308",
+                                               ",",
+                                               ",,",
+                                               ";",
+                                               " ",
+                                               "\t",
+                                               "\n",
+                                               "\r\n",
+                                               "=",
+                                               "[",
+                                               "]",
+                                               "{",
+                                               "}",
+                                               "\"",
+                                               "'",
+                                               "#",
+                                               "0x1p3",
+                                               "+",
+                                               "-",
+                                               ".",
+                                               "e",
+                                               "ZONE I=3, J=2\n",
+                                               "VARIABLES = \"x\", \"y\"\n",
+                                               "[mesh]\n",
+                                               "source = \"gmsh\"\n",
+                                               "cells = [0, 0, 0]\n",
+                                               "99999999999999999999",
+                                               "\xff\xfe",
+                                               std::string(1, '\0')};
+  const int edits = 1 + static_cast<int>(random() % 4);
+  for (int e = 0; e < edits; ++e) {
+    const std::size_t at = text.empty() ? 0 : random() % (text.size() + 1);
+    switch (random() % 6) {
+      case 0:  // flip a byte
+        if (at < text.size()) text[at] = static_cast<char>(random() % 256);
+        break;
+      case 1:  // delete a run
+        if (at < text.size()) text.erase(at, 1 + random() % 8);
+        break;
+      case 2:  // hostile token
+        text.insert(at, tokens[random() % tokens.size()]);
+        break;
+      case 3: {  // duplicate a line
+        const std::size_t a = text.rfind('\n', at == 0 ? 0 : at - 1);
+        const std::size_t b = text.find('\n', at);
+        const std::size_t begin = a == std::string::npos ? 0 : a + 1;
+        const std::size_t end = b == std::string::npos ? text.size() : b + 1;
+        if (begin < end) text.insert(begin, text.substr(begin, end - begin));
+        break;
+      }
+      case 4:  // truncate
+        text.resize(at);
+        break;
+      default:  // digit change
+        for (std::size_t k = at; k < text.size(); ++k)
+          if (text[k] >= '0' && text[k] <= '9') {
+            text[k] = static_cast<char>('0' + random() % 10);
+            break;
+          }
+    }
+  }
+  return text;
+}
+
+// Runs `reader` on `iterations` mutations of `seed_file`; counts accepted and refused inputs.
+void fuzz(const fs::path& seed_file, int iterations, std::uint64_t seed,
+          const std::function<void(const fs::path&)>& reader) {
+  const std::string original = read(seed_file);
+  REQUIRE_FALSE(original.empty());
+  const fs::path dir = fs::temp_directory_path() / ("valsalva_fuzz_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const fs::path file = dir / seed_file.filename();
+  std::mt19937_64 random(seed);
+  int accepted = 0, refused = 0;
+  for (int i = 0; i < iterations; ++i) {
+    const std::string input = mutate(original, random);
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << input;
+    try {
+      reader(file);
+      ++accepted;
+    } catch (const std::logic_error& e) {
+      FAIL_CHECK("iteration " << i << ": internal error " << e.what() << "\n--- input:\n" << input);
+    } catch (const std::runtime_error&) {
+      ++refused;
+    }
+  }
+  fs::remove_all(dir);
+  MESSAGE(seed_file.filename().string()
+          << ": " << accepted << " accepted, " << refused << " refused");
+  CHECK(refused > 0);  // the mutations do reach the error paths
+}
+
+}  // namespace
+
+TEST_CASE("fuzzed numeric tables (probe series, waveforms) fail only with TableError") {
+  for (const char* seed : {"tests/app/data/probes_short.csv", "tests/app/scenes/waveform.csv"}) {
+    fuzz(source / seed, 2000, 23, [](const fs::path& f) {
+      io::read_numeric_table(f, io::TableHeader::optional);
+      io::read_numeric_table(f, io::TableHeader::optional, 2, true);
+      io::read_probe_csv(f);
+    });
+  }
+}
+
+TEST_CASE("fuzzed PIV files (CSV and Tecplot) fail only with a runtime error") {
+  for (const char* seed : {"tests/data/piv/good.csv", "tests/data/piv/good.dat"})
+    fuzz(source / seed, 2000, 7, [](const fs::path& f) { io::read_piv(f); });
+}
+
+TEST_CASE("fuzzed scenes fail only with SceneError") {
+  for (const char* seed :
+       {"scenes/default.toml", "scenes/poiseuille_pipe.toml", "scenes/flap_channel.toml"})
+    fuzz(source / seed, 1000, 11, [](const fs::path& f) {
+      try {
+        io::load_scene(f);
+      } catch (const io::SceneError&) {
+        throw;
+      } catch (const std::exception& e) {
+        // Everything the loader rejects must come as a SceneError naming file:line:column.
+        throw std::logic_error(std::string("not a SceneError: ") + e.what());
+      }
+    });
+}
