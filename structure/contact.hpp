@@ -64,6 +64,14 @@ struct ContactOptions {
   double search_factor = 1.0;
   // Gauss points per direction on each slave face; 0: order + 2 (as pressure loads).
   int quadrature = 0;
+  // two_half_pass (the header): passes the patch test; the two bodies' forces are equal and
+  // opposite only up to the discretisation (the halves integrate different gaps on different
+  // faces). two_pass: each half applies half its traction to the slave and the reaction to the
+  // master nodes at the closest point (N_b there), so every Gauss point's forces cancel exactly
+  // (no net force, which the immersed boundary would spread into the fluid), at the price of
+  // the patch test (the master-side forces are integrated at the other surface's points).
+  enum class Formulation { two_half_pass, two_pass };
+  Formulation formulation = Formulation::two_half_pass;
 };
 
 // Result of one evaluation, per pair (two-half-pass pairs: both halves together) or obstacle.
@@ -113,12 +121,17 @@ class Contact {
   bool empty() const { return pairs_.empty() && obstacles_.empty(); }
   // Adds the contact forces (acting on the nodes, like SolidForces' internal forces) to f; when
   // K is given, appends the tangent -df/dx as triplets (dof 3 * node + component).
-  ContactSummary add_forces(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& f,
+  // Allocates (search grid, candidate lists).
+  ContactSummary add_forces(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
+                            Eigen::Ref<Eigen::Matrix3Xd> f,
                             std::vector<Eigen::Triplet<double>>* K = nullptr) const;
-  std::vector<ContactPoint> points(const Eigen::Matrix3Xd& x) const;
-  // Largest sum over a node of eps * (its share of the reference contact area) [N/m]: the
-  // stiffness a fully active contact adds to a node (for explicit time-step bounds).
-  double max_nodal_stiffness() const;
+  // The summary alone (no forces).
+  ContactSummary summary(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const;
+  std::vector<ContactPoint> points(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const;
+  // Per node: eps times its share int N_a dA of the reference contact area, summed over the
+  // surfaces it is on [N/m] (the row sum of the tangent of a fully active, flat contact: what
+  // closing contact can add to a node's stiffness, for explicit time-step bounds).
+  Eigen::VectorXd nodal_stiffness() const;
 
  private:
   const SolidMesh& mesh_;
@@ -128,8 +141,8 @@ class Contact {
   double modulus_ = 0;
   std::vector<double> h_;  // per pair, then per obstacle
   template <int NF>
-  ContactSummary evaluate(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd* f,
-                          std::vector<Eigen::Triplet<double>>* K,
+  ContactSummary evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
+                          Eigen::Ref<Eigen::Matrix3Xd>* f, std::vector<Eigen::Triplet<double>>* K,
                           std::vector<ContactPoint>* pts) const;
 };
 

@@ -175,8 +175,9 @@ struct SlavePoint {
 
 template <class T, int NF>
 struct PointForce {
-  std::array<V3<T>, NF> f;  // on the slave face nodes
-  T gap, pressure, area;    // area: current da of the point (weight included)
+  std::array<V3<T>, NF> f;   // on the slave face nodes
+  std::array<V3<T>, NF> fm;  // its reaction on the master face nodes, -N_b(closest point) p n da
+  T gap, pressure, area;     // area: current da of the point (weight included)
 };
 
 // Slave position, current area element and outward normal orientation.
@@ -225,6 +226,10 @@ PointForce<T, NF> face_point_force(const FaceShape<NF>& fs, const SlavePoint<NF>
   out.pressure = value_of(out.gap) < 0 ? T(-eps * out.gap) : T(0);
   for (int a = 0; a < NF; ++a)
     for (int i = 0; i < 3; ++i) out.f[a][i] = sp.N[a] * out.pressure * out.area * n[i];
+  for (int b = 0; b < NF; ++b) {
+    const T Nb = lagrange(fm.order, fm.cs[b], s1) * lagrange(fm.order, fm.ct[b], t1);
+    for (int i = 0; i < 3; ++i) out.fm[b][i] = -Nb * out.pressure * out.area * n[i];
+  }
   return out;
 }
 
