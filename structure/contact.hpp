@@ -9,12 +9,15 @@
 // the traction p n_m, p = eps <-g>, acts on the slave's nodes only. Both halves see the same
 // penalty eps, so the bodies exchange equal and opposite forces up to the discretisation; unlike
 // the one-pass (master-slave) and the classical two-pass forms it passes the contact patch test
-// for non-matching meshes. Rigid obstacles use the same gap with the obstacle as master.
+// for non-matching meshes. ContactOptions::formulation = two_pass gives the momentum-exact
+// variant (each point's force and its reaction on the master) used in flow runs, where a net
+// force would be spread into the fluid. Rigid obstacles use the same gap with the obstacle as
+// master.
 // The tangent -df/dx is exact: forward-mode automatic differentiation of the point force,
 // including the closest-point projection (structure/contact_kernel.hpp). It is not symmetric.
-// Penalty: eps = penalty_factor * E / h (Wriggers, Computational Contact Mechanics, 2006,
-// sec. 10.3: eps of the order of the stiffness of the underlying elements, E / h, times a
-// factor), E the material's small-strain Young's modulus and h the mean face size of the pair;
+// Penalty: eps = penalty_factor * E / h (eps of the order of the stiffness of the underlying
+// elements, E / h, times a factor; Wriggers, Computational Contact Mechanics, 2nd ed. 2006), E the
+// material's small-strain Young's modulus and h the mean face size of the pair;
 // at a contact pressure p the penetration is p / eps = (p / E) h / penalty_factor.
 // Spatial search: a structure::BucketGrid over the current face centres of the master surface.
 #pragma once

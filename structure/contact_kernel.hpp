@@ -6,7 +6,7 @@
 // projection parameters' derivative comes from one Newton step of the projection equations taken
 // in the AD scalar from the converged (double) parameters: the Newton map has zero derivative at
 // its fixed point, so that step carries exactly the implicit-function derivative
-// d(s,t)/dx = -J^-1 dR/dx (Wriggers, Computational Contact Mechanics, 2nd ed. 2006, sec. 4.1).
+// d(s,t)/dx = -J^-1 dR/dx (Wriggers, Computational Contact Mechanics, 2nd ed. 2006, ch. 4).
 #pragma once
 
 #include <array>
@@ -199,7 +199,7 @@ void slave_geometry(const FaceShape<NF>& fs, const SlavePoint<NF>& sp,
 }
 
 // Penalty force of the two-half-pass Gauss-point-to-surface formulation (Sauer & De Lorenzis,
-// CMAME 253, 2013, eq. 33 and sec. 4.3): f_a = N_a p n_m da on the slave nodes only, with
+// CMAME 253, 2013): f_a = N_a p n_m da on the slave nodes only, with
 // p = eps <-g>, g = (x_s - x_m) . n_m and n_m the master's outward unit normal at the closest
 // point, da the slave's current area element.
 template <class T, int NF>

@@ -1,17 +1,18 @@
-// Contact patch test (Taylor & Papadopoulos, IJNME 31 (1991) 1211; in the two-half-pass form of
-// Sauer & De Lorenzis, CMAME 253 (2013) 369, sec. 5.1): two elastic blocks, one on the other,
-// with non-matching meshes across the interface (3x3 faces on 4x4, and 4x4 on 3x3), Q1 and Q2.
-// Rollers on x = 0 and y = 0 of both blocks, the lower block on a roller base z = 0, a uniform dead
-// traction t on the top of the upper block; the upper block is held by contact alone. The exact
-// solution is uniaxial nominal stress P_zz = -t in both blocks (linear elastic E = 1 MPa,
-// nu = 0.3, t = 1 kPa: strain 1e-3). The contact pressure p is per current area, and the interface
-// has grown laterally by the Poisson strain nu t / E in x and y, so the exact pressure is
-// p_exact = t / (1 + nu t / E)^2 = (1 - 6.0e-4) t at every contact Gauss point of both surfaces.
-// Metrics per variant: the largest |p - p_exact| / p_exact over all contact points of both halves
-// (within 1 %; the uniform state is reproduced to round-off), the contact force int p da over t A
-// (within 1 %), and the penetration against the penalty law, -g = p_exact / eps (within 1 %).
-// Also run: the momentum-exact two_pass formulation (ContactOptions), which fails the patch test
-// on non-matching meshes; its deviation is reported for comparison.
+// Contact patch test (Taylor & Papadopoulos, "On a patch test for contact problems in two
+// dimensions", in Wriggers & Wagner (eds.), Computational Methods in Nonlinear Mechanics,
+// Springer 1991; for the two-half-pass form: Sauer & De Lorenzis, CMAME 253 (2013) 369): two
+// elastic blocks, one on the other, with non-matching meshes across the interface (3x3 faces on
+// 4x4, and 4x4 on 3x3), Q1 and Q2. Rollers on x = 0 and y = 0 of both blocks, the lower block on a
+// roller base z = 0, a uniform dead traction t on the top of the upper block; the upper block is
+// held by contact alone. The exact solution is uniaxial nominal stress P_zz = -t in both blocks
+// (linear elastic E = 1 MPa, nu = 0.3, t = 1 kPa: strain 1e-3). The contact pressure p is per
+// current area, and the interface has grown laterally by the Poisson strain nu t / E in x and y, so
+// the exact pressure is p_exact = t / (1 + nu t / E)^2 = (1 - 6.0e-4) t at every contact Gauss
+// point of both surfaces. Metrics per variant: the largest |p - p_exact| / p_exact over all contact
+// points of both halves (within 1 %; the uniform state is reproduced to round-off), the contact
+// force int p da over t A (within 1 %), and the penetration against the penalty law, -g = p_exact /
+// eps (within 1 %). Also run: the momentum-exact two_pass formulation (ContactOptions), which fails
+// the patch test on non-matching meshes; its deviation is reported for comparison.
 #include <fmt/format.h>
 #include <fmt/os.h>
 
