@@ -24,6 +24,19 @@ std::vector<FaceRef> contact_surface(const SolidMesh& mesh, const std::vector<st
   return faces;
 }
 
+std::vector<ContactPair> pairs_between(const SolidMesh& mesh,
+                                       const std::vector<std::vector<std::string>>& bodies) {
+  std::vector<ContactPair> pairs;
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    for (std::size_t j = i + 1; j < bodies.size(); ++j) {
+      if (bodies[i].empty() || bodies[j].empty())
+        throw std::invalid_argument("pairs_between: a body has no surface sets");
+      pairs.push_back({bodies[i][0] + "-" + bodies[j][0], contact_surface(mesh, bodies[i]),
+                       contact_surface(mesh, bodies[j])});
+    }
+  return pairs;
+}
+
 double small_strain_modulus(const Material& material) {
   Mat3 P;
   Mat9 A;

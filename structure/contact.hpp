@@ -112,6 +112,13 @@ struct ContactPoint {
 // Faces of the named surface sets, concatenated (throws naming a missing set).
 std::vector<FaceRef> contact_surface(const SolidMesh& mesh, const std::vector<std::string>& sets);
 
+// One pair between every two of the bodies, each given by its surface sets; named
+// "<first set of i>-<first set of j>". For a valve: {{"leaflet1_aortic_face",
+// "leaflet1_ventricular_face"}, {"leaflet2_...", ...}, {"leaflet3_...", ...}} gives the three
+// leaflet-leaflet pairs.
+std::vector<ContactPair> pairs_between(const SolidMesh& mesh,
+                                       const std::vector<std::vector<std::string>>& bodies);
+
 // E for the penalty: 3 dP_xy/dF_xy at F = I.
 double small_strain_modulus(const Material& material);
 
