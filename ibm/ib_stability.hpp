@@ -2,7 +2,9 @@
 // Linearised about a state at rest, a force F on the markers accelerates the fluid at the
 // nodes by f/rho, and the markers move with the interpolated velocity, so
 //   d^2 X / dt^2 = -(1/rho) A K X,   A = Interp * Spread (A_ab = sum_j phi_ja phi_jb V_j [1/m^3]),
-// K = -dF/dX the solid (+ tether) stiffness. The coupling is an oscillator with
+// K = -dF/dX the solid (+ tether + contact) stiffness; contact enters as the penalty springs of a
+// fully closed contact on every contact-surface node (ibm/immersed_body.hpp), so that the bound
+// holds when surfaces meet between two evaluations. The coupling is an oscillator with
 //   omega^2 = lambda_max(A K) / rho
 // (A K is similar to the symmetric A^1/2 K A^1/2, so lambda is real and >= 0 for stable solids).
 // The scheme's stability interval on the imaginary axis then bounds dt:

@@ -46,6 +46,15 @@ ImmersedBody::ImmersedBody(const structure::SolidMesh& mesh, const structure::Ma
                     "[N/m] (got {})",
                     spec_.name, spec_.tether_stiffness));
   nodal_volume_ = lumped_nodal_volume(mesh);
+  if (!spec_.contact.empty() || !spec_.obstacles.empty()) {
+    try {
+      contact_ = std::make_unique<structure::Contact>(mesh, material, spec_.contact,
+                                                      spec_.obstacles, spec_.contact_options);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(fmt::format("ibm::ImmersedBody '{}': {}", spec_.name, e.what()));
+    }
+    contact_stiffness_ = contact_->nodal_stiffness();
+  }
   const int nen = mesh.nodes_per_element();
   for (int a = 0; a < nen; ++a)
     for (int b = a + 1; b < nen; ++b) {
@@ -62,7 +71,13 @@ double ImmersedBody::forces(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
   const double min_det = forces_.internal_forces(x, f);
   const auto& X = mesh().X;
   for (int a : clamped_) f.col(a) -= spec_.tether_stiffness * (x.col(a) - X.col(a));
+  if (contact_ && min_det > 0) contact_->add_forces(x, f);
   return min_det;
+}
+
+structure::ContactSummary ImmersedBody::contact_summary(
+    const Eigen::Ref<const Eigen::Matrix3Xd>& x) const {
+  return contact_ ? contact_->summary(x) : structure::ContactSummary{};
 }
 
 Eigen::Vector3d ImmersedBody::tether_force(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const {
@@ -76,6 +91,10 @@ void ImmersedBody::stiffness(const Eigen::Matrix3Xd& x, Eigen::SparseMatrix<doub
   forces_.assemble(x, f, K);
   for (int a : clamped_)
     for (int i = 0; i < 3; ++i) K.coeffRef(3 * a + i, 3 * a + i) += spec_.tether_stiffness;
+  if (contact_)
+    for (int a = 0; a < num_nodes(); ++a)
+      if (contact_stiffness_[a] > 0)
+        for (int i = 0; i < 3; ++i) K.coeffRef(3 * a + i, 3 * a + i) += contact_stiffness_[a];
 }
 
 double ImmersedBody::max_marker_spacing(const Eigen::Matrix3Xd& x) const {

@@ -1,7 +1,9 @@
 // One immersed solid of the ITBM coupling: its Lagrangian hexahedral mesh, material law and the
 // forces its nodes (the markers) apply to the fluid:
-//   F_a(x) = F_int,a(x) - k_t (x_a - X_a) [a clamped],
-// F_int the explicit internal forces of structure::SolidForces (F_a = -int P grad_X N_a dV, so
+//   F_a(x) = F_int,a(x) - k_t (x_a - X_a) [a clamped] + F_c,a(x),
+// F_c the frictionless penalty contact forces between surface pairs of the body and against rigid
+// obstacles (structure/contact.hpp: the same forces as in the static solver), F_int the explicit
+// internal forces of structure::SolidForces (F_a = -int P grad_X N_a dV, so
 // sum_a F_int,a = 0 and the torque vanishes for objective laws) and the second term a stiff
 // tether (spring of stiffness k_t [N/m] per node) holding clamped nodes at their anchors, the
 // reference positions (Griffith & Luo, J. Comput. Phys. 2017, "target points"). The tether
@@ -17,9 +19,12 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "structure/contact.hpp"
 #include "structure/material.hpp"
 #include "structure/solid_forces.hpp"
 #include "structure/solid_mesh.hpp"
@@ -27,9 +32,19 @@
 namespace valsalva::ibm {
 
 struct BodySpec {
-  std::string name = "structure";
+  // A constructor (not an aggregate) so that {name, clamped_sets, tether_stiffness} stays the
+  // short form without the contact fields.
+  BodySpec(std::string name_ = "structure", std::vector<std::string> clamped = {},
+           double tether = 0)
+      : name(std::move(name_)), clamped_sets(std::move(clamped)), tether_stiffness(tether) {}
+  std::string name;
   std::vector<std::string> clamped_sets;  // node sets held by the tether
-  double tether_stiffness = 0;            // k_t [N/m per node], > 0 when clamped_sets is not empty
+  double tether_stiffness;                // k_t [N/m per node], > 0 when clamped_sets is not empty
+  // Contact between surfaces of this body (e.g. the leaflets of a valve, disjoint node sets of
+  // one mesh) and against rigid obstacles (a root wall); empty: none.
+  std::vector<structure::ContactPair> contact;
+  std::vector<structure::RigidObstacle> obstacles;
+  structure::ContactOptions contact_options;
 };
 
 class ImmersedBody {
@@ -38,13 +53,19 @@ class ImmersedBody {
   ImmersedBody(const structure::SolidMesh& mesh, const structure::Material& material,
                BodySpec spec);
 
-  // f (3 x nodes) = internal + tether forces at positions x; returns the smallest det F.
-  // Allocation-free.
+  // f (3 x nodes) = internal + tether + contact forces at positions x; returns the smallest
+  // det F. Allocation-free without contact.
   double forces(const Eigen::Ref<const Eigen::Matrix3Xd>& x, Eigen::Ref<Eigen::Matrix3Xd> f) const;
   // Sum of the tether forces at x (the reaction of the supports on the solid).
   Eigen::Vector3d tether_force(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const;
-  // Stiffness K = -dF/dx at x (internal tangent + k_t on clamped nodes), dof 3*node + component.
+  // Stiffness K = -dF/dx at x (internal tangent + k_t on clamped nodes), dof 3*node + component,
+  // plus, on every contact-surface node, k_c I with k_c = Contact::nodal_stiffness() whether or
+  // not the contact is closed at x: the coupling's time-step bound then already holds when
+  // leaflets meet between two re-evaluations of the bound.
   void stiffness(const Eigen::Matrix3Xd& x, Eigen::SparseMatrix<double>& K) const;
+  // The contact state at x (empty summary without contact).
+  structure::ContactSummary contact_summary(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const;
+  bool has_contact() const { return contact_ != nullptr; }
 
   const BodySpec& spec() const { return spec_; }
   const structure::SolidMesh& mesh() const { return forces_.mesh(); }
@@ -58,6 +79,8 @@ class ImmersedBody {
  private:
   structure::SolidForces forces_;
   BodySpec spec_;
+  std::unique_ptr<structure::Contact> contact_;
+  Eigen::VectorXd contact_stiffness_;  // Contact::nodal_stiffness()
   std::vector<int> clamped_;
   Eigen::VectorXd nodal_volume_;
   std::vector<std::array<int, 2>> neighbour_pairs_;  // local node pairs one lattice step apart

@@ -38,7 +38,9 @@ ImmersedRun::ImmersedRun(ImmersedSetup setup, flow::LocalMesh& local, const fs::
     if (!csv_) throw std::runtime_error("cannot write " + file.string());
     if (!append)
       csv_ << "step,time,structure,load_x,load_y,load_z,force_x,force_y,force_z,tether_x,tether_y,"
-              "tether_z,max_speed,max_displacement,min_det_F,dt_bound\n";
+              "tether_z,max_speed,max_displacement,min_det_F,dt_bound,contact_min_gap,contact_min_"
+              "gap_node,"
+              "contact_force,contact_area,contact_max_pressure\n";
   }
 }
 
@@ -95,12 +97,23 @@ void ImmersedRun::after_step(double time, std::int64_t step) {
     const double speed = ib_->velocities().middleCols(first, n).colwise().norm().maxCoeff();
     const double disp =
         (ib_->positions().middleCols(first, n) - mesh.X).colwise().norm().maxCoeff();
+    // Contact: smallest signed gap (inf: no surfaces within the search radius; nan: the body has
+    // no contact) with the slave node nearest to it, normal force, closed area, peak pressure.
+    std::string contact = "nan,-1,nan,nan,nan";
+    if (ib_->body(b).has_contact()) {
+      const auto c = ib_->body(b).contact_summary(ib_->positions().middleCols(first, n));
+      int node = -1;
+      for (const auto& s : c.surfaces)
+        if (s.min_gap == c.min_gap) node = s.min_gap_node;
+      contact = fmt::format("{:.6e},{},{:.6e},{:.6e},{:.6e}", c.min_gap, node, c.force, c.area,
+                            c.max_pressure);
+    }
     csv_ << fmt::format(
         "{},{:.12g},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.6e},{:.6e}"
         ","
-        "{:.9g},{:.6e}\n",
+        "{:.9g},{:.6e},{}\n",
         step, time, ib_->body(b).spec().name, load.x(), load.y(), load.z(), f.x(), f.y(), f.z(),
-        t.x(), t.y(), t.z(), speed, disp, ib_->last_min_det(), dt_bound_);
+        t.x(), t.y(), t.z(), speed, disp, ib_->last_min_det(), dt_bound_, contact);
   }
   csv_.flush();
 }

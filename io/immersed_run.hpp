@@ -8,7 +8,10 @@
 //       (what its clamped nodes pass to the support), the force it applies to the fluid (= the
 //       tether reaction: internal forces sum to zero; near 0 when a no-slip wall under the
 //       clamped nodes carries the load instead), the tether reaction, the largest marker speed
-//       and displacement, the smallest det F and the dt bound in use
+//       and displacement, the smallest det F and the dt bound in use, and with contact
+//       (structure.<name>.contact) the smallest signed gap [m] between its contact surfaces (and
+//       the node nearest to it), the contact force [N], the closed area [m^2] and the largest
+//       contact pressure [Pa]
 //   force_density  the Eulerian force density [N/m^3] joins the fluid fields
 // Marker positions and the bound in use go into checkpoints and come back on --restart (so
 // that a restarted run takes the same time steps).

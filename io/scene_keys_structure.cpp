@@ -11,6 +11,7 @@
 
 #include "io/scene_keys.hpp"
 #include "io/solid_gmsh_reader.hpp"
+#include "structure/contact.hpp"
 #include "structure/mesh_generators.hpp"
 
 namespace valsalva::io {
@@ -133,6 +134,58 @@ void declare_structure_keys(Schema& s) {
       .doc(
           "Spring per clamped node; needed with clamped sets. Stiffer holds better but lowers "
           "the stable time step (it enters the coupling's bound like the solid stiffness)");
+  s.string_list(k + ".contact")
+      .def(std::vector<std::string>{})
+      .unit_of("-")
+      .doc(
+          "Frictionless contact pairs between surfaces of this structure that belong to different "
+          "bodies (disjoint node sets, e.g. the leaflets of one valve mesh), each \"A:B\" with A "
+          "and B surface sets, or several joined by '+' (\"leaflet1_aortic_face+leaflet1_"
+          "ventricular_face:leaflet2_aortic_face+leaflet2_ventricular_face\"). Penalty on the "
+          "normal gap at the faces' Gauss points, both sides as slave in turn (Sauer & De "
+          "Lorenzis 2013; structure/contact.hpp); its springs enter the time-step bound");
+  s.real(k + ".contact_penalty")
+      .def(100.0)
+      .above(0)
+      .unit_of("E/h")
+      .doc(
+          "Penalty factor c: eps = c E / h with E three times the material's small-strain shear "
+          "modulus and h the mean face size of the pair; the penetration at pressure p is "
+          "(p / E) h / c. Larger c lowers the stable time step as sqrt(c)");
+  s.choice(k + ".contact_formulation", {"two_pass", "two_half_pass"})
+      .def("two_pass")
+      .unit_of("-")
+      .doc(
+          "two_pass: each surface is slave in turn and its traction acts half on it and half, as "
+          "the reaction, on the other surface, so the contact forces cancel exactly (no net force "
+          "spread into the fluid); two_half_pass: the traction acts on the slave only, which "
+          "passes the contact patch test but leaves a net force (measured up to 14 % of the "
+          "contact "
+          "force on deformed non-matching meshes, tests/ibm/test_immersed_contact)");
+  s.real(k + ".contact_search")
+      .def(1.0)
+      .above(0)
+      .unit_of("h")
+      .doc("Only closest points within this distance (above or below a face) are in contact");
+  s.real(k + ".contact_wall_radius")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("m")
+      .doc(
+          "Radius of a rigid cylindrical wall (e.g. the aortic root) that the contact_wall_faces "
+          "must stay inside; 0: no wall");
+  s.real3(k + ".contact_wall_point")
+      .def(std::array{0.0, 0.0, 0.0})
+      .unit_of("m")
+      .doc("A point on the wall's axis");
+  s.real3(k + ".contact_wall_axis")
+      .def(std::array{0.0, 0.0, 1.0})
+      .unit_of("-")
+      .doc("Direction of the wall's axis");
+  s.string_list(k + ".contact_wall_faces")
+      .def(std::vector<std::string>{})
+      .unit_of("-")
+      .doc("Surface sets kept inside the wall (needed with contact_wall_radius > 0)");
   s.boolean(k + ".stresses")
       .def(true)
       .unit_of("-")
@@ -216,6 +269,71 @@ std::optional<ibm::PeriodicBox> periodic_box(const Scene& scene, const flow::Mes
   return box;
 }
 
+// Faces of the surface sets named in `names` ('+'-joined), or a SceneError naming the key.
+std::vector<structure::FaceRef> named_faces(const Scene& scene, const std::string& key,
+                                            const structure::SolidMesh& mesh,
+                                            const std::vector<std::string>& names) {
+  for (const auto& n : names)
+    if (!mesh.surface_sets.count(n)) {
+      std::vector<std::string> known;
+      for (const auto& [name, faces] : mesh.surface_sets) known.push_back(name);
+      throw scene.error(key, fmt::format("the mesh has no surface set '{}'", n),
+                        fmt::format("{}", fmt::join(known, ", ")));
+    }
+  return structure::contact_surface(mesh, names);
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out(1);
+  for (char c : s)
+    if (c == sep)
+      out.emplace_back();
+    else
+      out.back() += c;
+  return out;
+}
+
+void read_contact(const Scene& scene, const std::string& k, const structure::SolidMesh& mesh,
+                  ibm::BodySpec& body) {
+  for (const auto& pair : scene.get<std::vector<std::string>>(k + ".contact")) {
+    const auto sides = split(pair, ':');
+    if (sides.size() != 2 || sides[0].empty() || sides[1].empty())
+      throw scene.error(k + ".contact",
+                        fmt::format("contact pair '{}' is not of the form A:B", pair),
+                        "\"SET[+SET...]:SET[+SET...]\"");
+    structure::ContactPair p{pair, named_faces(scene, k + ".contact", mesh, split(sides[0], '+')),
+                             named_faces(scene, k + ".contact", mesh, split(sides[1], '+'))};
+    body.contact.push_back(std::move(p));
+  }
+  body.contact_options.penalty_factor = scene.get<double>(k + ".contact_penalty");
+  body.contact_options.search_factor = scene.get<double>(k + ".contact_search");
+  body.contact_options.formulation =
+      scene.get<std::string>(k + ".contact_formulation") == "two_half_pass"
+          ? structure::ContactOptions::Formulation::two_half_pass
+          : structure::ContactOptions::Formulation::two_pass;
+  const double radius = scene.get<double>(k + ".contact_wall_radius");
+  const auto wall = scene.get<std::vector<std::string>>(k + ".contact_wall_faces");
+  if (radius > 0) {
+    if (wall.empty())
+      throw scene.error(k + ".contact_wall_faces",
+                        "a contact wall (contact_wall_radius > 0) needs the surface sets it holds");
+    const Eigen::Vector3d axis = vec(scene, k + ".contact_wall_axis");
+    if (!(axis.norm() > 0)) throw scene.error(k + ".contact_wall_axis", "the axis is zero");
+    structure::RigidObstacle o;
+    o.name = "wall";
+    o.shape = structure::RigidObstacle::Shape::cylinder;
+    o.point = vec(scene, k + ".contact_wall_point");
+    o.direction = axis.normalized();
+    o.radius = radius;
+    o.inside = true;
+    o.faces = named_faces(scene, k + ".contact_wall_faces", mesh, wall);
+    body.obstacles.push_back(std::move(o));
+  } else if (!wall.empty()) {
+    throw scene.error(k + ".contact_wall_radius",
+                      "contact_wall_faces are given but the wall radius is 0");
+  }
+}
+
 }  // namespace
 
 ImmersedSetup read_immersed_setup(const Scene& scene, const flow::Mesh& mesh) {
@@ -276,6 +394,13 @@ ImmersedSetup read_immersed_setup(const Scene& scene, const flow::Mesh& mesh) {
     if (!st.body.clamped_sets.empty() && !(st.body.tether_stiffness > 0))
       throw scene.error(k + ".tether_stiffness",
                         "clamped node sets need a tether stiffness > 0 (N/m per node)");
+    read_contact(scene, k, st.mesh, st.body);
+    try {  // checks the pairs (different bodies) now, naming the key
+      structure::Contact(st.mesh, *st.material, st.body.contact, st.body.obstacles,
+                         st.body.contact_options);
+    } catch (const std::invalid_argument& e) {
+      throw scene.error(k + ".contact", e.what());
+    }
     st.stresses = scene.get<bool>(k + ".stresses");
     out.structures.push_back(std::move(st));
   }

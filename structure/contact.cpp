@@ -24,6 +24,19 @@ std::vector<FaceRef> contact_surface(const SolidMesh& mesh, const std::vector<st
   return faces;
 }
 
+std::vector<ContactPair> pairs_between(const SolidMesh& mesh,
+                                       const std::vector<std::vector<std::string>>& bodies) {
+  std::vector<ContactPair> pairs;
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    for (std::size_t j = i + 1; j < bodies.size(); ++j) {
+      if (bodies[i].empty() || bodies[j].empty())
+        throw std::invalid_argument("pairs_between: a body has no surface sets");
+      pairs.push_back({bodies[i][0] + "-" + bodies[j][0], contact_surface(mesh, bodies[i]),
+                       contact_surface(mesh, bodies[j])});
+    }
+  return pairs;
+}
+
 double small_strain_modulus(const Material& material) {
   Mat3 P;
   Mat9 A;
@@ -55,9 +68,9 @@ double mean_face_size(const SolidMesh& mesh, const std::vector<FaceRef>& a,
 }
 
 template <int NF>
-std::array<V3<double>, NF> gather(const SolidMesh& mesh, const Eigen::Matrix3Xd& x,
-                                  const FaceRef& fr, const FaceShape<NF>& shape,
-                                  std::array<int, NF>& nodes) {
+std::array<V3<double>, NF> gather(const SolidMesh& mesh,
+                                  const Eigen::Ref<const Eigen::Matrix3Xd>& x, const FaceRef& fr,
+                                  const FaceShape<NF>& shape, std::array<int, NF>& nodes) {
   std::array<V3<double>, NF> P;
   const int* en = mesh.element_nodes(fr.element);
   for (int a = 0; a < NF; ++a) {
@@ -145,7 +158,8 @@ Contact::Contact(const SolidMesh& mesh, const Material& material, std::vector<Co
 }
 
 template <int NF>
-ContactSummary Contact::evaluate(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd* f,
+ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
+                                 Eigen::Ref<Eigen::Matrix3Xd>* f,
                                  std::vector<Eigen::Triplet<double>>* K,
                                  std::vector<ContactPoint>* pts) const {
   constexpr int ND = 6 * NF;
@@ -155,18 +169,26 @@ ContactSummary Contact::evaluate(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd* f,
   ContactSummary summary;
 
   // Adds a point force (value, and the tangent from its derivatives) to the slave nodes.
+  const bool two_pass = options_.formulation == ContactOptions::Formulation::two_pass;
+  // Adds w times a point force (value, and the tangent from its derivatives) to the nodes.
+  auto scatter_one = [&](const V3<AD>& fa, int row_node, double w, const std::array<int, NF>& slave,
+                         const std::array<int, NF>* master) {
+    for (int i = 0; i < 3; ++i) {
+      (*f)(i, row_node) += w * fa[i].value();
+      const auto& d = fa[i].derivatives();
+      for (int b = 0; b < (master ? 2 * NF : NF); ++b) {
+        const int node = b < NF ? slave[b] : (*master)[b - NF];
+        for (int k = 0; k < 3; ++k)
+          K->emplace_back(3 * row_node + i, 3 * node + k, -w * d[3 * b + k]);
+      }
+    }
+  };
   auto scatter_ad = [&](const PointForce<AD, NF>& pf, const std::array<int, NF>& slave,
                         const std::array<int, NF>* master) {
-    for (int a = 0; a < NF; ++a)
-      for (int i = 0; i < 3; ++i) {
-        (*f)(i, slave[a]) += pf.f[a][i].value();
-        const auto& d = pf.f[a][i].derivatives();
-        for (int b = 0; b < (master ? 2 * NF : NF); ++b) {
-          const int node = b < NF ? slave[b] : (*master)[b - NF];
-          for (int k = 0; k < 3; ++k)
-            K->emplace_back(3 * slave[a] + i, 3 * node + k, -d[3 * b + k]);
-        }
-      }
+    const double w = master && two_pass ? 0.5 : 1.0;
+    for (int a = 0; a < NF; ++a) scatter_one(pf.f[a], slave[a], w, slave, master);
+    if (master && two_pass)
+      for (int b = 0; b < NF; ++b) scatter_one(pf.fm[b], (*master)[b], w, slave, master);
   };
   auto seed = [](const std::array<V3<double>, NF>& P, int offset) {
     std::array<V3<AD>, NF> Q;
@@ -243,8 +265,12 @@ ContactSummary Contact::evaluate(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd* f,
             pressure = pf.pressure.value();
           } else {
             const auto pf = face_point_force<double, NF>(fs, sp, PS, fm, PM[best], pr, eps);
+            const double w = two_pass ? 0.5 : 1.0;
             for (int a = 0; a < NF; ++a)
-              for (int i = 0; i < 3; ++i) (*f)(i, ns[a]) += pf.f[a][i];
+              for (int i = 0; i < 3; ++i) {
+                (*f)(i, ns[a]) += w * pf.f[a][i];
+                if (two_pass) (*f)(i, NM[best][a]) += w * pf.fm[a][i];
+              }
             pressure = pf.pressure;
           }
         } else if (pr.gap < 0) {
@@ -321,13 +347,19 @@ ContactSummary Contact::evaluate(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd* f,
   return summary;
 }
 
-ContactSummary Contact::add_forces(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& f,
+ContactSummary Contact::add_forces(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
+                                   Eigen::Ref<Eigen::Matrix3Xd> f,
                                    std::vector<Eigen::Triplet<double>>* K) const {
   return mesh_.order == HexOrder::q1 ? evaluate<4>(x, &f, K, nullptr)
                                      : evaluate<9>(x, &f, K, nullptr);
 }
 
-std::vector<ContactPoint> Contact::points(const Eigen::Matrix3Xd& x) const {
+ContactSummary Contact::summary(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const {
+  return mesh_.order == HexOrder::q1 ? evaluate<4>(x, nullptr, nullptr, nullptr)
+                                     : evaluate<9>(x, nullptr, nullptr, nullptr);
+}
+
+std::vector<ContactPoint> Contact::points(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const {
   std::vector<ContactPoint> pts;
   if (mesh_.order == HexOrder::q1)
     evaluate<4>(x, nullptr, nullptr, &pts);
@@ -336,8 +368,8 @@ std::vector<ContactPoint> Contact::points(const Eigen::Matrix3Xd& x) const {
   return pts;
 }
 
-double Contact::max_nodal_stiffness() const {
-  std::vector<double> k(mesh_.num_nodes(), 0.0);
+Eigen::VectorXd Contact::nodal_stiffness() const {
+  Eigen::VectorXd k = Eigen::VectorXd::Zero(mesh_.num_nodes());
   const int nq = options_.quadrature > 0 ? options_.quadrature : static_cast<int>(mesh_.order) + 2;
   auto add = [&](const std::vector<FaceRef>& faces, double eps) {
     for (const FaceRef& fr : faces) {
@@ -365,7 +397,7 @@ double Contact::max_nodal_stiffness() const {
   }
   for (std::size_t o = 0; o < obstacles_.size(); ++o)
     add(obstacles_[o].faces, options_.penalty_factor * modulus_ / h_[pairs_.size() + o]);
-  return k.empty() ? 0.0 : *std::max_element(k.begin(), k.end());
+  return k;
 }
 
 }  // namespace valsalva::structure

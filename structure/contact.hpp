@@ -9,12 +9,15 @@
 // the traction p n_m, p = eps <-g>, acts on the slave's nodes only. Both halves see the same
 // penalty eps, so the bodies exchange equal and opposite forces up to the discretisation; unlike
 // the one-pass (master-slave) and the classical two-pass forms it passes the contact patch test
-// for non-matching meshes. Rigid obstacles use the same gap with the obstacle as master.
+// for non-matching meshes. ContactOptions::formulation = two_pass gives the momentum-exact
+// variant (each point's force and its reaction on the master) used in flow runs, where a net
+// force would be spread into the fluid. Rigid obstacles use the same gap with the obstacle as
+// master.
 // The tangent -df/dx is exact: forward-mode automatic differentiation of the point force,
 // including the closest-point projection (structure/contact_kernel.hpp). It is not symmetric.
-// Penalty: eps = penalty_factor * E / h (Wriggers, Computational Contact Mechanics, 2006,
-// sec. 10.3: eps of the order of the stiffness of the underlying elements, E / h, times a
-// factor), E the material's small-strain Young's modulus and h the mean face size of the pair;
+// Penalty: eps = penalty_factor * E / h (eps of the order of the stiffness of the underlying
+// elements, E / h, times a factor; Wriggers, Computational Contact Mechanics, 2nd ed. 2006), E the
+// material's small-strain Young's modulus and h the mean face size of the pair;
 // at a contact pressure p the penetration is p / eps = (p / E) h / penalty_factor.
 // Spatial search: a structure::BucketGrid over the current face centres of the master surface.
 #pragma once
@@ -64,6 +67,14 @@ struct ContactOptions {
   double search_factor = 1.0;
   // Gauss points per direction on each slave face; 0: order + 2 (as pressure loads).
   int quadrature = 0;
+  // two_half_pass (the header): passes the patch test; the two bodies' forces are equal and
+  // opposite only up to the discretisation (the halves integrate different gaps on different
+  // faces). two_pass: each half applies half its traction to the slave and the reaction to the
+  // master nodes at the closest point (N_b there), so every Gauss point's forces cancel exactly
+  // (no net force, which the immersed boundary would spread into the fluid), at the price of
+  // the patch test (the master-side forces are integrated at the other surface's points).
+  enum class Formulation { two_half_pass, two_pass };
+  Formulation formulation = Formulation::two_half_pass;
 };
 
 // Result of one evaluation, per pair (two-half-pass pairs: both halves together) or obstacle.
@@ -101,6 +112,13 @@ struct ContactPoint {
 // Faces of the named surface sets, concatenated (throws naming a missing set).
 std::vector<FaceRef> contact_surface(const SolidMesh& mesh, const std::vector<std::string>& sets);
 
+// One pair between every two of the bodies, each given by its surface sets; named
+// "<first set of i>-<first set of j>". For a valve: {{"leaflet1_aortic_face",
+// "leaflet1_ventricular_face"}, {"leaflet2_...", ...}, {"leaflet3_...", ...}} gives the three
+// leaflet-leaflet pairs.
+std::vector<ContactPair> pairs_between(const SolidMesh& mesh,
+                                       const std::vector<std::vector<std::string>>& bodies);
+
 // E for the penalty: 3 dP_xy/dF_xy at F = I.
 double small_strain_modulus(const Material& material);
 
@@ -113,12 +131,17 @@ class Contact {
   bool empty() const { return pairs_.empty() && obstacles_.empty(); }
   // Adds the contact forces (acting on the nodes, like SolidForces' internal forces) to f; when
   // K is given, appends the tangent -df/dx as triplets (dof 3 * node + component).
-  ContactSummary add_forces(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& f,
+  // Allocates (search grid, candidate lists).
+  ContactSummary add_forces(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
+                            Eigen::Ref<Eigen::Matrix3Xd> f,
                             std::vector<Eigen::Triplet<double>>* K = nullptr) const;
-  std::vector<ContactPoint> points(const Eigen::Matrix3Xd& x) const;
-  // Largest sum over a node of eps * (its share of the reference contact area) [N/m]: the
-  // stiffness a fully active contact adds to a node (for explicit time-step bounds).
-  double max_nodal_stiffness() const;
+  // The summary alone (no forces).
+  ContactSummary summary(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const;
+  std::vector<ContactPoint> points(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const;
+  // Per node: eps times its share int N_a dA of the reference contact area, summed over the
+  // surfaces it is on [N/m] (the row sum of the tangent of a fully active, flat contact: what
+  // closing contact can add to a node's stiffness, for explicit time-step bounds).
+  Eigen::VectorXd nodal_stiffness() const;
 
  private:
   const SolidMesh& mesh_;
@@ -128,8 +151,8 @@ class Contact {
   double modulus_ = 0;
   std::vector<double> h_;  // per pair, then per obstacle
   template <int NF>
-  ContactSummary evaluate(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd* f,
-                          std::vector<Eigen::Triplet<double>>* K,
+  ContactSummary evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
+                          Eigen::Ref<Eigen::Matrix3Xd>* f, std::vector<Eigen::Triplet<double>>* K,
                           std::vector<ContactPoint>* pts) const;
 };
 

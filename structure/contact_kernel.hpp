@@ -6,7 +6,7 @@
 // projection parameters' derivative comes from one Newton step of the projection equations taken
 // in the AD scalar from the converged (double) parameters: the Newton map has zero derivative at
 // its fixed point, so that step carries exactly the implicit-function derivative
-// d(s,t)/dx = -J^-1 dR/dx (Wriggers, Computational Contact Mechanics, 2nd ed. 2006, sec. 4.1).
+// d(s,t)/dx = -J^-1 dR/dx (Wriggers, Computational Contact Mechanics, 2nd ed. 2006, ch. 4).
 #pragma once
 
 #include <array>
@@ -175,8 +175,9 @@ struct SlavePoint {
 
 template <class T, int NF>
 struct PointForce {
-  std::array<V3<T>, NF> f;  // on the slave face nodes
-  T gap, pressure, area;    // area: current da of the point (weight included)
+  std::array<V3<T>, NF> f;   // on the slave face nodes
+  std::array<V3<T>, NF> fm;  // its reaction on the master face nodes, -N_b(closest point) p n da
+  T gap, pressure, area;     // area: current da of the point (weight included)
 };
 
 // Slave position, current area element and outward normal orientation.
@@ -198,7 +199,7 @@ void slave_geometry(const FaceShape<NF>& fs, const SlavePoint<NF>& sp,
 }
 
 // Penalty force of the two-half-pass Gauss-point-to-surface formulation (Sauer & De Lorenzis,
-// CMAME 253, 2013, eq. 33 and sec. 4.3): f_a = N_a p n_m da on the slave nodes only, with
+// CMAME 253, 2013): f_a = N_a p n_m da on the slave nodes only, with
 // p = eps <-g>, g = (x_s - x_m) . n_m and n_m the master's outward unit normal at the closest
 // point, da the slave's current area element.
 template <class T, int NF>
@@ -225,6 +226,10 @@ PointForce<T, NF> face_point_force(const FaceShape<NF>& fs, const SlavePoint<NF>
   out.pressure = value_of(out.gap) < 0 ? T(-eps * out.gap) : T(0);
   for (int a = 0; a < NF; ++a)
     for (int i = 0; i < 3; ++i) out.f[a][i] = sp.N[a] * out.pressure * out.area * n[i];
+  for (int b = 0; b < NF; ++b) {
+    const T Nb = lagrange(fm.order, fm.cs[b], s1) * lagrange(fm.order, fm.ct[b], t1);
+    for (int i = 0; i < 3; ++i) out.fm[b][i] = -Nb * out.pressure * out.area * n[i];
+  }
   return out;
 }
 

@@ -25,6 +25,7 @@ Case womersley_periodic_case();
 Case ib_leakage_case();
 Case turek_hron_fsi_case();
 Case contact_patch_case();
+Case hertz_contact_case();
 
 const std::vector<Case>& all_cases() {
   // clang-format off
@@ -49,6 +50,7 @@ const std::vector<Case>& all_cases() {
       ib_leakage_case(),
       turek_hron_fsi_case(),
       contact_patch_case(),
+      hertz_contact_case(),
   };
   // clang-format on
   return cases;

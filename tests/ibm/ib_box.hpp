@@ -26,6 +26,13 @@ struct IbBoxSpec {
   double stretch = 1.2;  // initial isochoric stretch along x
   ibm::CouplingMode mode = ibm::CouplingMode::per_stage;
   MPI_Comm comm = MPI_COMM_WORLD;
+  // Instead of the stretched cube: two slabs side x side x side/2 (3x3 and 2x2 elements), the
+  // upper one sunk `overlap` into the lower one, with contact between them.
+  bool contact_slabs = false;
+  double overlap = 0.02;
+  bool contact = true;  // with contact_slabs: false builds the same slabs without contact
+  structure::ContactOptions::Formulation formulation =
+      structure::ContactOptions::Formulation::two_pass;
 };
 
 struct IbBox {
@@ -50,6 +57,24 @@ struct IbBox {
         structure::structured_block(structure::HexOrder::q2, {s.elements, s.elements, s.elements},
                                     [&](const structure::Vec3& u) { return lo + s.side * u; });
     material = structure::make_neo_hookean(s.shear_modulus, 10 * s.shear_modulus);
+    ibm::BodySpec body{"block", {}, 0};
+    if (s.contact_slabs) {
+      solid = {};
+      const double z0 = 0.5 - s.side / 2, z1 = 0.5, t = s.side / 2;
+      auto slab = [&](int n, double zlo) {
+        return structure::structured_block(
+            structure::HexOrder::q2, {n, n, 1}, [&](const structure::Vec3& u) {
+              return structure::Vec3(lo.x() + s.side * u[0], lo.y() + s.side * u[1],
+                                     zlo + t * u[2]);
+            });
+      };
+      structure::append_body(solid, slab(3, z0), "lower_");
+      structure::append_body(solid, slab(2, z1 - s.overlap), "upper_");
+      if (s.contact)
+        body.contact.push_back(
+            {"slabs", solid.surface_set("lower_w1"), solid.surface_set("upper_w0")});
+      body.contact_options.formulation = s.formulation;
+    }
     flow::ProjectionOptions fluid;
     fluid.density = s.density;
     fluid.viscosity = s.viscosity;
@@ -60,9 +85,10 @@ struct IbBox {
     options.box = ibm::PeriodicBox{};
     options.box->periodic = {true, true, true};
     ib = std::make_unique<ibm::ImmersedStructure>(local, options);
-    ib->add_body(solid, *material, {"block", {}, 0});
+    ib->add_body(solid, *material, body);
     // Isochoric stretch about the box centre as the initial marker positions.
-    const Eigen::Vector3d scale(s.stretch, 1 / std::sqrt(s.stretch), 1 / std::sqrt(s.stretch));
+    const double stretch = s.contact_slabs ? 1.0 : s.stretch;
+    const Eigen::Vector3d scale(stretch, 1 / std::sqrt(stretch), 1 / std::sqrt(stretch));
     Eigen::Matrix3Xd x = solid.X;
     for (int a = 0; a < x.cols(); ++a)
       x.col(a) = Eigen::Vector3d::Constant(0.5) +
@@ -78,5 +104,14 @@ struct IbBox {
     ib->finish_step(state);
   }
 };
+
+// Largest marker difference between `box` and the same box run on one rank for `steps` steps of
+// dt (call after `box` made those steps).
+inline double marker_difference_to_serial(IbBoxSpec spec, const IbBox& box, int steps, double dt) {
+  spec.comm = MPI_COMM_SELF;
+  IbBox serial(spec);
+  for (int n = 0; n < steps; ++n) serial.step(dt);
+  return (serial.ib->positions() - box.ib->positions()).cwiseAbs().maxCoeff();
+}
 
 }  // namespace valsalva::test

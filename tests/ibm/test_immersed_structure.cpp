@@ -98,11 +98,7 @@ TEST_CASE("a stretched block relaxes in fluid at rest, conserving momentum, at a
 
     // The same on one rank: markers agree to round-off.
     if (box.local.comm.size() > 1) {
-      auto serial_spec = spec;
-      serial_spec.comm = MPI_COMM_SELF;
-      test::IbBox serial(serial_spec);
-      for (int n = 0; n < 40; ++n) serial.step(dt);
-      const double diff = (serial.ib->positions() - box.ib->positions()).cwiseAbs().maxCoeff();
+      const double diff = test::marker_difference_to_serial(spec, box, 40, dt);
       MESSAGE("np " << box.local.comm.size() << " vs 1: max marker difference " << diff);
       // Each rank count solves the pressure Poisson equation to a relative residual of 1e-8 with
       // a different AMG hierarchy: the difference is that solver tolerance times the small

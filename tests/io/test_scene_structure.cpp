@@ -40,6 +40,15 @@ std::string error_of(const std::string& structure) {
   return "no error";
 }
 
+// A 1 x 4 x 3 element bar, the base of the error and contact cases.
+const std::string bar = R"(
+[structure.flap]
+mesh = "bar"
+size = [0.001, 0.008, 0.006]
+elements = [1, 4, 3]
+parameters = { G = 1.0e4, K = 1.0e5 }
+)";
+
 }  // namespace
 
 TEST_CASE("a rotated and translated bar: node positions, sets, material and the periodic box") {
@@ -103,13 +112,6 @@ TEST_CASE("a scene without structure tables builds nothing") {
 }
 
 TEST_CASE("bad structure tables name the key") {
-  const std::string bar = R"(
-[structure.flap]
-mesh = "bar"
-size = [0.001, 0.008, 0.006]
-elements = [1, 4, 3]
-parameters = { G = 1.0e4, K = 1.0e5 }
-)";
   CHECK(error_of(bar + "clamped = [\"foot\"]\ntether_stiffness = 1.0\n")
             .find("key 'structure.flap.clamped': the mesh has no node set 'foot'") !=
         std::string::npos);
@@ -147,4 +149,40 @@ elements = [1, 4, 3]
 parameters = { G = 1.0e4, K = 1.0e5 }
 )")
             .find("structure name 'a-b' is not a plain name") != std::string::npos);
+}
+
+TEST_CASE("contact keys: pairs of named surface sets, a wall, and the errors that name the key") {
+  // A bar's bottom and top faces share no node, so they make a valid pair (as two leaflets of
+  // one mesh would).
+  const auto scene = io::parse_scene(fluid + bar + R"(contact = ["bottom:top"]
+contact_penalty = 50.0
+contact_formulation = "two_half_pass"
+contact_wall_radius = 0.02
+contact_wall_faces = ["front"]
+)",
+                                     "t.toml");
+  const auto setup = io::read_immersed_setup(scene, io::build_mesh(scene));
+  const auto& body = setup.structures.at(0).body;
+  const auto& mesh = setup.structures.at(0).mesh;
+  REQUIRE(body.contact.size() == 1);
+  CHECK(body.contact[0].a.size() == mesh.surface_set("bottom").size());
+  CHECK(body.contact[0].b.size() == mesh.surface_set("top").size());
+  CHECK(body.contact_options.penalty_factor == 50.0);
+  CHECK(body.contact_options.formulation == structure::ContactOptions::Formulation::two_half_pass);
+  REQUIRE(body.obstacles.size() == 1);
+  CHECK(body.obstacles[0].radius == 0.02);
+  CHECK(body.obstacles[0].faces.size() == mesh.surface_set("front").size());
+
+  // '+' joins sets: top+back shares the edge z = 0 with bottom.
+  CHECK(error_of(bar + "contact = [\"bottom:top+back\"]\n").find("lies on both surfaces") !=
+        std::string::npos);
+  CHECK(error_of(bar + "contact = [\"bottom:lid\"]\n")
+            .find("key 'structure.flap.contact': the mesh has no surface set 'lid'") !=
+        std::string::npos);
+  CHECK(error_of(bar + "contact = [\"bottom\"]\n").find("is not of the form A:B") !=
+        std::string::npos);
+  CHECK(error_of(bar + "contact_wall_faces = [\"front\"]\n")
+            .find("key 'structure.flap.contact_wall_radius'") != std::string::npos);
+  CHECK(error_of(bar + "contact_wall_radius = 0.02\n")
+            .find("key 'structure.flap.contact_wall_faces'") != std::string::npos);
 }

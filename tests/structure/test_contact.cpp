@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "structure/contact.hpp"
 #include "structure/mesh_generators.hpp"
@@ -132,16 +133,25 @@ TEST_CASE("contact tangent equals minus the derivative of the force (central dif
   for (HexOrder order : {HexOrder::q1, HexOrder::q2}) {
     CAPTURE(static_cast<int>(order));
     const SolidMesh m = two_blocks(order, 0.0);
-    const Contact c(m, *kMaterial, {blocks_pair(m)}, {}, {});
-    const Eigen::Matrix3Xd x = perturbed(m, 3);
-    Eigen::Matrix3Xd f = Eigen::Matrix3Xd::Zero(3, m.num_nodes());
-    const ContactSummary s = c.add_forces(x, f);
-    REQUIRE(s.surfaces[0].active_points > 0);
-    // Central differences with h = 1e-6 (1e-4 of the penetration): truncation ~ h^2 |f'''|,
-    // round-off ~ 1e-16 |f| / h; both far below 1e-8 of |K| (measured: ~1e-10).
-    const double err = tangent_error(c, x, 1e-6);
-    MESSAGE("pair tangent relative error " << err);
-    CHECK(err < 1e-8);
+    for (auto form :
+         {ContactOptions::Formulation::two_half_pass, ContactOptions::Formulation::two_pass}) {
+      ContactOptions opt;
+      opt.formulation = form;
+      const Contact c(m, *kMaterial, {blocks_pair(m)}, {}, opt);
+      const Eigen::Matrix3Xd x = perturbed(m, 3);
+      Eigen::Matrix3Xd f = Eigen::Matrix3Xd::Zero(3, m.num_nodes());
+      const ContactSummary s = c.add_forces(x, f);
+      REQUIRE(s.surfaces[0].active_points > 0);
+      // two_pass: every point's slave force and master reaction cancel; two_half_pass: not exactly.
+      const double net = f.rowwise().sum().norm() / s.force;
+      MESSAGE("net force / contact force " << net);
+      if (form == ContactOptions::Formulation::two_pass) CHECK(net < 1e-13);
+      // Central differences with h = 1e-6 (1e-4 of the penetration): truncation ~ h^2 |f'''|,
+      // round-off ~ 1e-16 |f| / h; both far below 1e-8 of |K| (measured: ~1e-10).
+      const double err = tangent_error(c, x, 1e-6);
+      MESSAGE("pair tangent relative error " << err);
+      CHECK(err < 1e-8);
+    }
   }
   // Obstacles: the lower face of the upper block against a plane and inside a cylinder.
   for (HexOrder order : {HexOrder::q1, HexOrder::q2}) {
@@ -204,4 +214,24 @@ TEST_CASE("contact pairs must belong to different bodies") {
   o.penalty_factor = -1;
   CHECK_THROWS_WITH_AS(Contact(m, *kMaterial, {blocks_pair(m)}, {}, o),
                        doctest::Contains("penalty_factor"), std::invalid_argument);
+}
+
+TEST_CASE("pairs_between: one pair per two bodies, from named surface sets") {
+  SolidMesh m;
+  for (int i = 0; i < 3; ++i)
+    append_body(m, box(HexOrder::q1, {1, 1, 1}, Vec3(2.0 * i, 0, 0), Vec3(2.0 * i + 1, 1, 1)),
+                "body" + std::to_string(i) + "_");
+  const auto pairs = pairs_between(m, {{"body0_u1", "body0_w1"}, {"body1_u0"}, {"body2_u0"}});
+  REQUIRE(pairs.size() == 3);
+  CHECK(pairs[0].name == "body0_u1-body1_u0");
+  CHECK(pairs[0].a.size() == 2);
+  CHECK(pairs[2].name == "body1_u0-body2_u0");
+  const Contact c(m, *kMaterial, pairs, {}, {});
+  // Faces x = 1 (body0) and x = 2 (body1) are 1 apart, at the search radius (h = 1); body2's
+  // face x = 4 is 3 from body0 and 2 from body1, beyond it.
+  const ContactSummary s = c.summary(m.X);
+  REQUIRE(s.surfaces.size() == 3);
+  CHECK(s.surfaces[0].min_gap == doctest::Approx(1.0).epsilon(1e-12));
+  CHECK(std::isinf(s.surfaces[1].min_gap));
+  CHECK(std::isinf(s.surfaces[2].min_gap));
 }
