@@ -128,9 +128,9 @@ void print_summary(const valve::ClosingResult& r) {
 double annulus_from_valve_toml(const fs::path& leaflets) {
   const fs::path toml = leaflets.parent_path() / "valve.toml";
   if (!fs::exists(toml))
-    throw std::invalid_argument(fmt::format(
-        "close-leaflets: no {} beside the leaflet mesh: give --annulus-radius (metres)",
-        toml.string()));
+    throw std::invalid_argument(
+        fmt::format("close-leaflets: no {} beside the leaflet mesh: give --annulus-radius (metres)",
+                    toml.string()));
   const valve::ValveGeometry g = valve::read_valve_toml(toml);
   return g.root_radius() - g.frame_thickness;
 }
@@ -148,7 +148,8 @@ int run(const Options& o) {
           fmt::format("close-leaflets: {} exists (give --overwrite to replace it)", p.string()));
   const structure::SolidMesh mesh = valve::read_valve_leaflets(o.leaflets);
   structure::ValveFrame frame;
-  frame.annulus_radius = o.annulus_radius > 0 ? o.annulus_radius : annulus_from_valve_toml(o.leaflets);
+  frame.annulus_radius =
+      o.annulus_radius > 0 ? o.annulus_radius : annulus_from_valve_toml(o.leaflets);
   const valve::ClosingResult r = valve::close_leaflets(mesh, frame, o.closing);
   if (!r.newton.converged)
     throw std::runtime_error(fmt::format(

@@ -61,8 +61,8 @@ std::string disconnected_pieces(const flow::Mesh& mesh) {
     }
   }
   if (first_cell.size() < 2) return {};
-  return fmt::format("mesh '{}' is in {}{} disconnected pieces (one cell of each: {})",
-                     mesh.source, first_cell.size() > 8 ? "more than " : "",
+  return fmt::format("mesh '{}' is in {}{} disconnected pieces (one cell of each: {})", mesh.source,
+                     first_cell.size() > 8 ? "more than " : "",
                      std::min<std::size_t>(first_cell.size(), 8), fmt::join(first_cell, ", "));
 }
 

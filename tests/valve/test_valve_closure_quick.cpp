@@ -24,9 +24,9 @@ TEST_CASE("valve_closure --quick") {
   c->run(ctx, report);
   REQUIRE(report.metrics().size() >= 8);
   for (const auto& m : report.metrics()) {
-    const std::string line = fmt::format("{} = {:.6g} (reference {:.6g}, tolerance {:.3g}) {}",
-                                         m.name, m.value, m.reference, m.tolerance,
-                                         m.pass() ? "pass" : "FAIL");
+    const std::string line =
+        fmt::format("{} = {:.6g} (reference {:.6g}, tolerance {:.3g}) {}", m.name, m.value,
+                    m.reference, m.tolerance, m.pass() ? "pass" : "FAIL");
     if (m.name.rfind("geometric orifice area", 0) == 0) {
       MESSAGE("not met (reported): " << line);
       continue;
