@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "structure/mesh_generators.hpp"
+#include "tests/structure/solid_volume.hpp"
 
 using namespace valsalva::structure;
 
@@ -61,23 +62,7 @@ TEST_CASE("Gauss rules integrate polynomials exactly") {
   CHECK_THROWS_WITH_AS(gauss_hex({5, 1, 1}), doctest::Contains("only 1..4"), std::invalid_argument);
 }
 
-namespace {
-double mesh_volume(const SolidMesh& m) {
-  const int nen = m.nodes_per_element();
-  const QuadratureRule q = gauss_hex(default_gauss(m.order));
-  std::vector<double> N(nen), dN(3 * nen);
-  double V = 0;
-  for (int e = 0; e < m.num_elements(); ++e)
-    for (int g = 0; g < q.size(); ++g) {
-      hex_shape(m.order, q.points[g], N, dN);
-      Mat3 J = Mat3::Zero();
-      for (int a = 0; a < nen; ++a)
-        for (int k = 0; k < 3; ++k) J.col(k) += m.X.col(m.element_nodes(e)[a]) * dN[3 * a + k];
-      V += q.weights[g] * J.determinant();
-    }
-  return V;
-}
-}  // namespace
+using testing::solid_volume;
 
 TEST_CASE("cylindrical shell patch: volume, sets, convergence of the Q2 geometry") {
   ShellPatch p;
@@ -89,11 +74,11 @@ TEST_CASE("cylindrical shell patch: volume, sets, convergence of the Q2 geometry
       (std::pow(p.radius + p.thickness / 2, 2) - std::pow(p.radius - p.thickness / 2, 2));
   // Chord error of the 15-degree Q2 arc segments ~ (dtheta)^4: relative 1e-5 bound.
   const SolidMesh q2 = cylindrical_shell_patch(HexOrder::q2, p);
-  CHECK(std::abs(mesh_volume(q2) / exact - 1) < 1e-5);
+  CHECK(std::abs(solid_volume(q2) / exact - 1) < 1e-5);
   const SolidMesh q1 = cylindrical_shell_patch(HexOrder::q1, p);
   // Q1 replaces each 15-degree arc by its chord: volume ratio sin(d)/d, d = 15 degrees.
   const double d = p.angle / p.n_angle;
-  CHECK(mesh_volume(q1) / exact == doctest::Approx(std::sin(d) / d).epsilon(1e-12));
+  CHECK(solid_volume(q1) / exact == doctest::Approx(std::sin(d) / d).epsilon(1e-12));
   CHECK(q2.num_elements() == 64);
   CHECK(q2.num_nodes() == 17 * 9 * 5);
   CHECK(q2.node_set("attachment").size() == 17 * 5);
@@ -111,7 +96,7 @@ TEST_CASE("straight bar and validation of inverted elements") {
   b.depth = 0.1;
   b.n_length = 5;
   SolidMesh m = straight_bar(HexOrder::q2, b);
-  CHECK(mesh_volume(m) == doctest::Approx(0.06).epsilon(1e-13));
+  CHECK(solid_volume(m) == doctest::Approx(0.06).epsilon(1e-13));
   CHECK(m.surface_nodes("tip").size() == 9);
   m.X.row(2) *= -1;  // mirror image: every element left-handed
   CHECK_THROWS_WITH_AS(m.validate(), doctest::Contains("element 0"), std::runtime_error);
