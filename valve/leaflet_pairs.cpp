@@ -71,16 +71,27 @@ double axial_extent(const TriangleSurface& s, const std::vector<double>& d, doub
   return hi >= lo ? hi - lo : 0.0;
 }
 
+// Mid-surfaces of the leaflets and the bounding boxes of their triangles.
+struct MidSurfaces {
+  std::vector<TriangleSurface> mids;
+  std::vector<std::vector<Box>> boxes;
+};
+
+MidSurfaces mid_surfaces(const structure::SolidMesh& mesh, const Eigen::Matrix3Xd& x,
+                         const std::vector<LeafletGroups>& leaflets) {
+  MidSurfaces m;
+  for (const auto& l : leaflets) {
+    m.mids.push_back(mid_surface(mesh, x, l.aortic_face));
+    m.boxes.push_back(triangle_boxes(m.mids.back()));
+  }
+  return m;
+}
+
 }  // namespace
 
 bool leaflets_cross(const structure::SolidMesh& mesh, const Eigen::Matrix3Xd& x,
                     const std::vector<LeafletGroups>& leaflets) {
-  std::vector<TriangleSurface> mids;
-  std::vector<std::vector<Box>> boxes;
-  for (const auto& l : leaflets) {
-    mids.push_back(mid_surface(mesh, x, l.aortic_face));
-    boxes.push_back(triangle_boxes(mids.back()));
-  }
+  const auto [mids, boxes] = mid_surfaces(mesh, x, leaflets);
   Vec3 unused;
   for (std::size_t a = 0; a < mids.size(); ++a)
     for (std::size_t b = a + 1; b < mids.size(); ++b)
@@ -92,12 +103,7 @@ LeafletPairsReport leaflet_pairs(const structure::SolidMesh& mesh, const Eigen::
                                  const std::vector<LeafletGroups>& leaflets,
                                  const structure::ValveFrame& valve, double coaptation_distance) {
   const structure::ValveBasis basis = structure::valve_basis(valve);
-  std::vector<TriangleSurface> mids;
-  std::vector<std::vector<Box>> boxes;
-  for (const auto& l : leaflets) {
-    mids.push_back(mid_surface(mesh, x, l.aortic_face));
-    boxes.push_back(triangle_boxes(mids.back()));
-  }
+  const auto [mids, boxes] = mid_surfaces(mesh, x, leaflets);
   LeafletPairsReport r;
   r.min_distance = std::numeric_limits<double>::infinity();
   const int n = static_cast<int>(leaflets.size());
