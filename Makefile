@@ -4,7 +4,7 @@ JOBS ?= $(shell nproc)
 SCENE ?= scenes/default.toml
 CTEST_ARGS ?=
 
-.PHONY: run test deps configure build validate asan clean
+.PHONY: run test deps configure build validate asan clean valve-quick
 
 deps:
 	scripts/install-deps
@@ -20,6 +20,11 @@ run: build
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j$(JOBS) $(CTEST_ARGS)
+
+# The valve at the coarse level: its meshes (once) and one cardiac cycle (scenes/valve_quick.toml).
+valve-quick: build
+	scripts/make-valve-quick $(BUILD_DIR)/bin/valsalva runs/valve_quick
+	$(BUILD_DIR)/bin/valsalva run scenes/valve_quick.toml --overwrite
 
 asan: deps
 	cmake --preset asan && cmake --build --preset asan -j$(JOBS) && ctest --preset asan -L quick

@@ -28,7 +28,9 @@
 #include "io/scene_keys_flow.hpp"
 #include "io/scene_keys_les.hpp"
 #include "io/scene_keys_structure.hpp"
+#include "io/scene_keys_valve.hpp"
 #include "io/stop_signal.hpp"
+#include "valve/valve_monitor.hpp"
 
 namespace valsalva::app {
 
@@ -115,6 +117,7 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
   auto boundary = io::read_boundary_conditions(scene, mesh);
   const auto analysis_options = io::read_analysis_options(scene, mesh);
   auto immersed_setup = io::read_immersed_setup(scene, mesh);
+  const auto valve_options = io::read_valve_monitor_options(scene, mesh);
   io::check_les_scene(scene);
   io::flow_run_options(scene, dir);  // its checks (time step, output volume), before any write
   io::check_initial_state(scene, mesh);
@@ -154,6 +157,7 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
       if (!analysis_options.pressure_drops.empty()) series.push_back("pressure_drop.csv");
       if (!analysis_options.wall_shear.patches.empty()) series.push_back("wall_shear_history.csv");
       if (!immersed_setup.empty()) series.push_back("structures.csv");
+      if (valve_options) series.push_back("valve.csv");
       io::continue_in_place(run_path, scene, in->info().step, in->info().time, in->info().dt,
                             series, local.comm);
     }
@@ -188,6 +192,14 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
     if (rank == 0)
       fmt::print("restart: {} (step {}, t = {:.9g} s)\n", checkpoint->string(), start_step,
                  start.time);
+  }
+  std::optional<valve::ValveMonitor> valve_monitor;  // [valve]
+  if (valve_options) {
+    const auto& ib = immersed->structure();
+    int body = 0;
+    while (ib.body(body).spec().name != valve_options->structure) ++body;
+    valve_monitor.emplace(local, ib, body, *valve_options, run_path, in_place);
+    if (in) valve_monitor->restore(*in);
   }
 
   // Fields go to <basename>.xmf/.h5 in the run directory: "fields" at the output interval,
@@ -244,6 +256,7 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
     les.resume(loop.subgrid_viscosity());
   }
   if (analysis && !checkpoint) analysis->sample(loop.state(), 0);
+  if (valve_monitor && !checkpoint) valve_monitor->sample(loop.state(), 0);
 
   // Checkpoints every N steps, every M wall-clock minutes (rank 0's clock decides, so that all
   // ranks agree) and on SIGINT/SIGTERM; the newest output.checkpoint_keep are kept. They carry
@@ -266,6 +279,7 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
     hooks.after_step = [&, previous](const flow::FlowState& state, std::int64_t step) {
       if (previous) previous(state, step);
       immersed->after_step(state.time, step);
+      if (valve_monitor) valve_monitor->sample(state, step);
     };
   }
   if (writer)
@@ -282,6 +296,8 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
       if (analysis) extras = analysis->checkpoint_arrays();
       if (immersed)
         for (auto& a : immersed->checkpoint_arrays()) extras.push_back(std::move(a));
+      if (valve_monitor)
+        for (auto& a : valve_monitor->checkpoint_arrays()) extras.push_back(std::move(a));
       extras.push_back(
           io::nodal_checkpoint_array("pressure_increment", local, loop.pressure_increment()));
       if (!loop.face_flux().empty())

@@ -20,6 +20,7 @@
 #include "io/scene_keys_flow.hpp"
 #include "io/scene_keys_les.hpp"
 #include "io/scene_keys_structure.hpp"
+#include "io/scene_keys_valve.hpp"
 #include "validation/case.hpp"
 
 namespace valsalva::app {
@@ -42,12 +43,13 @@ int check_scene(const std::filesystem::path& scene_file) {
   const auto scene = io::load_scene(scene_file);
   const auto mesh = io::build_mesh(scene);
   const auto metrics = flow::compute_dual_metrics(mesh);
-  io::read_boundary_conditions(scene, mesh);  // every non-periodic patch has a valid condition
-  io::read_analysis_options(scene, mesh);     // probes, samples, statistics, wall shear
-  io::read_immersed_setup(scene, mesh);       // structure meshes, materials, clamped sets
-  io::check_les_scene(scene);                 // LES output fields
-  io::flow_run_options(scene, {});            // time step, output volume
-  io::check_initial_state(scene, mesh);       // a Taylor-Green start on a 2 pi L-periodic mesh
+  io::read_boundary_conditions(scene, mesh);    // every non-periodic patch has a valid condition
+  io::read_analysis_options(scene, mesh);       // probes, samples, statistics, wall shear
+  io::read_immersed_setup(scene, mesh);         // structure meshes, materials, clamped sets
+  io::read_valve_monitor_options(scene, mesh);  // [valve]: its structure and patches
+  io::check_les_scene(scene);                   // LES output fields
+  io::flow_run_options(scene, {});              // time step, output volume
+  io::check_initial_state(scene, mesh);         // a Taylor-Green start on a 2 pi L-periodic mesh
   if (world_rank() == 0)
     fmt::print("{}: scene and mesh are valid ({} nodes, {} cells, {} boundary patches)\n",
                scene_file.string(), metrics.num_nodes(), mesh.num_cells(), mesh.patch_names.size());

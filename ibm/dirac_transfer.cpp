@@ -88,7 +88,7 @@ void DiracTransfer::locate(std::span<const Eigen::Vector3d> markers) {
   // another rank's region no longer scans every ring up to the reach): owned nodes are numbered
   // first and ties go to the lower index, so a ghost comes out only when every owned node is
   // strictly farther, and then the ghost's owner is strictly nearer and this rank cannot win.
-  const double reach = options_.kernel.width * h_max_;
+  const double reach = options_.kernel.width * std::max(h_max_, options_.min_h);
   mine_.resize(markers.size());
   best_.resize(markers.size());
   nearest_.resize(markers.size());
@@ -118,7 +118,7 @@ void DiracTransfer::locate(std::span<const Eigen::Vector3d> markers) {
 
 std::string DiracTransfer::build_support(int marker, const Eigen::Vector3d& x, int nearest) {
   const auto& mesh = *mesh_;
-  const double h = mesh.h[static_cast<std::size_t>(nearest)];
+  const double h = std::max(mesh.h[static_cast<std::size_t>(nearest)], options_.min_h);
   KernelShape shape = options_.kernel;
   RkpmResult result;
   for (int attempt = 0; attempt <= options_.max_growth; ++attempt) {

@@ -12,8 +12,9 @@
 // ghost nodes; spreading adds into them and a halo "add" returns ghost contributions to their
 // owners; interpolation reads owned and ghost values after a halo "insert".
 //
-// The local mesh size at a marker is h of its nearest fluid node (it therefore jumps where the
-// nearest node changes; on a graded mesh the kernel changes width there).
+// The local mesh size at a marker is h of its nearest fluid node, or min_h when larger (it
+// therefore jumps where the nearest node changes; on a graded mesh the kernel changes width
+// there).
 //
 // Periodic meshes: a node stands at its periodic representative's position, so the support is
 // searched around X - t for every period combination t (read off the local edges whose vector
@@ -42,6 +43,11 @@ struct TransferOptions {
   // on the true wall, 2 h from a node of a wall of radius 8 h, is 0.25 h beyond the chord
   // plane there), and a clamped leaflet edge is often placed on the wall itself.
   double max_outside = 0.5;
+  // Smallest h the kernel width is measured in [m]: h = max(h of the nearest node, min_h).
+  // 0 = the local mesh size. A floor keeps the kernel (and so the coupling's stiffness bound,
+  // which grows as the kernel shrinks) from following a few small cells that the geometry
+  // forces, e.g. around a thin rigid frame the leaflets are attached to.
+  double min_h = 0;
 };
 
 class DiracTransfer {

@@ -40,7 +40,9 @@ ImmersedBody::ImmersedBody(const structure::SolidMesh& mesh, const structure::Ma
   }
   std::sort(clamped_.begin(), clamped_.end());
   clamped_.erase(std::unique(clamped_.begin(), clamped_.end()), clamped_.end());
-  if (!clamped_.empty() && !(spec_.tether_stiffness > 0 && std::isfinite(spec_.tether_stiffness)))
+  if (spec_.clamp == Clamp::fixed) fixed_ = clamped_;
+  if (!clamped_.empty() && spec_.clamp == Clamp::tether &&
+      !(spec_.tether_stiffness > 0 && std::isfinite(spec_.tether_stiffness)))
     throw std::invalid_argument(
         fmt::format("ibm::ImmersedBody '{}': clamped node sets need a positive tether stiffness "
                     "[N/m] (got {})",
@@ -53,7 +55,7 @@ ImmersedBody::ImmersedBody(const structure::SolidMesh& mesh, const structure::Ma
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(fmt::format("ibm::ImmersedBody '{}': {}", spec_.name, e.what()));
     }
-    contact_stiffness_ = contact_->nodal_stiffness();
+    obstacle_stiffness_ = contact_->obstacle_stiffness();
   }
   const int nen = mesh.nodes_per_element();
   for (int a = 0; a < nen; ++a)
@@ -70,7 +72,8 @@ double ImmersedBody::forces(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
                             Eigen::Ref<Eigen::Matrix3Xd> f) const {
   const double min_det = forces_.internal_forces(x, f);
   const auto& X = mesh().X;
-  for (int a : clamped_) f.col(a) -= spec_.tether_stiffness * (x.col(a) - X.col(a));
+  if (spec_.clamp == Clamp::tether)
+    for (int a : clamped_) f.col(a) -= spec_.tether_stiffness * (x.col(a) - X.col(a));
   if (contact_ && min_det > 0) contact_->add_forces(x, f);
   return min_det;
 }
@@ -82,6 +85,7 @@ structure::ContactSummary ImmersedBody::contact_summary(
 
 Eigen::Vector3d ImmersedBody::tether_force(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const {
   Vec3 total = Vec3::Zero();
+  if (spec_.clamp == Clamp::fixed) return total;
   for (int a : clamped_) total -= spec_.tether_stiffness * (x.col(a) - mesh().X.col(a));
   return total;
 }
@@ -89,12 +93,18 @@ Eigen::Vector3d ImmersedBody::tether_force(const Eigen::Ref<const Eigen::Matrix3
 void ImmersedBody::stiffness(const Eigen::Matrix3Xd& x, Eigen::SparseMatrix<double>& K) const {
   Eigen::Matrix3Xd f(3, num_nodes());
   forces_.assemble(x, f, K);
-  for (int a : clamped_)
-    for (int i = 0; i < 3; ++i) K.coeffRef(3 * a + i, 3 * a + i) += spec_.tether_stiffness;
-  if (contact_)
-    for (int a = 0; a < num_nodes(); ++a)
-      if (contact_stiffness_[a] > 0)
-        for (int i = 0; i < 3; ++i) K.coeffRef(3 * a + i, 3 * a + i) += contact_stiffness_[a];
+  if (spec_.clamp == Clamp::tether)
+    for (int a : clamped_)
+      for (int i = 0; i < 3; ++i) K.coeffRef(3 * a + i, 3 * a + i) += spec_.tether_stiffness;
+  if (!contact_) return;
+  std::vector<Eigen::Triplet<double>> tangent;
+  contact_->add_forces(x, f, &tangent);
+  Eigen::SparseMatrix<double> Kc(K.rows(), K.cols());
+  Kc.setFromTriplets(tangent.begin(), tangent.end());
+  K += Kc;
+  for (int a = 0; a < num_nodes(); ++a)
+    if (obstacle_stiffness_[a] > 0)
+      for (int i = 0; i < 3; ++i) K.coeffRef(3 * a + i, 3 * a + i) += obstacle_stiffness_[a];
 }
 
 double ImmersedBody::max_marker_spacing(const Eigen::Matrix3Xd& x) const {

@@ -31,6 +31,13 @@
 
 namespace valsalva::ibm {
 
+// How clamped node sets are held: `tether`, a stiff spring to the reference position, the node
+// staying a marker of the coupling (a clamped edge inside the fluid); `fixed`, exactly at the
+// reference position (Dirichlet) and no marker at all: neither located, spread nor interpolated,
+// its elastic force carried by the support (an edge clamped on a rigid wall such as a valve
+// frame, where there is no fluid to couple with).
+enum class Clamp { tether, fixed };
+
 struct BodySpec {
   // A constructor (not an aggregate) so that {name, clamped_sets, tether_stiffness} stays the
   // short form without the contact fields.
@@ -40,6 +47,7 @@ struct BodySpec {
   std::string name;
   std::vector<std::string> clamped_sets;  // node sets held by the tether
   double tether_stiffness;                // k_t [N/m per node], > 0 when clamped_sets is not empty
+  Clamp clamp = Clamp::tether;            // with fixed, tether_stiffness is unused
   // Contact between surfaces of this body (e.g. the leaflets of a valve, disjoint node sets of
   // one mesh) and against rigid obstacles (a root wall); empty: none.
   std::vector<structure::ContactPair> contact;
@@ -58,10 +66,13 @@ class ImmersedBody {
   double forces(const Eigen::Ref<const Eigen::Matrix3Xd>& x, Eigen::Ref<Eigen::Matrix3Xd> f) const;
   // Sum of the tether forces at x (the reaction of the supports on the solid).
   Eigen::Vector3d tether_force(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const;
-  // Stiffness K = -dF/dx at x (internal tangent + k_t on clamped nodes), dof 3*node + component,
-  // plus, on every contact-surface node, k_c I with k_c = Contact::nodal_stiffness() whether or
-  // not the contact is closed at x: the coupling's time-step bound then already holds when
-  // leaflets meet between two re-evaluations of the bound.
+  // Stiffness K = -dF/dx at x (internal tangent + k_t on tethered nodes), dof 3*node +
+  // component, plus the exact tangent of the contact between surfaces at x, plus, on every node
+  // of an obstacle surface, k_c I with k_c = Contact::obstacle_stiffness() whether or not it
+  // touches the wall at x. Why the two differ: contact between two surfaces acts as equal and
+  // opposite forces at coincident points, which the kernel spreads almost to nothing, so a pair
+  // closing between two re-evaluations of the coupling's bound hardly moves it (the closed pair
+  // is in the tangent at the next one); a wall's reaction is one-sided and is spread in full.
   void stiffness(const Eigen::Matrix3Xd& x, Eigen::SparseMatrix<double>& K) const;
   // The contact state at x (empty summary without contact).
   structure::ContactSummary contact_summary(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const;
@@ -72,6 +83,8 @@ class ImmersedBody {
   const structure::SolidForces& solid_forces() const { return forces_; }
   int num_nodes() const { return mesh().num_nodes(); }
   const std::vector<int>& clamped_nodes() const { return clamped_; }  // sorted, unique
+  // The clamped nodes when they are fixed (Clamp::fixed), else none.
+  const std::vector<int>& fixed_nodes() const { return fixed_; }
   const Eigen::VectorXd& nodal_volume() const { return nodal_volume_; }
   // Largest distance between lattice-neighbour nodes of an element (the marker spacing) at x.
   double max_marker_spacing(const Eigen::Matrix3Xd& x) const;
@@ -80,8 +93,9 @@ class ImmersedBody {
   structure::SolidForces forces_;
   BodySpec spec_;
   std::unique_ptr<structure::Contact> contact_;
-  Eigen::VectorXd contact_stiffness_;  // Contact::nodal_stiffness()
+  Eigen::VectorXd obstacle_stiffness_;  // Contact::obstacle_stiffness()
   std::vector<int> clamped_;
+  std::vector<int> fixed_;
   Eigen::VectorXd nodal_volume_;
   std::vector<std::array<int, 2>> neighbour_pairs_;  // local node pairs one lattice step apart
 };

@@ -31,8 +31,12 @@ int ImmersedStructure::add_body(const structure::SolidMesh& mesh,
   bodies_.push_back(std::make_unique<ImmersedBody>(mesh, material, std::move(spec)));
   const int first = num_markers(), n = mesh.num_nodes();
   first_.push_back(first);
+  std::vector<char> fixed(n, 0);
+  for (int a : bodies_.back()->fixed_nodes()) fixed[a] = 1;
+  for (int a = 0; a < n; ++a)
+    if (!fixed[a]) coupled_.push_back(first + a);
   auto grow = [&](Eigen::Matrix3Xd& m) { m.conservativeResize(3, first + n); };
-  for (auto* m : {&x_, &x_n_, &x_stage_, &velocity_, &force_, &wrapped_}) grow(*m);
+  for (auto* m : {&x_, &x_n_, &x_stage_, &velocity_, &force_}) grow(*m);
   x_.middleCols(first, n) = mesh.X;
   velocity_.middleCols(first, n).setZero();
   force_.middleCols(first, n).setZero();
@@ -54,8 +58,13 @@ flow::BodyForce ImmersedStructure::body_force() {
   };
 }
 
+void ImmersedStructure::gather(const Eigen::Matrix3Xd& all, Eigen::Matrix3Xd& coupled) const {
+  coupled.resize(3, static_cast<long>(coupled_.size()));
+  for (std::size_t m = 0; m < coupled_.size(); ++m) coupled.col(long(m)) = all.col(coupled_[m]);
+}
+
 void ImmersedStructure::locate(const Eigen::Matrix3Xd& x) {
-  wrapped_ = x;
+  gather(x, wrapped_);
   if (options_.box)
     for (int d = 0; d < 3; ++d) {
       if (!options_.box->periodic[d]) continue;
@@ -85,12 +94,16 @@ void ImmersedStructure::compute_forces(const Eigen::Matrix3Xd& x) {
 
 void ImmersedStructure::spread(flow::VectorField& density) {
   density.resize(static_cast<std::size_t>(mesh_.num_local()));
-  transfer_.spread(as_points(force_), density);
+  gather(force_, coupled_force_);
+  transfer_.spread(as_points(coupled_force_), density);
 }
 
 void ImmersedStructure::interpolate(const flow::VectorField& u) {
   u_copy_ = u;  // interpolate() refreshes ghosts in place; the stage velocity is const
-  transfer_.interpolate(std::span<Eigen::Vector3d>(u_copy_), as_points(velocity_));
+  coupled_velocity_.resize(3, static_cast<long>(coupled_.size()));
+  transfer_.interpolate(std::span<Eigen::Vector3d>(u_copy_), as_points(coupled_velocity_));
+  for (std::size_t m = 0; m < coupled_.size(); ++m)
+    velocity_.col(coupled_[m]) = coupled_velocity_.col(long(m));  // fixed nodes keep 0
 }
 
 void ImmersedStructure::stage_force(int stage, double stage_time,
@@ -144,14 +157,17 @@ double ImmersedStructure::stable_time_step() {
   std::vector<Eigen::SparseMatrix<double>> K(bodies_.size());
   for (int b = 0; b < num_bodies(); ++b)
     bodies_[b]->stiffness(Eigen::Matrix3Xd(x_.middleCols(first_[b], count(b))), K[b]);
+  // On the coupled markers only: fixed nodes are Dirichlet (their rows and columns drop out).
+  Eigen::Matrix3Xd v_all = Eigen::Matrix3Xd::Zero(3, num_markers()), kv_all(3, num_markers());
   auto apply = [&](const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd& kv) {
-    kv.resize(3, v.cols());
+    for (std::size_t m = 0; m < coupled_.size(); ++m) v_all.col(coupled_[m]) = v.col(long(m));
     for (int b = 0; b < num_bodies(); ++b) {
       const int n = count(b);
-      Eigen::Map<const Eigen::VectorXd> vb(v.data() + 3 * first_[b], 3 * n);
-      Eigen::Map<Eigen::VectorXd> kb(kv.data() + 3 * first_[b], 3 * n);
+      Eigen::Map<const Eigen::VectorXd> vb(v_all.data() + 3 * first_[b], 3 * n);
+      Eigen::Map<Eigen::VectorXd> kb(kv_all.data() + 3 * first_[b], 3 * n);
       kb = K[b] * vb;
     }
+    gather(kv_all, kv);
   };
   const auto eig = kernel_mapped_stiffness_eigenvalue(transfer_, apply);
   dt_max_ = coupling_time_step_bound(eig.lambda, options_.fluid_density,
@@ -173,11 +189,18 @@ void ImmersedStructure::check_time_step(double dt) {
         options_.stability_safety, options_.mode == CouplingMode::per_stage ? "2 sqrt(2)" : "2"));
 }
 
+Eigen::Vector3d ImmersedStructure::fixed_force(int b) const {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (int a : bodies_[b]->fixed_nodes()) sum += force_.col(first_[b] + a);
+  return sum;
+}
+
 Eigen::Vector3d ImmersedStructure::total_force(int b) const {
-  return force_.middleCols(first_[b], count(b)).rowwise().sum();
+  return force_.middleCols(first_[b], count(b)).rowwise().sum() - fixed_force(b);
 }
 
 Eigen::Vector3d ImmersedStructure::tether_force(int b) const {
+  if (bodies_[b]->spec().clamp == Clamp::fixed) return -fixed_force(b);
   return bodies_[b]->tether_force(x_.middleCols(first_[b], count(b)));
 }
 

@@ -87,7 +87,9 @@ class ImmersedStructure {
   int num_bodies() const { return static_cast<int>(bodies_.size()); }
   const ImmersedBody& body(int b) const { return *bodies_[b]; }
   int first_marker(int b) const { return first_[b]; }
+  // All solid nodes (markers and fixed nodes); the coupled ones are the transfer's markers.
   int num_markers() const { return static_cast<int>(x_.cols()); }
+  int num_coupled_markers() const { return static_cast<int>(coupled_.size()); }
   // Current positions, last marker velocities and last forces (3 x markers, all bodies).
   const Eigen::Matrix3Xd& positions() const { return x_; }
   const Eigen::Matrix3Xd& velocities() const { return velocity_; }
@@ -95,7 +97,9 @@ class ImmersedStructure {
   // Positions, velocities and forces of body b only.
   Eigen::Matrix3Xd body_positions(int b) const { return x_.middleCols(first_[b], count(b)); }
   // Total force the body applies to the fluid (= its tether reaction: internal forces sum to
-  // zero), and the tether reaction alone, at the last forces.
+  // zero), and the tether reaction alone, at the last forces. With fixed clamped nodes
+  // (Clamp::fixed) only the coupled markers act on the fluid and the "tether" reaction is the
+  // support's: minus the forces at the fixed nodes.
   Eigen::Vector3d total_force(int b) const;
   Eigen::Vector3d tether_force(int b) const;
   double last_min_det() const { return min_det_; }
@@ -104,6 +108,8 @@ class ImmersedStructure {
 
  private:
   int count(int b) const { return bodies_[b]->num_nodes(); }
+  void gather(const Eigen::Matrix3Xd& all, Eigen::Matrix3Xd& coupled) const;
+  Eigen::Vector3d fixed_force(int b) const;
   void compute_forces(const Eigen::Matrix3Xd& x);  // force_ at x, checks det F
   void locate(const Eigen::Matrix3Xd& x);          // wraps into the box
   void interpolate(const flow::VectorField& u);    // velocity_ at the located markers
@@ -114,7 +120,9 @@ class ImmersedStructure {
   DiracTransfer transfer_;
   std::vector<std::unique_ptr<ImmersedBody>> bodies_;
   std::vector<int> first_;
-  Eigen::Matrix3Xd x_, x_n_, x_stage_, velocity_, force_, wrapped_;
+  Eigen::Matrix3Xd x_, x_n_, x_stage_, velocity_, force_;
+  std::vector<int> coupled_;  // markers of the coupling: every node but the fixed ones
+  Eigen::Matrix3Xd wrapped_, coupled_force_, coupled_velocity_;  // per coupled marker
   double t_n_ = 0;
   double min_det_ = 1;
   double dt_max_ = -1;  // last stable_time_step(), -1 before the first

@@ -14,5 +14,6 @@ void declare_boundary_keys(Schema& schema);   // io/scene_keys_boundary.cpp
 void declare_les_keys(Schema& schema);        // io/scene_keys_les.cpp
 void declare_analysis_keys(Schema& schema);   // io/scene_keys_analysis.cpp
 void declare_structure_keys(Schema& schema);  // io/scene_keys_structure.cpp
+void declare_valve_keys(Schema& schema);      // io/scene_keys_valve.cpp
 
 }  // namespace valsalva::io

@@ -31,6 +31,15 @@ void declare_structure_keys(Schema& s) {
       .above(0)
       .unit_of("h")
       .doc("Support width of the kernel in units of the local fluid mesh size");
+  s.real("immersed.kernel_min_size")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("m")
+      .doc(
+          "Floor of the mesh size h the kernel width is measured in: h = max(h of the node "
+          "nearest the marker, this); 0 = the local mesh size. Small cells that the geometry "
+          "forces (e.g. at a thin frame the leaflets are attached to) then do not shrink the "
+          "kernel, whose stiffness bound on the time step falls as h^(3/2)");
   s.real("immersed.max_outside")
       .def(0.5)
       .at_least(0)
@@ -126,13 +135,24 @@ void declare_structure_keys(Schema& s) {
   s.string_list(k + ".clamped")
       .def(std::vector<std::string>{})
       .unit_of("-")
-      .doc("Node sets held at their reference positions by a stiff tether");
+      .doc("Node sets held at their reference positions (how: clamp)");
+  s.choice(k + ".clamp", {"tether", "fixed"})
+      .def("tether")
+      .unit_of("-")
+      .doc(
+          "tether: each clamped node is pulled to its reference position by a spring "
+          "(tether_stiffness) and stays a marker of the coupling (an edge clamped inside the "
+          "fluid); fixed: clamped nodes are held exactly (Dirichlet) and are no markers, their "
+          "elastic force carried by the support (an edge on a rigid wall, e.g. leaflets on a "
+          "valve frame, where a marker would have no fluid around it; no tether in the time-step "
+          "bound)");
   s.real(k + ".tether_stiffness")
       .def(0.0)
       .at_least(0)
       .unit_of("N/m")
       .doc(
-          "Spring per clamped node; needed with clamped sets. Stiffer holds better but lowers "
+          "Spring per clamped node; needed with clamped sets and clamp = tether. Stiffer holds "
+          "better but lowers "
           "the stable time step (it enters the coupling's bound like the solid stiffness)");
   s.string_list(k + ".contact")
       .def(std::vector<std::string>{})
@@ -143,7 +163,7 @@ void declare_structure_keys(Schema& s) {
           "and B surface sets, or several joined by '+' (\"leaflet1_aortic_face+leaflet1_"
           "ventricular_face:leaflet2_aortic_face+leaflet2_ventricular_face\"). Penalty on the "
           "normal gap at the faces' Gauss points, both sides as slave in turn (Sauer & De "
-          "Lorenzis 2013; structure/contact.hpp); its springs enter the time-step bound");
+          "Lorenzis 2013; structure/contact.hpp); its tangent enters the time-step bound");
   s.real(k + ".contact_penalty")
       .def(100.0)
       .above(0)
@@ -151,7 +171,9 @@ void declare_structure_keys(Schema& s) {
       .doc(
           "Penalty factor c: eps = c E / h with E three times the material's small-strain shear "
           "modulus and h the mean face size of the pair; the penetration at pressure p is "
-          "(p / E) h / c. Larger c lowers the stable time step as sqrt(c)");
+          "(p / E) h / c. Between surfaces c hardly moves the stable time step (equal and opposite "
+          "forces at one point spread to almost nothing); against a rigid wall (contact_wall_*) "
+          "larger c lowers it as sqrt(c)");
   s.choice(k + ".contact_formulation", {"two_pass", "two_half_pass"})
       .def("two_pass")
       .unit_of("-")
@@ -159,7 +181,7 @@ void declare_structure_keys(Schema& s) {
           "two_pass: each surface is slave in turn and its traction acts half on it and half, as "
           "the reaction, on the other surface, so the contact forces cancel exactly (no net force "
           "spread into the fluid); two_half_pass: the traction acts on the slave only, which "
-          "passes the contact patch test but leaves a net force (measured up to 14 % of the "
+          "passes the contact patch test but leaves a net force (measured up to 41 % of the "
           "contact "
           "force on deformed non-matching meshes, tests/ibm/test_immersed_contact)");
   s.real(k + ".contact_search")
@@ -344,6 +366,7 @@ ImmersedSetup read_immersed_setup(const Scene& scene, const flow::Mesh& mesh) {
   o.transfer.kernel.type = ibm::parse_kernel_type(scene.get<std::string>("immersed.kernel"));
   o.transfer.kernel.width = scene.get<double>("immersed.kernel_width");
   o.transfer.max_outside = scene.get<double>("immersed.max_outside");
+  o.transfer.min_h = scene.get<double>("immersed.kernel_min_size");
   o.mode = scene.get<std::string>("immersed.coupling") == "per_step" ? ibm::CouplingMode::per_step
                                                                      : ibm::CouplingMode::per_stage;
   o.fluid_density = scene.get<double>("flow.density");
@@ -391,7 +414,10 @@ ImmersedSetup read_immersed_setup(const Scene& scene, const flow::Mesh& mesh) {
                           fmt::format("{}", fmt::join(known, ", ")));
       }
     st.body.tether_stiffness = scene.get<double>(k + ".tether_stiffness");
-    if (!st.body.clamped_sets.empty() && !(st.body.tether_stiffness > 0))
+    st.body.clamp =
+        scene.get<std::string>(k + ".clamp") == "fixed" ? ibm::Clamp::fixed : ibm::Clamp::tether;
+    if (!st.body.clamped_sets.empty() && st.body.clamp == ibm::Clamp::tether &&
+        !(st.body.tether_stiffness > 0))
       throw scene.error(k + ".tether_stiffness",
                         "clamped node sets need a tether stiffness > 0 (N/m per node)");
     read_contact(scene, k, st.mesh, st.body);

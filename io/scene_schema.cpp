@@ -25,6 +25,7 @@ const Schema& scene_schema() {
     declare_les_keys(s);
     declare_analysis_keys(s);
     declare_structure_keys(s);
+    declare_valve_keys(s);
     s.check();
     return s;
   }();

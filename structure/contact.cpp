@@ -222,7 +222,7 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
   auto half_pass = [&](const std::vector<FaceRef>& S, const std::vector<FaceRef>& M, double eps,
                        double search, ContactSurfaceSummary& s, HalfTotals& half, int surface,
                        int h) {
-    std::vector<Eigen::Vector3d> centres(M.size());
+    std::vector<Eigen::Vector3d> centres(M.size()), lo(M.size()), hi(M.size());
     std::vector<std::array<V3<double>, NF>> PM(M.size());
     std::vector<std::array<int, NF>> NM(M.size());
     double rmax = 0;
@@ -232,9 +232,18 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
       V3<double> c, cs, ct;
       fm.eval(PM[m], 0.0, 0.0, c, cs, ct);
       centres[m] = Eigen::Vector3d(c[0], c[1], c[2]);
-      for (int a = 0; a < NF; ++a)
-        rmax = std::max(
-            rmax, (Eigen::Vector3d(PM[m][a][0], PM[m][a][1], PM[m][a][2]) - centres[m]).norm());
+      lo[m] = hi[m] = centres[m];
+      double r = 0;
+      for (int a = 0; a < NF; ++a) {
+        const Eigen::Vector3d node(PM[m][a][0], PM[m][a][1], PM[m][a][2]);
+        r = std::max(r, (node - centres[m]).norm());
+        lo[m] = lo[m].cwiseMin(node);
+        hi[m] = hi[m].cwiseMax(node);
+      }
+      // A curved Q2 face can bulge beyond its nodes' box: a margin of a quarter of its size.
+      lo[m].array() -= search + 0.25 * r;
+      hi[m].array() += search + 0.25 * r;
+      rmax = std::max(rmax, r);
     }
     const BucketGrid grid(centres, std::max(2 * rmax, 1e-300));
     std::vector<int> candidates;
@@ -249,7 +258,11 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
         grid.in_box(Eigen::Vector3d(xs[0], xs[1], xs[2]), rmax + search, candidates);
         int best = -1;
         Projection pr;
+        const Eigen::Vector3d xe(xs[0], xs[1], xs[2]);
         for (int c : candidates) {
+          // Broad phase: the closest point projection (a Newton solve) only for faces whose
+          // box, widened by the search distance, holds the point.
+          if ((xe.array() < lo[c].array()).any() || (xe.array() > hi[c].array()).any()) continue;
           const Projection p = project<NF>(tables.shape[M[c].face], PM[c], xs);
           if (!p.inside || std::abs(p.gap) > search) continue;
           if (best < 0 || std::abs(p.gap) < std::abs(pr.gap)) best = c, pr = p;
@@ -368,7 +381,7 @@ std::vector<ContactPoint> Contact::points(const Eigen::Ref<const Eigen::Matrix3X
   return pts;
 }
 
-Eigen::VectorXd Contact::nodal_stiffness() const {
+Eigen::VectorXd Contact::obstacle_stiffness() const {
   Eigen::VectorXd k = Eigen::VectorXd::Zero(mesh_.num_nodes());
   const int nq = options_.quadrature > 0 ? options_.quadrature : static_cast<int>(mesh_.order) + 2;
   auto add = [&](const std::vector<FaceRef>& faces, double eps) {
@@ -390,11 +403,6 @@ Eigen::VectorXd Contact::nodal_stiffness() const {
       }
     }
   };
-  for (std::size_t p = 0; p < pairs_.size(); ++p) {
-    const double eps = options_.penalty_factor * modulus_ / h_[p];
-    add(pairs_[p].a, eps);
-    add(pairs_[p].b, eps);
-  }
   for (std::size_t o = 0; o < obstacles_.size(); ++o)
     add(obstacles_[o].faces, options_.penalty_factor * modulus_ / h_[pairs_.size() + o]);
   return k;

@@ -138,10 +138,10 @@ class Contact {
   // The summary alone (no forces).
   ContactSummary summary(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const;
   std::vector<ContactPoint> points(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const;
-  // Per node: eps times its share int N_a dA of the reference contact area, summed over the
-  // surfaces it is on [N/m] (the row sum of the tangent of a fully active, flat contact: what
-  // closing contact can add to a node's stiffness, for explicit time-step bounds).
-  Eigen::VectorXd nodal_stiffness() const;
+  // Per node: eps times its share int N_a dA of the reference area of the obstacle surfaces it
+  // is on [N/m] (the row sum of the tangent of a fully active, flat contact with a rigid wall:
+  // what a closing wall contact can add to a node's stiffness, for explicit time-step bounds).
+  Eigen::VectorXd obstacle_stiffness() const;
 
  private:
   const SolidMesh& mesh_;

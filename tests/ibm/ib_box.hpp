@@ -34,6 +34,10 @@ struct IbBoxSpec {
   bool contact_slabs = false;
   double overlap = 0.02;
   bool contact = true;  // with contact_slabs: false builds the same slabs without contact
+  // Clamped node sets of the block, e.g. {"u0"}, held as `clamp` says.
+  std::vector<std::string> clamped_sets;
+  ibm::Clamp clamp = ibm::Clamp::fixed;
+  double tether_stiffness = 0;
   structure::ContactOptions::Formulation formulation =
       structure::ContactOptions::Formulation::two_pass;
 };
@@ -60,7 +64,8 @@ struct IbBox {
         structure::structured_block(structure::HexOrder::q2, {s.elements, s.elements, s.elements},
                                     [&](const structure::Vec3& u) { return lo + s.side * u; });
     material = structure::make_neo_hookean(s.shear_modulus, 10 * s.shear_modulus);
-    ibm::BodySpec body{"block", {}, 0};
+    ibm::BodySpec body{"block", s.clamped_sets, s.tether_stiffness};
+    body.clamp = s.clamp;
     if (s.contact_slabs) {
       solid = {};
       const double z0 = 0.5 - s.side / 2, z1 = 0.5, t = s.side / 2;

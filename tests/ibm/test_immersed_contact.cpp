@@ -70,9 +70,10 @@ TEST_CASE("contact pushes two immersed slabs apart, at any rank count") {
 
 TEST_CASE("two_half_pass contact in the coupling: the net force it leaves") {
   // The two half passes act on different faces with their own gaps and areas: their forces are
-  // equal and opposite on a uniform state only. Measured here as the slabs deform (penetration
-  // 13 % of their thickness, 2x2 on 3x3 faces): up to 14 % of the contact force, which the
-  // coupling spreads into the fluid; hence two_pass in flow runs.
+  // equal and opposite on a uniform state only. Measured here as the slabs deform over 40 steps
+  // of half the coupling's bound (2x2 on 3x3 faces): up to 41 % of the contact force (14 % with
+  // the smaller steps of the earlier, diagonal contact bound), which the coupling spreads into
+  // the fluid; hence two_pass in flow runs.
   test::IbBoxSpec spec;
   spec.cells = 12;
   spec.contact_slabs = true;
@@ -92,5 +93,5 @@ TEST_CASE("two_half_pass contact in the coupling: the net force it leaves") {
   }
   MESSAGE("two_half_pass: largest |net force| / contact force " << worst);
   CHECK(worst > 1e-3);  // the imbalance is real (documented), unlike two_pass
-  CHECK(worst < 0.2);
+  CHECK(worst < 0.5);
 }
