@@ -89,6 +89,7 @@ TEST_CASE("prepare creates the directory, writes the resolved scene, and guards 
   CHECK(read(dir / "valsalva_run.toml") != marker);
 
   // Anything valsalva did not write makes --overwrite refuse, listing it, and nothing goes.
+  barrier();  // every rank has checked the cleared directory before rank 0 writes into it
   if (rank == 0) {
     std::ofstream(dir / "log.csv") << "old";
     std::ofstream(dir / "notes.txt") << "mine";
@@ -104,6 +105,7 @@ TEST_CASE("prepare creates the directory, writes the resolved scene, and guards 
   // A folder with a copied scene (no marker) or a copied marker (naming another folder) is a
   // user's folder: never cleared, even with overwrite.
   const fs::path other = root / "not_a_run";
+  barrier();
   if (rank == 0) {
     fs::create_directories(other);
     std::ofstream(other / "thesis.tex") << "precious";
@@ -113,6 +115,7 @@ TEST_CASE("prepare creates the directory, writes the resolved scene, and guards 
   CHECK_THROWS_WITH_AS(RunDirectory::prepare(other, true, scene, MPI_COMM_WORLD),
                        doctest::Contains("holds no valsalva marker valsalva_run.toml"),
                        RunDirectoryError);
+  barrier();
   if (rank == 0) fs::copy_file(dir / "valsalva_run.toml", other / "valsalva_run.toml");
   barrier();
   const std::string written_for =
@@ -123,6 +126,7 @@ TEST_CASE("prepare creates the directory, writes the resolved scene, and guards 
 
   // An existing empty directory is fine without overwrite.
   const fs::path empty = root / "empty";
+  barrier();
   if (rank == 0) fs::create_directories(empty);
   barrier();
   CHECK_NOTHROW(RunDirectory::prepare(empty, false, scene, MPI_COMM_WORLD));
