@@ -155,6 +155,7 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
       std::vector<std::string> series{"log.csv"};
       if (!analysis_options.probes.points.empty()) series.push_back("probes.csv");
       if (!analysis_options.pressure_drops.empty()) series.push_back("pressure_drop.csv");
+      if (!analysis_options.sections.sections.empty()) series.push_back("sections.csv");
       if (!analysis_options.wall_shear.patches.empty()) series.push_back("wall_shear_history.csv");
       if (!immersed_setup.empty()) series.push_back("structures.csv");
       if (valve_options) series.push_back("valve.csv");
@@ -255,7 +256,7 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
     loop.resume(std::move(start), start_step, start_dp, start_nu_sgs, start_flux);
     les.resume(loop.subgrid_viscosity());
   }
-  if (analysis && !checkpoint) analysis->sample(loop.state(), 0);
+  if (analysis && !checkpoint) analysis->sample(loop.state(), 0, loop.face_flux());
   if (valve_monitor && !checkpoint) valve_monitor->sample(loop.state(), 0);
 
   // Checkpoints every N steps, every M wall-clock minutes (rank 0's clock decides, so that all
@@ -272,7 +273,7 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
   flow::RunHooks hooks;
   if (analysis)
     hooks.after_step = [&](const flow::FlowState& state, std::int64_t step) {
-      analysis->sample(state, step);
+      analysis->sample(state, step, loop.face_flux());
     };
   if (immersed) {
     auto previous = std::move(hooks.after_step);

@@ -7,8 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "io/line_statistics.hpp"
 #include "io/phase_statistics.hpp"
 #include "io/probes.hpp"
+#include "io/section_flux.hpp"
 
 namespace valsalva::io {
 
@@ -28,13 +30,14 @@ struct SampleOptions {
 };
 
 struct StatisticsOptions {
-  enum class Region { all, plane, box };
+  enum class Region { all, plane, box, line };
   PhaseStatisticsOptions phase;
   int every_steps = 1;
   double write_interval = 0;  // s; > 0: also write the files every this much time (from start)
   Region region = Region::all;
   Eigen::Vector3d a{0, 0, 0}, b{0, 0, 0};  // plane: point, normal; box: lo, hi
   double half_thickness = 0;
+  LineSpec line;  // line: points along a segment (io/line_statistics.hpp)
 };
 
 struct WallShearOptions {
@@ -50,15 +53,21 @@ struct PressureDropOptions {
   int every_steps = 1;
 };
 
+struct SectionsOptions {
+  std::vector<SectionOptions> sections;
+  int every_steps = 1;
+};
+
 struct AnalysisOptions {
   ProbeOptions probes;
   std::vector<SampleOptions> samples;
   std::vector<StatisticsOptions> statistics;
   WallShearOptions wall_shear;
   std::vector<PressureDropOptions> pressure_drops;
+  SectionsOptions sections;
   bool empty() const {
     return probes.points.empty() && samples.empty() && statistics.empty() &&
-           wall_shear.patches.empty() && pressure_drops.empty();
+           wall_shear.patches.empty() && pressure_drops.empty() && sections.sections.empty();
   }
 };
 

@@ -1,14 +1,16 @@
 // Everything a run measures while it runs, assembled from the scene's analysis sections
-// (io/analysis_options.hpp): probes, line and plane samples, phase statistics, wall shear
-// stress with TAWSS/OSI, pressure differences. Only what the scene asks for is built; the run
-// loop calls sample() after every step (flow::RunHooks::after_step), the checkpoint hook saves
-// checkpoint_arrays(), a restart calls restore(), and finish() writes the end-of-run files.
-// Files in the run directory:
+// (io/analysis_options.hpp): probes, line and plane samples, phase statistics on regions and
+// lines, wall shear stress with TAWSS/OSI, pressure differences, section fluxes. Only what the
+// scene asks for is built; the run loop calls sample() after every step
+// (flow::RunHooks::after_step), the checkpoint hook saves checkpoint_arrays(), a restart calls
+// restore(), and finish() writes the end-of-run files. Files in the run directory:
 //   probes.csv          time, <probe>_u, _v, _w, _p           (every probes.every_steps)
 //   samples/            <sample>_<step>.csv                   (io/line_plane_samples.hpp)
 //   statistics/         <name>.xmf + .h5, <name>_phases.csv   (io/phase_statistics.hpp)
+//                       <name>.csv for a line                 (io/line_statistics.hpp)
 //   wall_shear*.csv     (io/wall_shear_recorder.hpp)
 //   pressure_drop.csv   time, <name>_upstream, <name>_downstream (Pa), <name>_mmHg
+//   sections.csv        time, <name>_flux (m^3/s)             (io/section_flux.hpp)
 // A restart in place appends to the CSV time series.
 #pragma once
 
@@ -21,9 +23,11 @@
 #include "io/analysis_options.hpp"
 #include "io/checkpoint.hpp"
 #include "io/line_plane_samples.hpp"
+#include "io/line_statistics.hpp"
 #include "io/phase_statistics.hpp"
 #include "io/pressure_drop.hpp"
 #include "io/probes.hpp"
+#include "io/section_flux.hpp"
 #include "io/wall_shear_recorder.hpp"
 
 namespace valsalva::io {
@@ -37,12 +41,16 @@ class RunAnalysis {
               double dynamic_viscosity, std::filesystem::path run_dir, bool append);
 
   bool empty() const { return options_.empty(); }
-  // Collective: the samples due after step `step` (step 0 = the initial state).
-  void sample(const flow::FlowState& state, std::int64_t step);
+  // Collective: the samples due after step `step` (step 0 = the initial state). `face_flux`:
+  // the projected face flux of the state on every local edge (flow::RunLoop::face_flux()),
+  // which the section fluxes sum; empty (the initial state, before any projection): the
+  // sections use the central face flux of the nodal velocity instead.
+  void sample(const flow::FlowState& state, std::int64_t step,
+              const flow::EdgeField& face_flux = {});
   std::vector<CheckpointArray> checkpoint_arrays() const;
   // Collective: statistics and wall shear accumulators from a checkpoint of the same scene.
   void restore(const CheckpointReader& reader);
-  // Collective: statistics and wall shear files.
+  // Collective: statistics and wall shear files; rank 0 prints the last section fluxes.
   void finish() const;
 
   const std::vector<PhaseStatistics>& statistics() const { return statistics_; }
@@ -50,6 +58,8 @@ class RunAnalysis {
 
  private:
   void write_interim(std::size_t statistics, double time);
+  void write_statistics(std::size_t statistics) const;
+  void sample_sections(const flow::FlowState& state, const flow::EdgeField& face_flux);
   struct Drop {
     PressureDropOptions options;
     RegionMean upstream, downstream;
@@ -63,10 +73,16 @@ class RunAnalysis {
   std::optional<ProbeCsv> probe_csv_;
   std::vector<LinePlaneSamples> samples_;
   std::vector<PhaseStatistics> statistics_;
+  std::vector<LineStatistics> lines_;
+  std::vector<std::size_t> slot_;   // per statistics option: index into statistics_ or lines_
   std::vector<double> next_write_;  // per statistics: next interim write time (NaN: not set)
   std::optional<WallShearRecorder> wall_shear_;
   std::vector<Drop> drops_;
   std::ofstream drop_csv_;
+  std::vector<SectionFlux> sections_;
+  std::ofstream section_csv_;
+  flow::EdgeField central_flux_;
+  std::string last_sections_;  // the newest section fluxes, for the end-of-run message
 };
 
 }  // namespace valsalva::io

@@ -13,6 +13,7 @@ void declare_flow_keys(Schema& schema);       // io/scene_keys_flow.cpp
 void declare_boundary_keys(Schema& schema);   // io/scene_keys_boundary.cpp
 void declare_les_keys(Schema& schema);        // io/scene_keys_les.cpp
 void declare_analysis_keys(Schema& schema);   // io/scene_keys_analysis.cpp
+void declare_section_keys(Schema& schema);    // io/scene_keys_sections.cpp
 void declare_structure_keys(Schema& schema);  // io/scene_keys_structure.cpp
 void declare_valve_keys(Schema& schema);      // io/scene_keys_valve.cpp
 

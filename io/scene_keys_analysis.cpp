@@ -1,5 +1,6 @@
 // Scene keys of what a run measures while it runs ([probe.<name>], [probes], [sample.<name>],
-// [statistics.<name>], [wall_shear], [pressure_drop.<name>]) and their reader. Each section is
+// [statistics.<name>], [wall_shear], [pressure_drop.<name>]) and their reader; [section.<name>]
+// in io/scene_keys_sections.cpp. Each section is
 // optional: a scene that has none of them computes none of it (io/run_analysis.hpp).
 #include "io/scene_keys_analysis.hpp"
 
@@ -11,6 +12,7 @@
 #include <set>
 
 #include "io/scene_keys.hpp"
+#include "io/scene_keys_sections.hpp"
 
 namespace valsalva::io {
 
@@ -66,7 +68,8 @@ void declare_analysis_keys(Schema& s) {
             "Phase-averaged (or plain time-averaged) mean and RMS of u, v, w, p, Reynolds "
             "stresses and k = rho/2 (u'^2 + v'^2 + w'^2), accumulated on the fly, saved in "
             "checkpoints and written at the end (statistics/<name>.xmf, one step per phase bin, "
-            "and <name>_phases.csv). Memory: 88 bytes per covered node and bin.");
+            "and <name>_phases.csv; on a line statistics/<name>.csv, one row per bin and point). "
+            "Memory: 88 bytes per covered node (or line point) and bin.");
   s.real(st + ".period")
       .def(0.0)
       .at_least(0)
@@ -92,10 +95,12 @@ void declare_analysis_keys(Schema& s) {
           "(e.g. one period, to follow the convergence over cycles); 0 = at the end of the run "
           "only. Each write costs about 2-3 time steps per bin on the whole mesh "
           "(docs/analysis.md)");
-  s.choice(st + ".region", {"all", "plane", "box"})
+  s.choice(st + ".region", {"all", "plane", "box", "line"})
       .def("all")
       .unit_of("-")
-      .doc("Nodes covered: the whole mesh, a slab around a plane, or an axis-aligned box");
+      .doc(
+          "Nodes covered: the whole mesh, a slab around a plane, or an axis-aligned box; or "
+          "points along a line, where u, v, w, p are interpolated from the mesh");
   s.real3(st + ".point").required().unit_of("m").doc("A point of the plane");
   s.when(st + ".point", st + ".region", {"plane"});
   s.real3(st + ".normal").required().unit_of("-").doc("Normal of the plane");
@@ -110,6 +115,18 @@ void declare_analysis_keys(Schema& s) {
   s.when(st + ".lo", st + ".region", {"box"});
   s.real3(st + ".hi").required().unit_of("m").doc("Upper corner of the box");
   s.when(st + ".hi", st + ".region", {"box"});
+  s.real3(st + ".origin").required().unit_of("m").doc("First point of the line");
+  s.when(st + ".origin", st + ".region", {"line"});
+  s.real3(st + ".end").required().unit_of("m").doc("Last point of the line");
+  s.when(st + ".end", st + ".region", {"line"});
+  s.integer(st + ".points")
+      .def(50)
+      .at_least(2)
+      .unit_of("-")
+      .doc(
+          "Evenly spaced points from origin to end (both included); those outside the mesh are "
+          "left out (the run log counts them), a line with none inside is an error");
+  s.when(st + ".points", st + ".region", {"line"});
 
   s.section("wall_shear",
             "Wall shear stress tau_w on wall patches (residual-force method, flow/wall_force.hpp), "
@@ -137,15 +154,13 @@ void declare_analysis_keys(Schema& s) {
   declare_every_steps(s, pd, "the pressure difference");
 }
 
-namespace {
-
-Eigen::Vector3d vec(const Scene& scene, const std::string& key) {
+Eigen::Vector3d scene_vector(const Scene& scene, const std::string& key) {
   const auto a = scene.get<std::array<double, 3>>(key);
   return {a[0], a[1], a[2]};
 }
 
 // Names become file names and CSV columns: keep them plain.
-void check_name(const Scene& scene, const std::string& table, const std::string& name) {
+void check_plain_name(const Scene& scene, const std::string& table, const std::string& name) {
   static const std::regex plain("[A-Za-z0-9_]+");
   if (!std::regex_match(name, plain))
     throw scene.error(
@@ -154,32 +169,30 @@ void check_name(const Scene& scene, const std::string& table, const std::string&
         "[A-Za-z0-9_]+");
 }
 
-}  // namespace
-
 AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh) {
   AnalysisOptions o;
   for (const auto& name : scene.names("probe")) {
-    check_name(scene, "probe", name);
-    o.probes.points.push_back({name, vec(scene, "probe." + name + ".position")});
+    check_plain_name(scene, "probe", name);
+    o.probes.points.push_back({name, scene_vector(scene, "probe." + name + ".position")});
   }
   o.probes.every_steps = scene.get<int>("probes.every_steps");
 
   for (const auto& name : scene.names("sample")) {
-    check_name(scene, "sample", name);
+    check_plain_name(scene, "sample", name);
     const std::string k = "sample." + name;
     SampleOptions s;
     s.name = name;
     s.plane = scene.get<std::string>(k + ".type") == "plane";
-    s.origin = vec(scene, k + ".origin");
+    s.origin = scene_vector(scene, k + ".origin");
     const auto n = scene.get<std::array<int, 3>>(k + ".points");
     s.points = {n[0], s.plane ? n[1] : 1};
     if (s.plane) {
-      s.u = vec(scene, k + ".u");
-      s.v = vec(scene, k + ".v");
+      s.u = scene_vector(scene, k + ".u");
+      s.v = scene_vector(scene, k + ".v");
       if (!(s.u.cross(s.v).norm() > 0))
         throw scene.error(k + ".v", "the plane's edge vectors u and v are parallel or zero");
     } else {
-      s.u = vec(scene, k + ".end") - s.origin;
+      s.u = scene_vector(scene, k + ".end") - s.origin;
       if (!(s.u.norm() > 0)) throw scene.error(k + ".end", "the line has zero length");
     }
     s.interval = scene.get<double>(k + ".interval");
@@ -189,7 +202,7 @@ AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh
 
   const double rho = scene.get<double>("flow.density");
   for (const auto& name : scene.names("statistics")) {
-    check_name(scene, "statistics", name);
+    check_plain_name(scene, "statistics", name);
     const std::string k = "statistics." + name;
     StatisticsOptions s;
     s.phase.period = scene.get<double>(k + ".period");
@@ -213,19 +226,26 @@ AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh
     const auto region = scene.get<std::string>(k + ".region");
     s.region = region == "all"     ? StatisticsOptions::Region::all
                : region == "plane" ? StatisticsOptions::Region::plane
+               : region == "line"  ? StatisticsOptions::Region::line
                                    : StatisticsOptions::Region::box;
     if (s.region == StatisticsOptions::Region::plane) {
-      s.a = vec(scene, k + ".point");
-      s.b = vec(scene, k + ".normal");
+      s.a = scene_vector(scene, k + ".point");
+      s.b = scene_vector(scene, k + ".normal");
       if (!(s.b.norm() > 0)) throw scene.error(k + ".normal", "the normal is zero");
       s.half_thickness = scene.get<double>(k + ".half_thickness");
     } else if (s.region == StatisticsOptions::Region::box) {
-      s.a = vec(scene, k + ".lo");
-      s.b = vec(scene, k + ".hi");
+      s.a = scene_vector(scene, k + ".lo");
+      s.b = scene_vector(scene, k + ".hi");
       if (!(s.a.array() < s.b.array()).all())
         throw scene.error(k + ".hi",
                           "the box's upper corner must exceed its lower corner in x, "
                           "y and z");
+    } else if (s.region == StatisticsOptions::Region::line) {
+      s.line = {scene_vector(scene, k + ".origin"), scene_vector(scene, k + ".end"),
+                scene.get<int>(k + ".points")};
+      if (!((s.line.end - s.line.origin).norm() > 0))
+        throw scene.error(k + ".end", "the line has zero length (end = origin)",
+                          "a point other than origin");
     }
     o.statistics.push_back(s);
   }
@@ -246,12 +266,13 @@ AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh
   }
 
   for (const auto& name : scene.names("pressure_drop")) {
-    check_name(scene, "pressure_drop", name);
+    check_plain_name(scene, "pressure_drop", name);
     const std::string k = "pressure_drop." + name;
-    o.pressure_drops.push_back({name, vec(scene, k + ".upstream"), vec(scene, k + ".downstream"),
-                                scene.get<double>(k + ".radius"),
-                                scene.get<int>(k + ".every_steps")});
+    o.pressure_drops.push_back(
+        {name, scene_vector(scene, k + ".upstream"), scene_vector(scene, k + ".downstream"),
+         scene.get<double>(k + ".radius"), scene.get<int>(k + ".every_steps")});
   }
+  o.sections = read_section_options(scene);
   return o;
 }
 

@@ -24,6 +24,7 @@ const Schema& scene_schema() {
     declare_boundary_keys(s);
     declare_les_keys(s);
     declare_analysis_keys(s);
+    declare_section_keys(s);
     declare_structure_keys(s);
     declare_valve_keys(s);
     s.check();

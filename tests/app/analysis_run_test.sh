@@ -9,7 +9,7 @@ rm -rf "$out"
 $mpiexec --oversubscribe -n "$np" "$app" run "$src/scenes/poiseuille_pipe.toml" --out "$out" --quiet > "$out.log"
 for f in probes.csv pressure_drop.csv wall_shear.csv wall_shear_history.csv \
          statistics/mean.xmf statistics/mid_plane.xmf statistics/mid_plane_phases.csv \
-         samples/axis_000000000.csv; do
+         statistics/diameter.csv sections.csv samples/axis_000000000.csv; do
   test -s "$out/$f" || { echo "missing $out/$f"; exit 1; }
 done
 test "$(ls "$out"/samples/cross_section_*.csv | wc -l)" -eq 3
@@ -24,6 +24,14 @@ head -1 "$out/pressure_drop.csv" | grep -q '^time,pipe_upstream,pipe_downstream,
 /usr/bin/python3 - "$out" <<'PY'
 import csv, sys
 d = sys.argv[1]
+# The section flux sums the projected face fluxes: the inlet flow rate to the Poisson
+# tolerance (io/section_flux.hpp), at every step.
+q = [float(r["mid_flux"]) for r in csv.DictReader(open(f"{d}/sections.csv"))][1:]
+assert q and max(abs(x / 2e-6 - 1) for x in q) < 1e-8, q[-1]  # poisson.tolerance 1e-8
+# The diameter's time-averaged axial velocity peaks at the centre (s = 5 mm).
+line = list(csv.DictReader(open(f"{d}/statistics/diameter.csv")))
+centre = max(line, key=lambda r: float(r["mean_w"]))
+assert abs(float(centre["s"]) - 0.005) < 1e-9 and int(centre["samples"]) > 0, centre
 drop = list(csv.DictReader(open(f"{d}/pressure_drop.csv")))[-1]
 wss = list(csv.DictReader(open(f"{d}/wall_shear_history.csv")))[-1]
 mmhg, tau = float(drop["pipe_mmHg"]), float(wss["wall_mean_wss"])
