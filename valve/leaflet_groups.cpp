@@ -34,8 +34,8 @@ std::vector<LeafletGroups> leaflet_groups(const structure::SolidMesh& mesh) {
     require_nodes(l.name);
     require_nodes(l.attachment);
     require_nodes(l.free_edge);
-    require_faces(l.aortic_face);
-    require_faces(l.ventricular_face);
+    for (const auto* set : {&l.attachment, &l.free_edge, &l.aortic_face, &l.ventricular_face})
+      require_faces(*set);
   }
   return out;
 }

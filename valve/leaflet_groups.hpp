@@ -16,8 +16,9 @@ struct LeafletGroups {
 };
 
 // The leaflets of `mesh`, in order 1..n (n = the largest K with a "leafletK" node set).
-// Throws std::invalid_argument naming the mesh's source and the first missing or empty group,
-// or "no leaflets" when there is no "leaflet1".
+// Throws std::invalid_argument naming the mesh's source and the first missing or empty group
+// (node sets "leafletK", "leafletK_attachment", "leafletK_free_edge"; surface sets for all four
+// "leafletK_<set>"), or "no leaflets" when there is no "leaflet1".
 std::vector<LeafletGroups> leaflet_groups(const structure::SolidMesh& mesh);
 
 }  // namespace valsalva::valve

@@ -10,6 +10,7 @@
 #include "io/gmsh_reader.hpp"
 #include "io/solid_gmsh_reader.hpp"
 #include "structure/mesh_generators.hpp"
+#include "valve/leaflet_groups.hpp"
 
 namespace valsalva::valve {
 
@@ -184,22 +185,22 @@ SolidMesh read_valve_leaflets(const std::filesystem::path& file) {
   SolidMesh m = io::read_solid_gmsh(file);
   if (m.order != structure::HexOrder::q2)
     throw io::MeshFileError(
-        fmt::format("{}: valve leaflets must be 27-node (Q2) hexahedra", file.string()));
-  auto need = [&](const std::string& name, bool surface) {
-    const bool ok = surface ? m.surface_sets.count(name) && !m.surface_sets.at(name).empty()
-                            : m.node_sets.count(name) && !m.node_sets.at(name).empty();
-    if (!ok)
-      throw io::MeshFileError(fmt::format(
-          "{}: physical group '{}' is missing or empty (valve leaflet meshes need "
-          "leaflet<i>, leaflet<i>_{{attachment, free_edge, aortic_face, ventricular_face}} for i "
-          "= 1, 2, 3 and the unions; see docs/valve.md)",
-          file.string(), name));
-  };
-  for (int i = 1; i <= 3; ++i) {
-    need(fmt::format("leaflet{}", i), false);
-    for (const char* set : kSets) need(fmt::format("leaflet{}_{}", i, set), true);
+        fmt::format("{}: valve leaflet meshes must be 27-node (Q2) hexahedra", file.string()));
+  const char* need =
+      " (valve leaflet meshes need leaflet<i>, leaflet<i>_{attachment, free_edge, aortic_face, "
+      "ventricular_face} for i = 1, 2, 3 and the unions; see docs/valve.md)";
+  std::size_t leaflets = 0;
+  try {
+    leaflets = leaflet_groups(m).size();  // the per-leaflet groups, one check for both readers
+  } catch (const std::invalid_argument& e) {
+    throw io::MeshFileError(e.what() + std::string(need));
   }
-  for (const char* set : kSets) need(set, true);
+  if (leaflets != 3)
+    throw io::MeshFileError(fmt::format("{}: {} leaflets, not 3{}", file.string(), leaflets, need));
+  for (const char* set : kSets)
+    if (!m.surface_sets.count(set) || m.surface_sets.at(set).empty())
+      throw io::MeshFileError(
+          fmt::format("{}: physical group '{}' is missing or empty{}", file.string(), set, need));
   return m;
 }
 

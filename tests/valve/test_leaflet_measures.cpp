@@ -3,6 +3,8 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <functional>
+#include <string>
 
 #include "structure/mesh_generators.hpp"
 #include "valve/leaflet_groups.hpp"
@@ -14,32 +16,21 @@ using structure::Vec3;
 
 namespace {
 
-// A plate [0, 10] x [0, 4] (mm), thickness t along y' after `map`, as leaflet `k` of `mesh`.
+// A plate [0, 10] x [0, 4] (mm), thickness t along y' after `map`, as leaflet `k` of `mesh`:
+// its own body (structure::append_body) with the leaflet groups as aliases of the block sides.
 void add_plate(structure::SolidMesh& mesh, int k, const std::function<Vec3(const Vec3&)>& map) {
   const double t = 0.15e-3;
   structure::SolidMesh p = structure::structured_block(
       structure::HexOrder::q2, {5, 2, 1},
       [&](const Vec3& s) { return map(Vec3(10e-3 * s[0], 4e-3 * s[1], (s[2] - 0.5) * t)); });
-  const int offset = mesh.num_nodes();
-  const int eoff = mesh.num_elements();
-  if (offset == 0) mesh.order = p.order;
-  mesh.X.conservativeResize(3, offset + p.num_nodes());
-  mesh.X.rightCols(p.num_nodes()) = p.X;
-  for (int n : p.connectivity) mesh.connectivity.push_back(n + offset);
+  for (auto [side, group] : {std::pair{"v0", "attachment"}, std::pair{"v1", "free_edge"},
+                             std::pair{"w1", "aortic_face"}, std::pair{"w0", "ventricular_face"}})
+    structure::alias_sets(p, side, group);
   const std::string name = "leaflet" + std::to_string(k);
-  auto nodes = [&](const std::string& set) {
-    std::vector<int> v;
-    for (int n : p.node_set(set)) v.push_back(n + offset);
-    return v;
-  };
-  std::vector<int> all(p.num_nodes());
-  for (int n = 0; n < p.num_nodes(); ++n) all[n] = n + offset;
-  mesh.node_sets[name] = all;
-  mesh.node_sets[name + "_attachment"] = nodes("v0");
-  mesh.node_sets[name + "_free_edge"] = nodes("v1");
-  for (auto [set, group] : {std::pair{"w1", "_aortic_face"}, std::pair{"w0", "_ventricular_face"}})
-    for (auto f : p.surface_set(set))
-      mesh.surface_sets[name + group].push_back({f.element + eoff, f.face});
+  const int first = mesh.num_nodes();
+  structure::append_body(mesh, p, name + "_");
+  auto& all = mesh.node_sets[name];  // every node of the leaflet
+  for (int n = first; n < mesh.num_nodes(); ++n) all.push_back(n);
 }
 
 structure::ValveFrame frame() {
