@@ -330,9 +330,10 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
   }
   if (rank == 0) {
     fmt::print(
-        "finished: {} steps to t = {:.6g} s, max |div v| {:.3e} 1/s, max Poisson "
-        "iterations {}\n",
-        summary.steps, summary.time, summary.max_divergence, summary.max_poisson_iterations);
+        "finished: {} steps to t = {:.6g} s, max |div v| {:.3e} 1/s (|div v| h / max|v| "
+        "{:.3e}), max Poisson iterations {}\n",
+        summary.steps, summary.time, summary.max_divergence, summary.max_divergence_number,
+        summary.max_poisson_iterations);
     if (outputs.count(fields_name))
       fmt::print("results: {} (open {} in ParaView)\n", run_path.string(),
                  outputs.at(fields_name)->xmf_file().string());

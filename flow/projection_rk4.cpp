@@ -245,9 +245,15 @@ StepReport ProjectionRK4::step(FlowState& state, double dt) {
   state.time += dt;
   flux_velocity_ = state.velocity;
   projection_divergence(state.velocity, div_);
-  double worst = 0;
-  for (int i = 0; i < mesh_.num_owned; ++i) worst = std::max(worst, std::abs(div_[i]));
+  double worst = 0, worst_h = 0, speed = 0;
+  for (int i = 0; i < mesh_.num_owned; ++i) {
+    worst = std::max(worst, std::abs(div_[i]));
+    worst_h = std::max(worst_h, std::abs(div_[i]) * std::cbrt(mesh_.volume[i]));
+    speed = std::max(speed, state.velocity[i].norm());
+  }
   report.max_divergence = mesh_.comm.max(worst);
+  const double max_speed = mesh_.comm.max(speed);
+  report.divergence_number = max_speed > 0 ? mesh_.comm.max(worst_h) / max_speed : 0.0;
   return report;
 }
 

@@ -84,6 +84,10 @@ struct ProjectionOptions {
 struct StepReport {
   PoissonResult poisson;
   double max_divergence = 0;  // max |div v^{n+1}| over owned nodes, 1/s
+  // max |div v^{n+1}| h / max |v^{n+1}| with h = (dual volume)^(1/3) per node: the projection's
+  // divergence error as a fraction of the resolved velocity gradient, comparable between meshes
+  // with graded cells (0 when the flow is at rest).
+  double divergence_number = 0;
 };
 
 // Body-force density f [N/m^3] at owned and ghost nodes (overwritten), evaluated once per RK

@@ -223,7 +223,7 @@ RunSummary RunLoop::run() {
            "poisson_residual,wall_per_step,eta";
     if (boundary_)
       for (int p : boundary_->spec_patches()) csv << ",flux_" << local_.patch_names[p];
-    csv << ",mass_imbalance\n";
+    csv << ",mass_imbalance,div_h_over_u\n";
   }
   const bool fields = out.interval > 0;
   if (fields) write_fields("fields", state_);
@@ -265,6 +265,8 @@ RunSummary RunLoop::run() {
         !bad.empty())
       fail(bad);
     summary.max_divergence = std::max(summary.max_divergence, report.max_divergence);
+    summary.max_divergence_number =
+        std::max(summary.max_divergence_number, report.divergence_number);
     summary.max_poisson_iterations =
         std::max(summary.max_poisson_iterations, report.poisson.iterations);
     // Boundary fluxes (outward, m^3/s) and their sum, the global mass imbalance.
@@ -297,10 +299,10 @@ RunSummary RunLoop::run() {
       if (csv.is_open())
         csv << fmt::format(
                    "{},{:.17g},{:.17g},{:.9g},{:.9g},{:.9g},{:.17g},{},{:.6g},{:.6g},{:.6g}{},{:."
-                   "6e}\n",
+                   "6e},{:.6e}\n",
                    step_, state_.time, dt, cfl, fourier, report.max_divergence, energy,
                    report.poisson.iterations, report.poisson.relative_residual, per_step, eta,
-                   flux_csv, imbalance)
+                   flux_csv, imbalance, report.divergence_number)
             << std::flush;
     }
     if (fields) {

@@ -88,6 +88,11 @@ TEST_CASE("Taylor-Green run: exact-solution error, output times, rank independen
   // Approximate projection (compact Poisson matrix, wide divergence stencil): the divergence
   // left is O(h^2) (h^2 = 0.154), measured 9.5e-4.
   CHECK(summary.max_divergence < 2e-3);
+  // Cubic cells h = 2 pi / 16 and max |u| between 1 (a node sits on the maximum) and its decay
+  // exp(-2 nu t) = 0.99 at t = 0.5: the divergence number is max |div| h / max |u| within 1 %.
+  const double h = 2 * std::numbers::pi / 16;
+  CHECK(summary.max_divergence_number >= summary.max_divergence * h * (1 - 1e-12));
+  CHECK(summary.max_divergence_number <= summary.max_divergence * h / 0.99);
   // Fields at t = 0, 0.2, 0.4 and the end, with the three fields.
   REQUIRE(rec.writes.size() == 4);
   CHECK(rec.writes[1].second == doctest::Approx(0.2).epsilon(1e-14));
