@@ -34,6 +34,22 @@ fs::path report_path(const fs::path& out) {
   return p;
 }
 
+fs::path holes_path(const fs::path& out) {
+  fs::path p = out;
+  p.replace_extension(".orifice.csv");
+  return p;
+}
+
+// The grid cells of the annulus disc no leaflet covers, to draw the holes of a closed valve.
+void write_holes(const fs::path& path, const structure::OrificeArea& orifice) {
+  std::ofstream csv(path);
+  csv << "# uncovered cells of the annulus disc (polar grid " << orifice.rings << " x "
+      << orifice.sectors << "), in the annulus plane's axes\nx_m,y_m,area_m2\n";
+  for (const auto& c : orifice.uncovered)
+    csv << fmt::format("{:.6e},{:.6e},{:.6e}\n", c.centre.x(), c.centre.y(), c.area);
+  if (!csv) throw std::runtime_error("close-leaflets: cannot write " + path.string());
+}
+
 toml::array vec(const structure::Vec3& v) {
   return toml::array{v.x(), v.y(), v.z()};
 }
@@ -139,10 +155,10 @@ int run(const Options& o) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank != 0) return 0;
-  const fs::path out(o.out), report = report_path(out);
+  const fs::path out(o.out), report = report_path(out), holes = holes_path(out);
   if (out.extension() != ".msh")
     throw std::invalid_argument(fmt::format("close-leaflets: --out {}: give a .msh file", o.out));
-  for (const fs::path& p : {out, report})
+  for (const fs::path& p : {out, report, holes})
     if (fs::exists(p) && !o.overwrite)
       throw std::invalid_argument(
           fmt::format("close-leaflets: {} exists (give --overwrite to replace it)", p.string()));
@@ -159,7 +175,9 @@ int run(const Options& o) {
   print_summary(r);
   io::write_moved_solid_gmsh(o.leaflets, r.newton.x, out);
   std::ofstream(report) << report_table(o, r) << "\n";
-  fmt::print("close-leaflets: wrote {} and {}\n", out.string(), report.string());
+  write_holes(holes, r.orifice);
+  fmt::print("close-leaflets: wrote {}, {} and {}\n", out.string(), report.string(),
+             holes.string());
   return 0;
 }
 

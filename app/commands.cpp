@@ -11,6 +11,7 @@
 #include "flow/local_mesh.hpp"
 #include "flow/mesh_check.hpp"
 #include "io/gmsh_reader.hpp"
+#include "io/immersed_coupling.hpp"
 #include "io/mesh_info.hpp"
 #include "io/mesh_source.hpp"
 #include "io/scene.hpp"
@@ -45,14 +46,22 @@ int check_scene(const std::filesystem::path& scene_file) {
   const auto metrics = flow::compute_dual_metrics(mesh);
   io::read_boundary_conditions(scene, mesh);    // every non-periodic patch has a valid condition
   io::read_analysis_options(scene, mesh);       // probes, samples, statistics, wall shear
-  io::read_immersed_setup(scene, mesh);         // structure meshes, materials, clamped sets
+  const auto immersed = io::read_immersed_setup(scene, mesh);  // meshes, materials, clamps
   io::read_valve_monitor_options(scene, mesh);  // [valve]: its structure and patches
   io::check_les_scene(scene);                   // LES output fields
   io::flow_run_options(scene, {});              // time step, output volume
   io::check_initial_state(scene, mesh);         // a Taylor-Green start on a 2 pi L-periodic mesh
+  std::string coupling;
+  if (!immersed.empty()) {  // every marker in the fluid, as the run places them
+    auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
+    const auto c = io::build_immersed_coupling(immersed, local);
+    coupling = fmt::format("; {} immersed markers, coupling time-step bound {:.3e} s",
+                           c.structure->num_markers(), c.dt_bound);
+  }
   if (world_rank() == 0)
-    fmt::print("{}: scene and mesh are valid ({} nodes, {} cells, {} boundary patches)\n",
-               scene_file.string(), metrics.num_nodes(), mesh.num_cells(), mesh.patch_names.size());
+    fmt::print("{}: scene and mesh are valid ({} nodes, {} cells, {} boundary patches{})\n",
+               scene_file.string(), metrics.num_nodes(), mesh.num_cells(), mesh.patch_names.size(),
+               coupling);
   return 0;
 }
 

@@ -66,12 +66,7 @@ void ImmersedStructure::gather(const Eigen::Matrix3Xd& all, Eigen::Matrix3Xd& co
 void ImmersedStructure::locate(const Eigen::Matrix3Xd& x) {
   gather(x, wrapped_);
   if (options_.box)
-    for (int d = 0; d < 3; ++d) {
-      if (!options_.box->periodic[d]) continue;
-      const double o = options_.box->origin[d], L = options_.box->length[d];
-      for (int a = 0; a < wrapped_.cols(); ++a)
-        wrapped_(d, a) = o + (wrapped_(d, a) - o) - L * std::floor((wrapped_(d, a) - o) / L);
-    }
+    for (int a = 0; a < wrapped_.cols(); ++a) wrapped_.col(a) = wrap_into(*options_.box, wrapped_.col(a));
   transfer_.locate(as_points(wrapped_));
 }
 

@@ -21,6 +21,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -41,6 +42,14 @@ struct PeriodicBox {
   Eigen::Vector3d length = Eigen::Vector3d::Ones();
   std::array<bool, 3> periodic{false, false, false};
 };
+
+// x moved by whole periods into [origin, origin + length) along the periodic directions.
+inline Eigen::Vector3d wrap_into(const PeriodicBox& box, Eigen::Vector3d x) {
+  for (int d = 0; d < 3; ++d)
+    if (box.periodic[d])
+      x[d] -= box.length[d] * std::floor((x[d] - box.origin[d]) / box.length[d]);
+  return x;
+}
 
 struct ImmersedOptions {
   TransferOptions transfer;

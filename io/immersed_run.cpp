@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "io/immersed_coupling.hpp"
 #include "structure/stress_recovery.hpp"
 
 namespace valsalva::io {
@@ -14,18 +15,9 @@ namespace fs = std::filesystem;
 ImmersedRun::ImmersedRun(ImmersedSetup setup, flow::LocalMesh& local, const fs::path& run_dir,
                          bool in_place, std::int64_t start_step)
     : setup_(std::move(setup)), local_(local), root_(local.comm.rank() == 0) {
-  ib_ = std::make_unique<ibm::ImmersedStructure>(local_, setup_.options);
-  for (auto& s : setup_.structures) ib_->add_body(s.mesh, *s.material, s.body);
-  try {
-    dt_bound_ = setup_.dt_safety * ib_->stable_time_step();
-  } catch (const std::exception& e) {
-    std::string ranges;
-    for (int b = 0; b < ib_->num_bodies(); ++b)
-      ranges +=
-          fmt::format("{}'{}' markers {}..{}", b ? ", " : "", ib_->body(b).spec().name,
-                      ib_->first_marker(b), ib_->first_marker(b) + ib_->body(b).num_nodes() - 1);
-    throw std::runtime_error(fmt::format("immersed structures ({}): {}", ranges, e.what()));
-  }
+  auto coupling = build_immersed_coupling(setup_, local_);
+  ib_ = std::move(coupling.structure);
+  dt_bound_ = coupling.dt_bound;
   if (root_) {
     for (const auto& s : setup_.structures) {
       const std::string base =

@@ -78,7 +78,7 @@ class PolarRaster {
     }
   }
 
-  void finish(OrificeArea& out) const {
+  void finish(OrificeArea& out, bool list_uncovered) const {
     auto cell_area = [&](int i) { return 0.5 * h_ * h_ * (2 * i + 1) * dth_; };
     std::vector<unsigned char> outline(covered_.size(), 0);
     auto at = [&](int i, int j) { return std::size_t(i) * ns_ + j; };
@@ -92,7 +92,13 @@ class PolarRaster {
     double open = 0, edge = 0;
     for (int i = 0; i < nr_; ++i) {
       long n_open = 0, n_edge = 0;
-      for (int j = 0; j < ns_; ++j) n_open += !covered_[at(i, j)], n_edge += outline[at(i, j)];
+      for (int j = 0; j < ns_; ++j) {
+        n_open += !covered_[at(i, j)], n_edge += outline[at(i, j)];
+        if (list_uncovered && !covered_[at(i, j)]) {
+          const double r = (i + 0.5) * h_;
+          out.uncovered.push_back({Vec2(r * cos_[j], r * sin_[j]), cell_area(i)});
+        }
+      }
       open += double(n_open) * cell_area(i);
       edge += double(n_edge) * cell_area(i);
     }
@@ -188,7 +194,7 @@ OrificeArea geometric_orifice_area(std::span<const LeafletPositions> leaflets,
         }
     }
   }
-  raster.finish(out);
+  raster.finish(out, o.list_uncovered);
   out.disc_area = M_PI * R * R;
   out.opening_ratio = out.area / out.disc_area;
   out.rings = o.rings;

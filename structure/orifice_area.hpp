@@ -24,6 +24,7 @@
 
 #include <Eigen/Core>
 #include <span>
+#include <vector>
 
 #include "structure/solid_mesh.hpp"
 #include "structure/valve_frame.hpp"
@@ -41,6 +42,14 @@ struct OrificeOptions {
   int rings = 512;           // radial cells of the polar grid
   int sectors = 0;           // angular cells; 0: the integer nearest 2 pi rings (square at rim)
   int face_subdivision = 4;  // n: each boundary face cut into n x n quadrilaterals
+  bool list_uncovered = false;  // fill OrificeArea::uncovered (to draw where the holes are)
+};
+
+// One grid cell no leaflet covers: its centre in the annulus plane's own axes (valve_basis) [m]
+// and its area [m^2].
+struct UncoveredCell {
+  Eigen::Vector2d centre;
+  double area = 0;
 };
 
 struct OrificeArea {
@@ -50,6 +59,7 @@ struct OrificeArea {
   double raster_error = 0;   // estimate of the rasterisation error of `area` [m^2], see above
   int rings = 0, sectors = 0;
   long triangles = 0;  // projected triangles
+  std::vector<UncoveredCell> uncovered;  // only with OrificeOptions::list_uncovered
 };
 
 // Throws std::invalid_argument for a bad valve frame (see valve_basis), no leaflets, a null or

@@ -140,7 +140,9 @@ ClosingResult close_leaflets(const structure::SolidMesh& mesh, const structure::
   }
   r.pairs = leaflet_pairs(mesh, x, r.leaflets, valve, 1.5 * r.thickness);
   const structure::LeafletPositions all{&mesh, &x};
-  r.orifice = structure::geometric_orifice_area({&all, 1}, valve);
+  structure::OrificeOptions orifice_options;
+  orifice_options.list_uncovered = true;  // close-leaflets draws where the holes are
+  r.orifice = structure::geometric_orifice_area({&all, 1}, valve, orifice_options);
   r.stress = structure::von_mises_summary(forces, x, 99);
   r.max_stress_position = x.col(r.stress.max_node);
   for (std::size_t k = 0; k < r.leaflets.size(); ++k) {

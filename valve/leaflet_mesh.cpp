@@ -56,7 +56,8 @@ SolidMesh scalloped_leaflet(const LeafletPatch& p) {
         const double q = 2 * s[0] - 1, th = p.centre_angle + 0.5 * q * p.span;
         const double za = p.z_base + (p.z_free - p.side_attachment - p.z_base) * q * q;
         const double r = p.radius + (s[2] - 0.5) * p.thickness;
-        return Vec3(r * std::cos(th), r * std::sin(th), za + s[1] * (p.z_free - za));
+        const double top = p.z_free + p.free_edge_rise * (1 - q * q);
+        return Vec3(r * std::cos(th), r * std::sin(th), za + s[1] * (top - za));
       });
   m.source = fmt::format("<scalloped leaflet R={} t={} z={}..{} side={}>", p.radius, p.thickness,
                          p.z_base, p.z_free, p.side_attachment);
@@ -97,6 +98,7 @@ SolidMesh valve_leaflets(const ValveGeometry& g) {
     p.z_base = g.ring_height;
     p.z_free = g.free_edge_z();
     p.side_attachment = g.commissure_attachment;
+    p.free_edge_rise = g.free_edge_rise;
     p.n_angle = n_angle;
     p.n_height = n_height;
     const SolidMesh m = scalloped_leaflet(p);

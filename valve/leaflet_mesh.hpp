@@ -25,6 +25,7 @@ struct LeafletPatch {
   double z_base = 0;              // lowest attachment point [m]
   double z_free = 10e-3;          // free edge [m]
   double side_attachment = 2e-3;  // [m]
+  double free_edge_rise = 0;      // free edge z_free + rise (1 - q^2), q in [-1, 1] across [m]
   int n_angle = 16, n_height = 8;
 };
 

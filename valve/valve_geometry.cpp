@@ -87,6 +87,9 @@ const std::vector<ValveKey>& valve_keys() {
       {"commissure_attachment", "m",
        "length of each leaflet side attached to a post, below the free edge",
        &G::commissure_attachment},
+      {"free_edge_rise", "m",
+       "height of the free edge at the leaflet centre above its ends at the posts (parabolic)",
+       &G::free_edge_rise},
       {"sinus_height", "m", "height of the sino-tubular junction above the annulus plane",
        &G::sinus_height},
       {"sinus_depth", "m", "largest outward bulge of a sinus lobe (behind a leaflet centre)",
@@ -147,8 +150,10 @@ void validate(const ValveGeometry& g) {
   for (const auto& k : valve_keys()) {
     const double v = g.*k.field;
     require(std::isfinite(v), k.name, v, "it must be a finite number");
-    if (k.name != "first_commissure_deg") require(v > 0, k.name, v, "it must be positive");
+    if (k.name != "first_commissure_deg" && k.name != "free_edge_rise")
+      require(v > 0, k.name, v, "it must be positive");
   }
+  require(g.free_edge_rise >= 0, "free_edge_rise", g.free_edge_rise, "it must not be negative");
   const double R = g.root_radius();
   require(g.frame_thickness < R, "frame_thickness", g.frame_thickness,
           fmt::format("the frame must be thinner than the root radius {:g} m", R));

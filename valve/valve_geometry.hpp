@@ -50,6 +50,7 @@ struct ValveGeometry {
   double leaflet_thickness = 0.15e-3;
   double leaflet_height = 12e-3;
   double commissure_attachment = 2e-3;
+  double free_edge_rise = 0;
   double sinus_height = 18e-3;
   double sinus_depth = 4.5e-3;
   double stj_diameter = 28e-3;

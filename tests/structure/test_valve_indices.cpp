@@ -103,6 +103,31 @@ TEST_CASE("orifice area: three flat plates leave their three 20-degree gaps open
   CHECK(a4.area == a3.area);
 }
 
+TEST_CASE("orifice area: the uncovered cells listed are the gaps, and sum to the area") {
+  OrificeOptions o;
+  o.rings = 128;
+  o.list_uncovered = true;
+  const OrificeArea a = area_of(three_plates(), z_valve(), o);
+  REQUIRE(!a.uncovered.empty());
+  double sum = 0;
+  int outside_gaps = 0;
+  for (const UncoveredCell& c : a.uncovered) {
+    sum += c.area;
+    // The gaps are the sectors [107.3, 127.3] + 120 k deg; a cell centre more than one cell
+    // (R / rings radially, 2 pi r / sectors around) away from them would be misclassified.
+    const double deg = std::atan2(c.centre.y(), c.centre.x()) * 180 / M_PI;
+    const double into_gap = std::remainder(deg - 117.3, 120.0);  // 0 at a gap's centre
+    const double r = c.centre.norm(), slack_deg = 180 / M_PI * (R / o.rings) / r + 360.0 / a.sectors;
+    if (std::abs(into_gap) > 10 + slack_deg) ++outside_gaps;
+    CHECK(r <= R);
+  }
+  CHECK(outside_gaps == 0);
+  CHECK(std::abs(sum - a.area) <= 1e-12 * a.disc_area);
+  OrificeOptions quiet = o;
+  quiet.list_uncovered = false;
+  CHECK(area_of(three_plates(), z_valve(), quiet).uncovered.empty());
+}
+
 TEST_CASE("orifice area: a disc with a concentric hole of radius r leaves pi r^2") {
   // Annulus r <= rho <= 1.5 R of 64 Q2 elements around, faces cut 8 x 8: the hole is a polygon of
   // 512 chords on the Q2 arc; chord deficit (2 pi / 512)^2 / 6 = 2.5e-5 and Q2 arc error

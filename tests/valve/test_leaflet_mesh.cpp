@@ -92,6 +92,34 @@ TEST_CASE("valve leaflets: sets, attachment on the frame, volume") {
   CHECK(solid_volume(m) == doctest::Approx(exact).epsilon(1e-5));
 }
 
+TEST_CASE("valve leaflets: a free-edge rise lifts the free edge's middle, not its ends") {
+  valve::ValveGeometry g;
+  g.free_edge_rise = 3e-3;
+  valve::validate(g);
+  const structure::SolidMesh m = valve::valve_leaflets(g);
+  // z = z_free + rise (1 - q^2), q the position across the leaflet in [-1, 1] (q = 0 at the
+  // leaflet centre, +-1 at the posts): nodes on the free edge follow the parabola exactly.
+  double highest = 0, lowest = INFINITY;
+  for (int n : m.node_set("free_edge")) {
+    const double th = std::atan2(m.X(1, n), m.X(0, n));
+    double q = INFINITY;
+    for (int k = 0; k < 3; ++k)
+      q = std::min(q, std::abs(std::remainder(th - g.leaflet_centre_angle(k), 2 * M_PI)));
+    q /= g.leaflet_span() / 2;
+    CHECK(m.X(2, n) == doctest::Approx(g.free_edge_z() + g.free_edge_rise * (1 - q * q)));
+    highest = std::max(highest, m.X(2, n)), lowest = std::min(lowest, m.X(2, n));
+  }
+  CHECK(highest == doctest::Approx(g.free_edge_z() + g.free_edge_rise));
+  CHECK(lowest == doctest::Approx(g.free_edge_z()));
+  // The attachment does not move: the same nodes on the scallop and on the posts.
+  const valve::ValveGeometry flat;
+  const structure::SolidMesh m0 = valve::valve_leaflets(flat);
+  for (int n : m.node_set("attachment")) CHECK((m.X.col(n) - m0.X.col(n)).norm() < 1e-15);
+  g.free_edge_rise = -1e-3;
+  CHECK_THROWS_WITH_AS(valve::validate(g), doctest::Contains("free_edge_rise"),
+                       std::invalid_argument);
+}
+
 TEST_CASE("leaflets.msh: written through the Gmsh API, read back by read_solid_gmsh") {
   const std::filesystem::path dir = "test_output/valve_leaflets";
   std::filesystem::create_directories(dir);
