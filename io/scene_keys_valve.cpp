@@ -4,8 +4,10 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "io/scene_keys.hpp"
+#include "io/scene_keys_boundary.hpp"
 
 namespace valsalva::io {
 
@@ -121,6 +123,20 @@ std::optional<ValveMonitorOptions> read_valve_monitor_options(const Scene& scene
   o.inlet_patch = scene.get<std::string>("valve.inlet_patch");
   o.outlet_patch = scene.get<std::string>("valve.outlet_patch");
   o.period = scene.get<double>("valve.period");
+  // Cycles of valve_cycles.csv are periods of the inlet's waveform: a different period would cut
+  // every cycle at another phase.
+  for (const auto& b : read_boundary_conditions(scene, mesh)) {
+    const auto& w = b.flow_rate;
+    if (b.patch != o.inlet_patch || b.type != flow::BoundaryType::inlet ||
+        w.kind == flow::Waveform::Kind::constant)
+      continue;
+    if (std::abs(w.period - o.period) > 1e-9 * o.period)
+      throw scene.error("valve.period",
+                        fmt::format("{:g} s differs from the period {:g} s of the waveform of "
+                                    "boundary.{}",
+                                    o.period, w.period, b.patch),
+                        fmt::format("{:g}", w.period));
+  }
   o.start_time = scene.get<double>("valve.start_time");
   o.open_fraction = scene.get<double>("valve.open_fraction");
   o.every_steps = scene.get<int>("valve.every_steps");

@@ -6,7 +6,8 @@
 #     (the immersed leaflets move no fluid volume; the residual is the Poisson tolerance's);
 #   the inlet carries the table: |inlet flow - Q(t)| <= 1e-9 of the peak (linear interpolation
 #     of scenes/data/valve_flow_rate.csv, as the solver does);
-#   every sample has a finite TPG, orifice area and stress.
+#   every sample has a finite TPG, orifice area and stress;
+#   `check` refuses a [valve] period other than the waveform's and accepts the scene.
 set -eu
 app=$1
 src=$2
@@ -20,6 +21,14 @@ cp "$src/scenes/data/valve_flow_rate.csv" "$dir/scenes/data/"
 sed 's/^end = 1.0$/end = 0.13/' "$src/scenes/valve_quick.toml" > "$dir/scenes/valve_quick.toml"
 grep -q "^end = 0.13$" "$dir/scenes/valve_quick.toml" || { echo "scene has no 'end = 1.0'"; exit 1; }
 if [ -n "$mpi" ]; then run="$mpi -n $np $app"; else run="$app"; fi
+# A [valve] period other than the inlet waveform's is refused by check, naming both periods.
+sed 's/^\[valve\]$/[valve]\nperiod = 0.8/' "$dir/scenes/valve_quick.toml" > "$dir/scenes/bad_period.toml"
+if out=$("$app" check "$dir/scenes/bad_period.toml" 2>&1); then
+  echo "check accepted valve.period = 0.8 against a 1 s waveform"; exit 1
+fi
+echo "$out" | grep -q "key 'valve.period': 0.8 s differs from the period 1 s of the waveform of boundary.inlet" ||
+  { echo "unexpected refusal: $out"; exit 1; }
+"$app" check "$dir/scenes/valve_quick.toml"
 $run run "$dir/scenes/valve_quick.toml" --quiet --out "$dir/run"
 csv="$dir/run/valve.csv"
 [ "$(wc -l < "$csv")" -gt 50 ] || { echo "valve.csv has too few rows"; exit 1; }
