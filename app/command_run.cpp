@@ -121,6 +121,7 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
   io::check_les_scene(scene);
   io::flow_run_options(scene, dir);  // its checks (time step, output volume), before any write
   io::check_initial_state(scene, mesh);
+  io::check_step_count(scene, metrics);
   const fs::path run_path =
       in_place ? dir : io::RunDirectory::prepare(dir, wipe, scene, MPI_COMM_WORLD).path();
 

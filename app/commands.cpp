@@ -50,6 +50,7 @@ int check_scene(const std::filesystem::path& scene_file) {
   io::check_les_scene(scene);                   // LES output fields
   io::flow_run_options(scene, {});              // time step, output volume
   io::check_initial_state(scene, mesh);         // a Taylor-Green start on a 2 pi L-periodic mesh
+  io::check_step_count(scene, metrics);         // the viscous bound on dt against time.end
   if (world_rank() == 0)
     fmt::print("{}: scene and mesh are valid ({} nodes, {} cells, {} boundary patches)\n",
                scene_file.string(), metrics.num_nodes(), mesh.num_cells(), mesh.patch_names.size());
