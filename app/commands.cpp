@@ -1,4 +1,5 @@
 #include "app/commands.hpp"
+#include "app/phase.hpp"
 
 #include <fmt/format.h>
 #include <mpi.h>
@@ -40,9 +41,14 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 int check_scene(const std::filesystem::path& scene_file) {
+  Phase phase("reading the scene " + scene_file.string());
   const auto scene = io::load_scene(scene_file);
+  phase.next(mesh_phase(scene));
   const auto mesh = io::build_mesh(scene);
+  phase.next(fmt::format("computing the dual metrics of the mesh ({} nodes, {} cells)",
+                         mesh.num_nodes(), mesh.num_cells()));
   const auto metrics = flow::compute_dual_metrics(mesh);
+  phase.next("checking the scene against the mesh");
   io::read_boundary_conditions(scene, mesh);    // every non-periodic patch has a valid condition
   io::read_analysis_options(scene, mesh);       // probes, samples, statistics, wall shear
   io::read_immersed_setup(scene, mesh);         // structure meshes, materials, clamped sets
@@ -61,7 +67,10 @@ int mesh_info(const std::filesystem::path& mesh_file, double scale) {
   if (!(scale > 0) || !std::isfinite(scale))
     throw std::invalid_argument(fmt::format(
         "mesh-info: --scale {} must be a positive finite factor (e.g. 0.001 for mm)", scale));
+  Phase phase("reading the mesh " + mesh_file.string());
   auto mesh = io::read_gmsh(mesh_file);
+  phase.next(fmt::format("checking the mesh ({} nodes, {} cells)", mesh.num_nodes(),
+                         mesh.num_cells()));
   for (auto& x : mesh.nodes) x *= scale;
   flow::check_mesh(mesh);
   if (const auto pieces = io::disconnected_pieces(mesh); !pieces.empty())

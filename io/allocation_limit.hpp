@@ -1,0 +1,20 @@
+// Allocations sized from input (a mesh header's node count, statistics bins) checked before they
+// are made: beyond the machine's physical memory they can only end in a bare std::bad_alloc or
+// the kernel's OOM killer, neither of which names the input that asked for them.
+#pragma once
+
+#include <string>
+
+namespace valsalva::io {
+
+// Physical memory of this machine, bytes (sysconf).
+double physical_memory_bytes();
+
+// "12.3 GB", "456 MB", "789 bytes".
+std::string byte_size(double bytes);
+
+// Throws std::runtime_error "<what>: <count> x <bytes_each> bytes = <total>, more than this
+// machine's <physical> physical memory" when count * bytes_each exceeds physical memory.
+void check_allocation(const std::string& what, double count, double bytes_each);
+
+}  // namespace valsalva::io
