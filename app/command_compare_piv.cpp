@@ -9,16 +9,15 @@
 #include <fmt/format.h>
 #include <mpi.h>
 
-#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
 
 #include "io/hdf5_file.hpp"
+#include "io/numeric_table.hpp"
 #include "io/piv_compare.hpp"
 #include "io/probes.hpp"
 #include "io/xdmf_writer.hpp"
@@ -88,27 +87,9 @@ flow::Mesh read_xdmf_mesh(const fs::path& file) {
   return mesh;
 }
 
-// bin -> phase time from <name>_phases.csv.
+// bin -> phase time from <name>_phases.csv (bin,phase_time,samples,cycles), strictly read.
 std::vector<double> read_phase_times(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error(fmt::format("compare-piv: cannot open '{}'", file.string()));
-  std::vector<double> t;
-  std::string line;
-  std::getline(in, line);
-  for (int number = 2; std::getline(in, line); ++number) {
-    const auto comma = line.find(',');
-    const auto end = comma == std::string::npos ? comma : line.find(',', comma + 1);
-    const std::string time =
-        comma == std::string::npos ? "" : line.substr(comma + 1, end - comma - 1);
-    double value = 0;
-    const auto r = std::from_chars(time.data(), time.data() + time.size(), value);
-    if (r.ec != std::errc() || r.ptr != time.data() + time.size() || !std::isfinite(value))
-      throw std::runtime_error(fmt::format(
-          "compare-piv: '{}':{}: expected 'bin,phase_time,...' with a finite time, got '{}'",
-          file.string(), number, line));
-    t.push_back(value);
-  }
-  return t;
+  return io::read_numeric_table(file, io::TableHeader::required).column("phase_time");
 }
 
 // One bin's statistics, each field checked against the mesh's node count before it is used

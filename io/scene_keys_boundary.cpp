@@ -9,6 +9,7 @@
 #include <set>
 
 #include "io/numeric_table.hpp"
+#include "io/waveform_table.hpp"
 #include "io/patch_shape.hpp"
 #include "io/scene_keys.hpp"
 
@@ -149,12 +150,7 @@ std::vector<flow::BoundarySpec> read_boundary_conditions(const Scene& scene,
       auto& q = spec.flow_rate;
       if (waveform == "table") {
         try {
-          q = flow::read_waveform_csv(scene.path(key + ".file"));
-          // The strict reader too: flow's takes any first line that does not parse for a
-          // header, which drops a first data row with a typo.
-          read_numeric_table(scene.path(key + ".file"), TableHeader::optional, 2, true);
-        } catch (const flow::WaveformError& e) {
-          throw scene.error(key + ".file", e.what());
+          q = read_waveform_table(scene.path(key + ".file"));
         } catch (const TableError& e) {
           throw scene.error(key + ".file", e.what());
         }
