@@ -137,9 +137,10 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
   phase.next(fmt::format("partitioning the mesh ({} dual nodes, partition.method = {})",
                          metrics.num_nodes(), options.method));
   auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, options);
-  phase.next(fmt::format("setting up the LES model, the analysis and the structures ({} local "
-                         "nodes)",
-                         local.num_local()));
+  phase.next(
+      fmt::format("setting up the LES model, the analysis and the structures ({} local "
+                  "nodes)",
+                  local.num_local()));
 
   auto run_options = io::flow_run_options(scene, run_path);
   const auto les = io::les_setup(scene, local);  // nu_sgs/nu joins the fields with a model

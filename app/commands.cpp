@@ -1,5 +1,4 @@
 #include "app/commands.hpp"
-#include "app/phase.hpp"
 
 #include <fmt/format.h>
 #include <mpi.h>
@@ -8,6 +7,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "app/phase.hpp"
 #include "flow/dual_metrics.hpp"
 #include "flow/local_mesh.hpp"
 #include "flow/mesh_check.hpp"
@@ -69,8 +69,8 @@ int mesh_info(const std::filesystem::path& mesh_file, double scale) {
         "mesh-info: --scale {} must be a positive finite factor (e.g. 0.001 for mm)", scale));
   Phase phase("reading the mesh " + mesh_file.string());
   auto mesh = io::read_gmsh(mesh_file);
-  phase.next(fmt::format("checking the mesh ({} nodes, {} cells)", mesh.num_nodes(),
-                         mesh.num_cells()));
+  phase.next(
+      fmt::format("checking the mesh ({} nodes, {} cells)", mesh.num_nodes(), mesh.num_cells()));
   for (auto& x : mesh.nodes) x *= scale;
   flow::check_mesh(mesh);
   if (const auto pieces = io::disconnected_pieces(mesh); !pieces.empty())

@@ -20,9 +20,13 @@ Phase::~Phase() {
   current_phase = std::move(previous_);
 }
 
-void Phase::next(std::string what) { current_phase = std::move(what); }
+void Phase::next(std::string what) {
+  current_phase = std::move(what);
+}
 
-const std::string& Phase::current() { return current_phase; }
+const std::string& Phase::current() {
+  return current_phase;
+}
 
 std::string mesh_phase(const io::Scene& scene) {
   const auto source = scene.get<std::string>("mesh.source");

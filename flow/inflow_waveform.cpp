@@ -36,8 +36,8 @@ Waveform table_waveform(std::vector<double> t, std::vector<double> q) {
                                     std::min(t.size(), q.size())));
   for (std::size_t k = 1; k < t.size(); ++k)
     if (!(t[k] > t[k - 1]))
-      throw WaveformError(fmt::format("row {}: time {} is not after the previous row's {}", k + 1,
-                                      t[k], t[k - 1]));
+      throw WaveformError(
+          fmt::format("row {}: time {} is not after the previous row's {}", k + 1, t[k], t[k - 1]));
   Waveform w;
   w.kind = Waveform::Kind::table;
   w.t = std::move(t);

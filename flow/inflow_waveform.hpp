@@ -1,8 +1,8 @@
 // Flow-rate waveforms Q(t) of velocity inlets, m^3/s: a constant, a sine
 //   Q(t) = mean + amplitude sin(2 pi t / period + phase),
-// or a table of (t, Q) rows (from a CSV file, io/waveform_table.hpp), linearly interpolated and repeated with the period
-// t_last - t_first (the table covers one cycle; its last row should repeat the first Q, else Q
-// jumps at the wrap).
+// or a table of (t, Q) rows (from a CSV file, io/waveform_table.hpp), linearly interpolated and
+// repeated with the period t_last - t_first (the table covers one cycle; its last row should
+// repeat the first Q, else Q jumps at the wrap).
 #pragma once
 
 #include <stdexcept>

@@ -17,12 +17,16 @@ std::string byte_size(double bytes) {
   return fmt::format("{:.0f} bytes", bytes);
 }
 
-void check_allocation(const std::string& what, double count, double bytes_each) {
+std::string allocation_problem(const std::string& what, double count, double bytes_each) {
   const double total = count * bytes_each, physical = physical_memory_bytes();
-  if (total > physical)
-    throw std::runtime_error(fmt::format(
-        "{}: {:.4g} x {:g} bytes = {}, more than this machine's {} of physical memory", what,
-        count, bytes_each, byte_size(total), byte_size(physical)));
+  if (!(total > physical)) return "";
+  return fmt::format("{}: {:.4g} x {:g} bytes = {}, more than this machine's {} of physical memory",
+                     what, count, bytes_each, byte_size(total), byte_size(physical));
+}
+
+void check_allocation(const std::string& what, double count, double bytes_each) {
+  if (auto problem = allocation_problem(what, count, bytes_each); !problem.empty())
+    throw std::runtime_error(problem);
 }
 
 }  // namespace valsalva::io

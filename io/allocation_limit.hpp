@@ -13,8 +13,10 @@ double physical_memory_bytes();
 // "12.3 GB", "456 MB", "789 bytes".
 std::string byte_size(double bytes);
 
-// Throws std::runtime_error "<what>: <count> x <bytes_each> bytes = <total>, more than this
-// machine's <physical> physical memory" when count * bytes_each exceeds physical memory.
+// "<what>: <count> x <bytes_each> bytes = <total>, more than this machine's <physical> of
+// physical memory" when count * bytes_each exceeds physical memory, else "".
+std::string allocation_problem(const std::string& what, double count, double bytes_each);
+// Throws std::runtime_error with allocation_problem's text when there is one.
 void check_allocation(const std::string& what, double count, double bytes_each);
 
 }  // namespace valsalva::io

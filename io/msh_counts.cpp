@@ -65,8 +65,8 @@ void check_msh_counts(const std::filesystem::path& path) {
             "{}:{}: the {} header declares {:.4g} {}, but the file's {} hold at most {:.0f} "
             "({:g} bytes each at least): a corrupt header, not read (Gmsh would allocate for "
             "all of them)",
-            path.string(), number, s.marker, count, s.what, byte_size(size), std::floor(size / least),
-            least));
+            path.string(), number, s.marker, count, s.what, byte_size(size),
+            std::floor(size / least), least));
     }
   }
 }

@@ -32,7 +32,9 @@ bool parse(const std::string& s, double& x) {
   return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(x);
 }
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+bool is_blank(char c) {
+  return c == ' ' || c == '\t' || c == '\r';
+}
 
 }  // namespace
 
@@ -97,8 +99,8 @@ TableError TableLines::error(int column, const std::string& what) const {
 }
 
 bool TableLines::all_names(const std::vector<TableField>& fields) {
-  return !fields.empty() &&
-         std::all_of(fields.begin(), fields.end(), [](const TableField& f) { return is_name(f.text); });
+  return !fields.empty() && std::all_of(fields.begin(), fields.end(),
+                                        [](const TableField& f) { return is_name(f.text); });
 }
 
 std::vector<std::string> TableLines::header(const std::vector<TableField>& fields) const {

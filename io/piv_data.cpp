@@ -55,15 +55,16 @@ std::array<int, num_columns> map_columns(const TableLines& lines,
     const std::string n = lower(fields[i].text);
     int c = known_column(n);
     if (c < 0 && allow_frame && (n == "phase" || n == "time")) {
-      if (at[col_frame] >= 0) throw lines.error(fields[i].column, "both 'phase' and 'time' columns");
+      if (at[col_frame] >= 0)
+        throw lines.error(fields[i].column, "both 'phase' and 'time' columns");
       c = col_frame;
       frame_key = n;
     }
     if (c < 0)
-      throw lines.error(fields[i].column,
-                        fmt::format("unknown {} '{}' (known: {}{})",
-                                    allow_frame ? "column" : "variable", fields[i].text,
-                                    known_list, allow_frame ? ", phase, time" : ""));
+      throw lines.error(
+          fields[i].column,
+          fmt::format("unknown {} '{}' (known: {}{})", allow_frame ? "column" : "variable",
+                      fields[i].text, known_list, allow_frame ? ", phase, time" : ""));
     at[c] = static_cast<int>(i);
   }
   for (int c : {col_x, col_y, col_u, col_v})
@@ -159,8 +160,8 @@ PivData read_piv_tecplot(const std::filesystem::path& path) {
     if (fields.empty()) throw lines.error(1, "separators only, no values");
     const std::string& first = fields.front().text;
     const std::string head = lower(first.substr(0, first.find('=')));
-    const bool key_value = std::isalpha(static_cast<unsigned char>(first[0])) &&
-                           first.find('=') != std::string::npos;
+    const bool key_value =
+        std::isalpha(static_cast<unsigned char>(first[0])) && first.find('=') != std::string::npos;
     if (head == "title") continue;
     if (head == "variables") {
       if (!names.empty()) throw lines.error(1, "a second VARIABLES line");
@@ -207,8 +208,8 @@ PivData read_piv_tecplot(const std::filesystem::path& path) {
           data.frame_key = "time";
         } else if (key == "f" || key == "datapacking") {
           if (lower(value.text) != "point")
-            throw lines.error(value.column, fmt::format("{}={} is not supported (only POINT)", key,
-                                                        value.text));
+            throw lines.error(value.column,
+                              fmt::format("{}={} is not supported (only POINT)", key, value.text));
         } else if (key == "zonetype") {
           if (lower(value.text) != "ordered")
             throw lines.error(value.column, fmt::format("ZONETYPE={} is not supported (only "
@@ -234,9 +235,11 @@ PivData read_piv_tecplot(const std::filesystem::path& path) {
     add_point(lines, fields, at, lines.values(fields, names, names.size()), f);
   }
   if (names.empty())
-    throw TableError(fmt::format("'{}': {}", data.source, any_line ? "no VARIABLES line" : "empty"));
+    throw TableError(
+        fmt::format("'{}': {}", data.source, any_line ? "no VARIABLES line" : "empty"));
   if (data.frames.empty()) throw lines.error(1, "no ZONE");
-  if (in_zone_header) throw zone_error(fmt::format("zone '{}' has no data", data.frames.back().label));
+  if (in_zone_header)
+    throw zone_error(fmt::format("zone '{}' has no data", data.frames.back().label));
   close_zone();
   return data;
 }

@@ -9,9 +9,9 @@
 #include <set>
 
 #include "io/numeric_table.hpp"
-#include "io/waveform_table.hpp"
 #include "io/patch_shape.hpp"
 #include "io/scene_keys.hpp"
+#include "io/waveform_table.hpp"
 
 namespace valsalva::io {
 

@@ -282,11 +282,11 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
                     out.interval, end / out.interval, end),
         fmt::format(">= time.end / {:g} = {:g} s", max_field_outputs, end / max_field_outputs));
   if (const double steps = refused_step_count(o.time, o.time.dt); steps > 0)
-    throw scene.error("time.dt",
-                      fmt::format("{:g} s takes {:.3g} steps to time.end = {:g} s", o.time.dt,
-                                  steps, end),
-                      fmt::format(">= time.end / {:g} = {:g} s, or set time.max_steps",
-                                  max_time_steps, end / max_time_steps));
+    throw scene.error(
+        "time.dt",
+        fmt::format("{:g} s takes {:.3g} steps to time.end = {:g} s", o.time.dt, steps, end),
+        fmt::format(">= time.end / {:g} = {:g} s, or set time.max_steps", max_time_steps,
+                    end / max_time_steps));
   const auto fields = scene.get<std::vector<std::string>>("output.fields");
   auto wants = [&](const char* f) {
     return std::find(fields.begin(), fields.end(), f) != fields.end();
@@ -314,8 +314,8 @@ void check_step_count(const Scene& scene, const flow::DualMetrics& metrics) {
   if (steps == 0) return;
   // The message points at the key that departs further from the reference fluid towards a
   // large nu.
-  const char* key = default_density / rho >= mu / default_viscosity ? "flow.density"
-                                                                     : "flow.viscosity";
+  const char* key =
+      default_density / rho >= mu / default_viscosity ? "flow.density" : "flow.viscosity";
   throw scene.error(
       key,
       fmt::format("flow.viscosity / flow.density = {:g} Pa s / {:g} kg/m3 gives nu = {:.3g} m2/s: "
@@ -325,8 +325,7 @@ void check_step_count(const Scene& scene, const flow::DualMetrics& metrics) {
                   mu, rho, nu, fourier, h, dt, steps, t.end, max_time_steps),
       fmt::format("nu <= time.fourier h^2 {:g} / time.end = {:.3g} m2/s (flow.density >= {:.3g} "
                   "kg/m3 with this viscosity), or set time.max_steps",
-                  max_time_steps,
-                  fourier * h * h * max_time_steps / t.end,
+                  max_time_steps, fourier * h * h * max_time_steps / t.end,
                   mu * t.end / (fourier * h * h * max_time_steps)));
 }
 

@@ -24,12 +24,10 @@ TEST_CASE("waveform table: header, separators, errors naming file, line and colu
   const auto bad = dir / (stem + "_bad.csv");
   std::ofstream(bad) << "t,Q\n0.0,1.0\n0.5\n";
   CHECK_THROWS_WITH_AS(io::read_waveform_table(bad),
-                       doctest::Contains("_bad.csv:3:1: 1 values, expected 2"),
-                       io::TableError);
+                       doctest::Contains("_bad.csv:3:1: 1 values, expected 2"), io::TableError);
   std::ofstream(bad) << "0.0,1.0\n0.5,2.0\n0.5,3.0\n";
   CHECK_THROWS_WITH_AS(io::read_waveform_table(bad),
-                       doctest::Contains("_bad.csv:3:1: time 0.5 is not after"),
-                       io::TableError);
+                       doctest::Contains("_bad.csv:3:1: time 0.5 is not after"), io::TableError);
   // A typo in the first data row is not taken for a header (that halved the period).
   std::ofstream(bad) << "0.0,1.0x\n0.5,2.0\n1.0,1.0\n";
   CHECK_THROWS_WITH_AS(io::read_waveform_table(bad),
