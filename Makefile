@@ -3,8 +3,11 @@ BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 SCENE ?= scenes/default.toml
 CTEST_ARGS ?=
+SANITIZE ?= 1
+SANITIZE_BUDGET ?= 2400
+CCACHE := $(shell command -v ccache 2>/dev/null)
 
-.PHONY: run test deps configure build validate asan clean valve-quick
+.PHONY: run test deps configure build validate asan sanitize clean valve-quick
 
 deps:
 	scripts/install-deps
@@ -20,6 +23,19 @@ run: build
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j$(JOBS) $(CTEST_ARGS)
+ifeq ($(SANITIZE),1)
+	$(MAKE) --no-print-directory sanitize
+endif
+
+# The text readers' fuzzing and the PIV/compare-piv tests again under the address and
+# undefined-behaviour sanitizers (issue 23), in build-sanitize/: only the targets those tests need
+# (CMakePresets.json "sanitize"); any sanitizer report fails its test. Bounded: SANITIZE_BUDGET
+# seconds for the build, the test preset's timeout per test. Part of `make test` (SANITIZE=0
+# skips it).
+sanitize: deps
+	cmake --preset sanitize $(if $(CCACHE),-DCMAKE_CXX_COMPILER_LAUNCHER=$(CCACHE))
+	timeout --kill-after=30 $(SANITIZE_BUDGET) cmake --build --preset sanitize -j$(JOBS)
+	ctest --preset sanitize -j$(JOBS)
 
 # The valve at the coarse level: its meshes (once) and one cardiac cycle (scenes/valve_quick.toml).
 valve-quick: build

@@ -9,19 +9,16 @@
 #include <fmt/format.h>
 #include <mpi.h>
 
-#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
 
-#include "io/hdf5_file.hpp"
 #include "io/piv_compare.hpp"
 #include "io/probes.hpp"
-#include "io/xdmf_writer.hpp"
+#include "io/statistics_files.hpp"
 
 namespace valsalva::app {
 
@@ -38,101 +35,6 @@ struct Options {
   io::PivUnits units;  // file units -> m, m/s
   bool plot = true;
 };
-
-// The mesh of an XdmfWriter mesh file: coordinates and the Mixed topology (VTK order -> Gmsh).
-flow::Mesh read_xdmf_mesh(const fs::path& file) {
-  const io::h5::File h5(file, io::h5::Mode::read);
-  const auto xyz = h5.read_all<double>("coordinates");
-  const auto topo = h5.read_all<std::int64_t>("topology");
-  flow::Mesh mesh;
-  mesh.source = file.string();
-  if (xyz.size() % 3 != 0)
-    throw std::runtime_error(fmt::format("'{}': 'coordinates' holds {} values, not 3 per node",
-                                         file.string(), xyz.size()));
-  for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)
-    mesh.nodes.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
-  const auto num_nodes = static_cast<std::int64_t>(mesh.nodes.size());
-  for (std::size_t i = 0; i < topo.size();) {
-    flow::CellType type;
-    switch (topo[i]) {
-      case 6:
-        type = flow::CellType::tetra;
-        break;
-      case 7:
-        type = flow::CellType::pyramid;
-        break;
-      case 8:
-        type = flow::CellType::prism;
-        break;
-      case 9:
-        type = flow::CellType::hexa;
-        break;
-      default:
-        throw std::runtime_error(fmt::format("'{}': topology entry {} has XDMF cell code {}",
-                                             file.string(), i, topo[i]));
-    }
-    const int n = flow::node_count(type);
-    if (i + 1 + n > topo.size())
-      throw std::runtime_error(
-          fmt::format("'{}': topology ends inside the cell at entry {}", file.string(), i));
-    std::vector<flow::GlobalIndex> nodes(topo.begin() + i + 1, topo.begin() + i + 1 + n);
-    for (auto node : nodes)
-      if (node < 0 || node >= num_nodes)
-        throw std::runtime_error(
-            fmt::format("'{}': topology entry {} refers to node {}, but the file has {} nodes",
-                        file.string(), i, node, num_nodes));
-    if (type == flow::CellType::prism) std::swap(nodes[1], nodes[2]), std::swap(nodes[4], nodes[5]);
-    mesh.add_cell(type, nodes);
-    i += 1 + n;
-  }
-  return mesh;
-}
-
-// bin -> phase time from <name>_phases.csv.
-std::vector<double> read_phase_times(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error(fmt::format("compare-piv: cannot open '{}'", file.string()));
-  std::vector<double> t;
-  std::string line;
-  std::getline(in, line);
-  for (int number = 2; std::getline(in, line); ++number) {
-    const auto comma = line.find(',');
-    const auto end = comma == std::string::npos ? comma : line.find(',', comma + 1);
-    const std::string time =
-        comma == std::string::npos ? "" : line.substr(comma + 1, end - comma - 1);
-    double value = 0;
-    const auto r = std::from_chars(time.data(), time.data() + time.size(), value);
-    if (r.ec != std::errc() || r.ptr != time.data() + time.size() || !std::isfinite(value))
-      throw std::runtime_error(fmt::format(
-          "compare-piv: '{}':{}: expected 'bin,phase_time,...' with a finite time, got '{}'",
-          file.string(), number, line));
-    t.push_back(value);
-  }
-  return t;
-}
-
-// One bin's statistics, each field checked against the mesh's node count before it is used
-// (a bin file from another run carries its own, self-consistent node count).
-io::SimulationStatistics read_bin(const fs::path& file, const flow::Mesh& mesh,
-                                  const fs::path& mesh_file) {
-  const auto nodes = static_cast<std::size_t>(mesh.num_nodes());
-  auto field = [&](const char* name, std::size_t per_node) {
-    auto v = io::read_nodal_field(file, name);
-    if (v.size() != per_node * nodes)
-      throw std::runtime_error(fmt::format(
-          "compare-piv: '{}' dataset '{}' has {} values ({} per node: {} nodes), but the "
-          "statistics mesh '{}' has {} nodes: the bin and the mesh come from different runs",
-          file.string(), name, v.size(), per_node, v.size() / per_node, mesh_file.string(), nodes));
-    return v;
-  };
-  io::SimulationStatistics s;
-  s.mean_velocity = field("mean_velocity", 3);
-  s.rms_velocity = field("rms_velocity", 3);
-  s.reynolds_uv = field("reynolds_uv", 1);
-  s.reynolds_uw = field("reynolds_uw", 1);
-  s.reynolds_vw = field("reynolds_vw", 1);
-  return s;
-}
 
 io::ProfileLine parse_line(const std::string& text) {
   // name:x0,y0,x1,y1
@@ -167,8 +69,8 @@ int run(const Options& o) {
   const fs::path dir = stats.parent_path();
   const std::string name = stats.stem().string();
   const fs::path mesh_file = dir / (name + "_mesh.h5");
-  const auto mesh = read_xdmf_mesh(mesh_file);
-  const auto phase_times = read_phase_times(dir / (name + "_phases.csv"));
+  const auto mesh = io::read_statistics_mesh(mesh_file);
+  const auto phase_times = io::read_phase_times(dir / (name + "_phases.csv"));
   const auto piv = io::read_piv(o.piv, o.units);
   const io::PivPlane plane(Eigen::Vector3d(o.origin.data()), Eigen::Vector3d(o.ex.data()),
                            Eigen::Vector3d(o.ey.data()));
@@ -199,7 +101,7 @@ int run(const Options& o) {
     if (bin >= int(phase_times.size()))
       throw std::invalid_argument(fmt::format(
           "compare-piv: --bin {} but the statistics have {} bins", bin, phase_times.size()));
-    const auto sim = read_bin(dir / fmt::format("{}_{:06d}.h5", name, bin), mesh, mesh_file);
+    const auto sim = io::read_statistics_bin(dir / fmt::format("{}_{:06d}.h5", name, bin), mesh, mesh_file);
     const io::PivSampler sampler(locator, plane, frame);
     auto c = io::compare_frame(frame, sampler, sim);
     const auto csv = fs::path(o.out) / fmt::format("frame_{:03d}.csv", f);

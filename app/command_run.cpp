@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "app/commands.hpp"
+#include "app/phase.hpp"
 #include "flow/dual_metrics.hpp"
 #include "flow/local_mesh.hpp"
 #include "flow/run_loop.hpp"
@@ -85,6 +86,7 @@ flow::Progress progress_mode(const io::Scene& scene, bool quiet) {
 int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out,
               const std::string& restart, bool quiet) {
   const auto t0 = std::chrono::steady_clock::now();
+  Phase phase("reading the scene " + scene_file.string());
   const auto scene = io::load_scene(scene_file);
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -112,8 +114,12 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
       throw std::runtime_error(change);
 
   // Everything the scene can get wrong is checked before the run directory is touched.
+  phase.next(mesh_phase(scene));
   const auto mesh = io::build_mesh(scene);
+  phase.next(fmt::format("computing the dual metrics of the mesh ({} nodes, {} cells)",
+                         mesh.num_nodes(), mesh.num_cells()));
   const auto metrics = flow::compute_dual_metrics(mesh);
+  phase.next("checking the scene against the mesh");
   auto boundary = io::read_boundary_conditions(scene, mesh);
   const auto analysis_options = io::read_analysis_options(scene, mesh);
   auto immersed_setup = io::read_immersed_setup(scene, mesh);
@@ -121,13 +127,20 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
   io::check_les_scene(scene);
   io::flow_run_options(scene, dir);  // its checks (time step, output volume), before any write
   io::check_initial_state(scene, mesh);
+  io::check_step_count(scene, metrics);
   const fs::path run_path =
       in_place ? dir : io::RunDirectory::prepare(dir, wipe, scene, MPI_COMM_WORLD).path();
 
   flow::PartitionOptions options;
   options.ghost_layers = scene.get<int>("partition.ghost_layers");
   options.method = scene.get<std::string>("partition.method");
+  phase.next(fmt::format("partitioning the mesh ({} dual nodes, partition.method = {})",
+                         metrics.num_nodes(), options.method));
   auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, options);
+  phase.next(
+      fmt::format("setting up the LES model, the analysis and the structures ({} local "
+                  "nodes)",
+                  local.num_local()));
 
   auto run_options = io::flow_run_options(scene, run_path);
   const auto les = io::les_setup(scene, local);  // nu_sgs/nu joins the fields with a model
@@ -251,6 +264,8 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
     run_options.coupling = immersed->coupling();
   }
   run_options.boundary = std::move(boundary);
+  phase.next(fmt::format("setting up the flow solver and the hypre Poisson matrix ({} local nodes)",
+                         local.num_local()));
   flow::RunLoop loop(mesh, metrics, local, run_options, sink);
   if (checkpoint) {
     loop.resume(std::move(start), start_step, start_dp, start_nu_sgs, start_flux);
@@ -312,12 +327,14 @@ int run_scene(const fs::path& scene_file, bool overwrite, const std::string& out
   if (stop) hooks.stop_requested = [&] { return stop->requested(MPI_COMM_WORLD); };
   loop.set_hooks(std::move(hooks));
   flow::RunSummary summary;
+  phase.next("time stepping (fields, analysis and checkpoints written on the way)");
   try {
     summary = loop.run();
   } catch (const flow::RunError& e) {
     if (e.key().empty()) throw;
     throw std::runtime_error(scene.location(e.key()).str() + ": " + e.what());
   }
+  phase.next("writing the analysis results");
   if (analysis) analysis->finish();
   if (summary.stopped) {
     if (rank == 0)

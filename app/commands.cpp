@@ -7,6 +7,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "app/phase.hpp"
 #include "flow/dual_metrics.hpp"
 #include "flow/local_mesh.hpp"
 #include "flow/mesh_check.hpp"
@@ -41,9 +42,14 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 int check_scene(const std::filesystem::path& scene_file) {
+  Phase phase("reading the scene " + scene_file.string());
   const auto scene = io::load_scene(scene_file);
+  phase.next(mesh_phase(scene));
   const auto mesh = io::build_mesh(scene);
+  phase.next(fmt::format("computing the dual metrics of the mesh ({} nodes, {} cells)",
+                         mesh.num_nodes(), mesh.num_cells()));
   const auto metrics = flow::compute_dual_metrics(mesh);
+  phase.next("checking the scene against the mesh");
   io::read_boundary_conditions(scene, mesh);    // every non-periodic patch has a valid condition
   io::read_analysis_options(scene, mesh);       // probes, samples, statistics, wall shear
   const auto immersed = io::read_immersed_setup(scene, mesh);  // meshes, materials, clamps
@@ -51,8 +57,10 @@ int check_scene(const std::filesystem::path& scene_file) {
   io::check_les_scene(scene);                   // LES output fields
   io::flow_run_options(scene, {});              // time step, output volume
   io::check_initial_state(scene, mesh);         // a Taylor-Green start on a 2 pi L-periodic mesh
+  io::check_step_count(scene, metrics);         // the viscous bound on dt against time.end
   std::string coupling;
   if (!immersed.empty()) {  // every marker in the fluid, as the run places them
+    phase.next("placing the immersed markers in the fluid mesh");
     auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
     const auto c = io::build_immersed_coupling(immersed, local);
     coupling = fmt::format("; {} immersed markers, coupling time-step bound {:.3e} s",
@@ -69,7 +77,10 @@ int mesh_info(const std::filesystem::path& mesh_file, double scale) {
   if (!(scale > 0) || !std::isfinite(scale))
     throw std::invalid_argument(fmt::format(
         "mesh-info: --scale {} must be a positive finite factor (e.g. 0.001 for mm)", scale));
+  Phase phase("reading the mesh " + mesh_file.string());
   auto mesh = io::read_gmsh(mesh_file);
+  phase.next(
+      fmt::format("checking the mesh ({} nodes, {} cells)", mesh.num_nodes(), mesh.num_cells()));
   for (auto& x : mesh.nodes) x *= scale;
   flow::check_mesh(mesh);
   if (const auto pieces = io::disconnected_pieces(mesh); !pieces.empty())

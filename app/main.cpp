@@ -5,12 +5,15 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <new>
 
 #include "app/command_close_leaflets.hpp"
 #include "app/command_compare_piv.hpp"
 #include "app/command_make_valve.hpp"
 #include "app/command_psd.hpp"
 #include "app/commands.hpp"
+#include "app/phase.hpp"
+#include "io/allocation_limit.hpp"
 
 int main(int argc, char** argv) {
   // Line-buffered stdout, so that a run or validation case redirected to a file (or piped to
@@ -85,6 +88,17 @@ int main(int argc, char** argv) {
     if (*psd_cmd) code = psd();
     if (*close_cmd) code = close_leaflets();
     if (*make_valve_cmd) code = make_valve();
+  } catch (const std::bad_alloc&) {
+    // Says nothing by itself: name the step that ran out of memory (app/phase.hpp).
+    const auto& phase = valsalva::app::Phase::current();
+    if (size == 1 || rank == 0)
+      fmt::print(stderr,
+                 "valsalva: error: out of memory while {} (std::bad_alloc: the input asks for "
+                 "more memory than this process may use; {} of physical memory, {} rank(s))\n",
+                 phase.empty() ? "running the command" : phase,
+                 valsalva::io::byte_size(valsalva::io::physical_memory_bytes()), size);
+    if (size > 1) MPI_Abort(MPI_COMM_WORLD, 1);
+    code = 1;
   } catch (const std::exception& e) {
     // Inputs are read on every rank, so every rank fails alike; with several ranks a failure on
     // one rank alone must not leave the others waiting in a collective.

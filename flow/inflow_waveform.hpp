@@ -1,11 +1,10 @@
 // Flow-rate waveforms Q(t) of velocity inlets, m^3/s: a constant, a sine
 //   Q(t) = mean + amplitude sin(2 pi t / period + phase),
-// or a table of (t, Q) rows from a CSV file, linearly interpolated and repeated with the period
-// t_last - t_first (the table covers one cycle; its last row should repeat the first Q, else Q
-// jumps at the wrap).
+// or a table of (t, Q) rows (from a CSV file, io/waveform_table.hpp), linearly interpolated and
+// repeated with the period t_last - t_first (the table covers one cycle; its last row should
+// repeat the first Q, else Q jumps at the wrap).
 #pragma once
 
-#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -24,15 +23,14 @@ struct Waveform {
   double operator()(double time) const;
 };
 
-// A malformed waveform file: what() is "FILE:LINE: problem".
+// A table that is not one period of a waveform.
 class WaveformError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
 
-// Reads "t, Q" rows (comma, semicolon or blank separated). Blank lines and lines starting with
-// '#' are skipped; the first other line may be a header (its first field is not a number).
-// At least two rows, t strictly increasing, finite numbers; errors name the file and line.
-Waveform read_waveform_csv(const std::filesystem::path& file);
+// The table waveform of rows (t_k, Q_k): at least two, t strictly increasing (else
+// WaveformError naming the row, from 1). Files are read by io/waveform_table.hpp.
+Waveform table_waveform(std::vector<double> t, std::vector<double> q);
 
 }  // namespace valsalva::flow

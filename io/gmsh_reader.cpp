@@ -13,6 +13,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "io/msh_counts.hpp"
+
 namespace valsalva::io {
 namespace {
 
@@ -252,6 +254,7 @@ flow::Mesh mesh_from_gmsh_model(const std::string& source) {
 flow::Mesh read_gmsh(const std::filesystem::path& path) {
   const std::string source = path.string();
   check_complete(path);
+  check_msh_counts(path);
   GmshSession session;
   gmsh_call(source +
                 ": cannot read the file (a syntax error, a truncated section or an element "

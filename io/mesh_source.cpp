@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "flow/mesh_check.hpp"
+#include "io/allocation_limit.hpp"
 #include "io/box_generator.hpp"
 #include "io/cylinder_channel_generator.hpp"
 #include "io/gmsh_reader.hpp"
@@ -27,6 +28,13 @@ BoxSpec box_spec(const Scene& scene) {
   spec.origin = Eigen::Vector3d(origin[0], origin[1], origin[2]);
   spec.length = Eigen::Vector3d(length[0], length[1], length[2]);
   spec.cells = scene.get<std::array<int, 3>>("mesh.box.cells");
+  // Each hexahedron holds at least a node (24 bytes), 8 node indices (64), an offset, a type and
+  // a region (13), before any split into other cell types or the dual metrics.
+  const auto& c = spec.cells;
+  if (const auto problem = allocation_problem(fmt::format("[{}, {}, {}] cells", c[0], c[1], c[2]),
+                                              double(c[0]) * c[1] * c[2], 101);
+      !problem.empty())
+    throw scene.error("mesh.box.cells", problem);
   spec.cell_type = scene.get<std::string>("mesh.box.cell_type");
   spec.perturbation = scene.get<double>("mesh.box.perturbation");
   spec.seed = static_cast<std::uint64_t>(scene.get<std::int64_t>("mesh.box.seed"));

@@ -7,42 +7,11 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <fstream>
+#include <utility>
 
 namespace valsalva::io {
 
 namespace {
-
-struct Field {
-  std::string text;
-  int column = 1;  // from 1
-};
-
-// Comma-separated fields with the surrounding blanks (and a trailing '\r') trimmed; or, when
-// `blank_separated`, runs of characters other than ',', ';' and blanks.
-std::vector<Field> split(const std::string& line, bool blank_separated) {
-  std::vector<Field> out;
-  if (blank_separated) {
-    const char* separators = ",; \t\r";
-    for (std::size_t a = line.find_first_not_of(separators); a != std::string::npos;) {
-      const std::size_t b = std::min(line.find_first_of(separators, a), line.size());
-      out.push_back({line.substr(a, b - a), static_cast<int>(a) + 1});
-      a = line.find_first_not_of(separators, b);
-    }
-    return out;
-  }
-  std::size_t begin = 0;
-  while (true) {
-    const std::size_t end = std::min(line.find(',', begin), line.size());
-    std::size_t a = begin, b = end;
-    while (a < b && std::isspace(static_cast<unsigned char>(line[a]))) ++a;
-    while (b > a && std::isspace(static_cast<unsigned char>(line[b - 1]))) --b;
-    out.push_back({line.substr(a, b - a), static_cast<int>(a) + 1});
-    if (end == line.size()) break;
-    begin = end + 1;
-  }
-  return out;
-}
 
 bool is_name(const std::string& s) {
   if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
@@ -52,10 +21,19 @@ bool is_name(const std::string& s) {
   });
 }
 
+std::string lower(std::string s) {
+  for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
 // from_chars accepts "nan" and "inf" and reports overflow as out of range: all refused.
 bool parse(const std::string& s, double& x) {
   const auto r = std::from_chars(s.data(), s.data() + s.size(), x);
   return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(x);
+}
+
+bool is_blank(char c) {
+  return c == ' ' || c == '\t' || c == '\r';
 }
 
 }  // namespace
@@ -72,62 +50,137 @@ std::vector<double> NumericTable::column(const std::string& name) const {
   return out;
 }
 
-NumericTable read_numeric_table(const std::filesystem::path& file, TableHeader header,
-                                std::size_t width, bool blank_separated) {
-  std::ifstream in(file);
-  if (!in) throw TableError(fmt::format("'{}': cannot open", file.string()));
+TableLines::TableLines(const std::filesystem::path& file, TableFormat format)
+    : in_(file), format_(std::move(format)), source_(file.string()) {
+  if (!in_) throw TableError(fmt::format("'{}': cannot open", source_));
+}
+
+bool TableLines::next() {
+  while (std::getline(in_, text_)) {
+    ++line_;
+    const auto start = text_.find_first_not_of(" \t\r");
+    if (start != std::string::npos && text_[start] != '#') return true;
+  }
+  return false;
+}
+
+// Comma-separated fields with the surrounding blanks trimmed, or (blank_separated) runs of
+// characters other than ',', ';' and blanks; a separator inside double quotes (quoted) does not
+// separate, and the quotes are dropped.
+std::vector<TableField> TableLines::fields(std::size_t from) const {
+  const std::string& line = text_;
+  const bool blanks = format_.blank_separated;
+  auto separates = [&](char c) { return c == ',' || (blanks && (c == ';' || is_blank(c))); };
+  std::vector<TableField> out;
+  std::size_t i = std::min(from, line.size());
+  while (true) {
+    while (i < line.size() && is_blank(line[i])) ++i;
+    const std::size_t start = i;
+    std::string text;
+    bool in_quotes = false;
+    for (; i < line.size() && (in_quotes || !separates(line[i])); ++i) {
+      if (format_.quoted && line[i] == '"')
+        in_quotes = !in_quotes;
+      else
+        text += line[i];
+    }
+    while (!text.empty() && is_blank(text.back())) text.pop_back();
+    if (!(blanks && text.empty() && start == i)) out.push_back({text, static_cast<int>(start) + 1});
+    if (i >= line.size()) break;
+    ++i;  // the separator
+    if (blanks)
+      while (i < line.size() && separates(line[i])) ++i;
+  }
+  return out;
+}
+
+TableError TableLines::error(int column, const std::string& what) const {
+  return TableError(fmt::format("{}:{}:{}: {}", source_, line_, column, what));
+}
+
+bool TableLines::all_names(const std::vector<TableField>& fields) {
+  return !fields.empty() && std::all_of(fields.begin(), fields.end(),
+                                        [](const TableField& f) { return is_name(f.text); });
+}
+
+std::vector<std::string> TableLines::header(const std::vector<TableField>& fields) const {
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    const auto& f = fields[i];
+    if (!is_name(f.text))
+      throw error(f.column, fmt::format("'{}' in the header line: a header holds column names "
+                                        "only (a first data row with a typo is not a header)",
+                                        f.text));
+    for (std::size_t j = 0; j < i; ++j)
+      if (lower(fields[j].text) == lower(f.text))
+        throw error(f.column, fmt::format("column '{}' appears twice (columns {} and {})", f.text,
+                                          j + 1, i + 1));
+    names.push_back(f.text);
+  }
+  return names;
+}
+
+double TableLines::number(const TableField& field, const std::string& name, bool maskable) const {
+  double x = 0;
+  if (parse(field.text, x)) return x;
+  if (maskable && (field.text.empty() || lower(field.text) == "nan")) return NAN;
+  throw error(field.column, fmt::format("'{}'{} is not a finite number{}", field.text,
+                                        name.empty() ? "" : " (column '" + name + "')",
+                                        maskable ? " (nor empty or nan, a masked value)" : ""));
+}
+
+std::vector<double> TableLines::values(const std::vector<TableField>& fields,
+                                       const std::vector<std::string>& names,
+                                       std::size_t width) const {
+  if (fields.empty()) throw error(1, "separators only, no values");
+  if (width > 0 && fields.size() != width)
+    throw error(1, fmt::format("{} values, expected {}{}", fields.size(), width,
+                               names.empty() ? "" : " (the header's columns)"));
+  std::vector<double> row(fields.size());
+  for (std::size_t c = 0; c < fields.size(); ++c) {
+    const std::string name = c < names.size() ? names[c] : "";
+    row[c] = number(fields[c], name, !name.empty() && format_.maskable && format_.maskable(name));
+  }
+  return row;
+}
+
+NumericTable read_numeric_table(const std::filesystem::path& file, const TableFormat& format) {
+  TableLines lines(file, format);
   NumericTable t;
-  t.source = file.string();
-  auto fail = [&](int line, int column, const std::string& what) {
-    return TableError(fmt::format("{}:{}:{}: {}", t.source, line, column, what));
-  };
-  std::string line;
+  t.source = lines.source();
+  std::size_t width = format.width;
   bool first = true;
-  for (int number = 1; std::getline(in, line); ++number) {
-    const auto start = line.find_first_not_of(" \t\r");
-    if (start == std::string::npos || line[start] == '#') continue;
-    const auto fields = split(line, blank_separated);
+  while (lines.next()) {
+    const auto fields = lines.fields();
     if (first) {
       first = false;
-      const auto names = std::count_if(fields.begin(), fields.end(),
-                                       [](const Field& f) { return is_name(f.text); });
-      if (names > 0 && header != TableHeader::none) {
-        for (const auto& f : fields)
-          if (!is_name(f.text))
-            throw fail(number, f.column,
-                       fmt::format("'{}' in the header line: a header holds column names only "
-                                   "(a first data row with a typo is not a header)",
-                                   f.text));
-        for (std::size_t i = 0; i < fields.size(); ++i)
-          for (std::size_t j = 0; j < i; ++j)
-            if (fields[i].text == fields[j].text)
-              throw fail(number, fields[i].column,
-                         fmt::format("column '{}' appears twice (columns {} and {})",
-                                     fields[i].text, j + 1, i + 1));
-        for (const auto& f : fields) t.columns.push_back(f.text);
+      const bool some_name = std::any_of(fields.begin(), fields.end(), [](const TableField& f) {
+        return TableLines::all_names({f});
+      });
+      if (some_name && format.header != TableHeader::none) {
+        t.columns = lines.header(fields);
         if (width > 0 && fields.size() != width)
-          throw fail(number, 1, fmt::format("{} columns, expected {}", fields.size(), width));
+          throw lines.error(1, fmt::format("{} columns, expected {}", fields.size(), width));
         width = fields.size();
         continue;
       }
-      if (header == TableHeader::required)
-        throw fail(number, 1, "expected a header line of column names");
+      if (format.header == TableHeader::required)
+        throw lines.error(1, "expected a header line of column names");
     }
     if (width == 0) width = fields.size();
-    if (fields.size() != width)
-      throw fail(number, 1,
-                 fmt::format("{} values, expected {}{}", fields.size(), width,
-                             t.columns.empty() ? "" : " (the header's columns)"));
-    std::vector<double> row(width);
-    for (std::size_t c = 0; c < width; ++c)
-      if (!parse(fields[c].text, row[c]))
-        throw fail(number, fields[c].column,
-                   fmt::format("'{}'{} is not a finite number", fields[c].text,
-                               t.columns.empty() ? "" : " (column '" + t.columns[c] + "')"));
-    t.rows.push_back(std::move(row));
-    t.lines.push_back(number);
+    t.rows.push_back(lines.values(fields, t.columns, width));
+    t.lines.push_back(lines.line());
   }
   return t;
+}
+
+NumericTable read_numeric_table(const std::filesystem::path& file, TableHeader header,
+                                std::size_t width, bool blank_separated) {
+  TableFormat format;
+  format.header = header;
+  format.width = width;
+  format.blank_separated = blank_separated;
+  return read_numeric_table(file, format);
 }
 
 }  // namespace valsalva::io

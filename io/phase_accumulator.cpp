@@ -8,6 +8,8 @@
 #include <regex>
 #include <stdexcept>
 
+#include "io/allocation_limit.hpp"
+
 namespace valsalva::io {
 
 namespace {
@@ -34,6 +36,9 @@ PhaseAccumulator::PhaseAccumulator(PhaseStatisticsOptions options, std::size_t p
     throw std::invalid_argument(fmt::format("statistics: density = {} kg/m^3", o.density));
   if (!std::regex_match(o.name, std::regex("[A-Za-z0-9_]+")))
     throw std::invalid_argument(fmt::format("statistics: name '{}' is not [A-Za-z0-9_]+", o.name));
+  check_allocation(
+      fmt::format("statistics.{}.bins = {} on {} points of this rank", o.name, o.bins, points_),
+      static_cast<double>(o.bins) * static_cast<double>(points_), per_node * sizeof(double));
   counts_.assign(o.bins, 0);
   data_.assign(std::size_t(o.bins) * points_ * per_node, 0.0);
 }

@@ -6,10 +6,10 @@
 #include <array>
 #include <cctype>
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
 #include <map>
 #include <stdexcept>
+
+#include "io/numeric_table.hpp"
 
 namespace valsalva::io {
 
@@ -19,36 +19,9 @@ enum Column { col_x, col_y, col_u, col_v, col_urms, col_vrms, col_valid, col_fra
 const char* const column_names[] = {"x", "y", "u", "v", "u_rms", "v_rms", "valid"};
 const char* const known_list = "x, y, u, v, u_rms, v_rms, valid";
 
-struct Reader {
-  std::string source;
-  [[noreturn]] void fail(int line, const std::string& what) const {
-    if (line > 0)
-      throw std::runtime_error(fmt::format("PIV file '{}' line {}: {}", source, line, what));
-    throw std::runtime_error(fmt::format("PIV file '{}': {}", source, what));
-  }
-};
-
-std::string trim(std::string s) {
-  const auto b = s.find_first_not_of(" \t\r\"");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r\"");
-  return s.substr(b, e - b + 1);
-}
-
 std::string lower(std::string s) {
   for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return s;
-}
-
-// Parses a number; empty and "nan" give NaN. Returns false when `s` is not a number.
-bool parse_number(const std::string& s, double& out) {
-  if (s.empty()) {
-    out = NAN;
-    return true;
-  }
-  char* end = nullptr;
-  out = std::strtod(s.c_str(), &end);
-  return end == s.c_str() + s.size();
 }
 
 // Column index of a name, or -1 (frame keys handled by the caller).
@@ -58,38 +31,55 @@ int known_column(const std::string& name) {
   return -1;
 }
 
-// Maps header names to columns; errors for unknown, duplicate or missing names.
-std::array<int, num_columns> map_columns(const Reader& r, int line,
-                                         const std::vector<std::string>& names, bool allow_frame,
+// The velocity columns, where an empty field or nan is a masked vector (io/numeric_table.hpp).
+TableFormat piv_format(bool blank_separated) {
+  TableFormat f;
+  f.header = TableHeader::required;
+  f.blank_separated = blank_separated;
+  f.quoted = true;
+  f.maskable = [](const std::string& name) {
+    const int c = known_column(lower(name));
+    return c == col_u || c == col_v || c == col_urms || c == col_vrms;
+  };
+  return f;
+}
+
+// Maps header names (checked by TableLines::header) to columns; errors for unknown or missing
+// names at their position on the line.
+std::array<int, num_columns> map_columns(const TableLines& lines,
+                                         const std::vector<TableField>& fields, bool allow_frame,
                                          std::string& frame_key) {
   std::array<int, num_columns> at;
   at.fill(-1);
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    const std::string n = lower(names[i]);
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    const std::string n = lower(fields[i].text);
     int c = known_column(n);
     if (c < 0 && allow_frame && (n == "phase" || n == "time")) {
-      if (at[col_frame] >= 0) r.fail(line, "both 'phase' and 'time' columns");
+      if (at[col_frame] >= 0)
+        throw lines.error(fields[i].column, "both 'phase' and 'time' columns");
       c = col_frame;
       frame_key = n;
     }
     if (c < 0)
-      r.fail(line, fmt::format("unknown {} '{}' (known: {}{})", allow_frame ? "column" : "variable",
-                               names[i], known_list, allow_frame ? ", phase, time" : ""));
-    if (at[c] >= 0) r.fail(line, fmt::format("'{}' appears twice", names[i]));
+      throw lines.error(
+          fields[i].column,
+          fmt::format("unknown {} '{}' (known: {}{})", allow_frame ? "column" : "variable",
+                      fields[i].text, known_list, allow_frame ? ", phase, time" : ""));
     at[c] = static_cast<int>(i);
   }
   for (int c : {col_x, col_y, col_u, col_v})
-    if (at[c] < 0) r.fail(line, fmt::format("missing column '{}'", column_names[c]));
-  if ((at[col_urms] >= 0) != (at[col_vrms] >= 0)) r.fail(line, "u_rms and v_rms come together");
+    if (at[c] < 0) throw lines.error(1, fmt::format("missing column '{}'", column_names[c]));
+  if ((at[col_urms] >= 0) != (at[col_vrms] >= 0))
+    throw lines.error(1, "u_rms and v_rms come together");
   return at;
 }
 
-// Appends one point; `values` indexed by the file's columns.
-void add_point(const Reader& r, int line, const std::array<int, num_columns>& at,
-               const std::vector<double>& values, PivFrame& f) {
+// Appends one point; `values` indexed by the file's columns (x, y, valid, phase finite: the
+// table reader refuses anything else outside the maskable velocity columns).
+void add_point(const TableLines& lines, const std::vector<TableField>& fields,
+               const std::array<int, num_columns>& at, const std::vector<double>& values,
+               PivFrame& f) {
   auto get = [&](int c) { return at[c] >= 0 ? values[at[c]] : NAN; };
-  if (!std::isfinite(get(col_x)) || !std::isfinite(get(col_y)))
-    r.fail(line, "x and y must be finite numbers");
   f.x.push_back(get(col_x));
   f.y.push_back(get(col_y));
   f.u.push_back(get(col_u));
@@ -102,42 +92,12 @@ void add_point(const Reader& r, int line, const std::array<int, num_columns>& at
   }
   if (at[col_valid] >= 0) {
     const double flag = get(col_valid);
-    if (flag != 0 && flag != 1) r.fail(line, fmt::format("valid = {} must be 0 or 1", flag));
+    if (flag != 0 && flag != 1)
+      throw lines.error(fields[at[col_valid]].column,
+                        fmt::format("valid = {} must be 0 or 1", flag));
     ok = ok && flag == 1;
   }
   f.valid.push_back(ok ? 1 : 0);
-}
-
-std::vector<std::string> split(const std::string& line, const std::string& separators) {
-  std::vector<std::string> out;
-  std::string cur;
-  bool quoted = false;
-  for (char c : line) {
-    if (c == '"') quoted = !quoted;
-    if (!quoted && separators.find(c) != std::string::npos) {
-      out.push_back(trim(cur));
-      cur.clear();
-    } else {
-      cur += c;
-    }
-  }
-  out.push_back(trim(cur));
-  return out;
-}
-
-std::vector<double> parse_values(const Reader& r, int line, const std::vector<std::string>& cells,
-                                 const std::vector<std::string>& names) {
-  std::vector<double> values(cells.size());
-  for (std::size_t i = 0; i < cells.size(); ++i)
-    if (!parse_number(cells[i], values[i]))
-      r.fail(line, fmt::format("{} '{}': '{}' is not a number", "column", names[i], cells[i]));
-  return values;
-}
-
-std::ifstream open(const Reader& r, const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) r.fail(0, "cannot open");
-  return in;
 }
 
 }  // namespace
@@ -147,153 +107,140 @@ std::size_t PivFrame::valid_count() const {
 }
 
 PivData read_piv_csv(const std::filesystem::path& path) {
-  const Reader r{path.string()};
-  std::ifstream in = open(r, path);
+  TableLines lines(path, piv_format(false));
   PivData data;
-  data.source = r.source;
-  std::vector<std::string> names;
-  std::array<int, num_columns> at{};
+  data.source = lines.source();
+  if (!lines.next()) throw TableError(fmt::format("'{}': empty (no header line)", data.source));
+  const auto header = lines.fields();
+  const auto names = lines.header(header);
+  const auto at = map_columns(lines, header, true, data.frame_key);
+  data.has_rms = at[col_urms] >= 0;
   std::map<double, std::size_t> frame_of_value;
-  std::string line;
-  int line_no = 0;
-  while (std::getline(in, line)) {
-    ++line_no;
-    const std::string t = trim(line);
-    if (t.empty() || t[0] == '#') continue;
-    const auto cells = split(t, ",");
-    if (names.empty()) {
-      names = cells;
-      at = map_columns(r, line_no, names, true, data.frame_key);
-      data.has_rms = at[col_urms] >= 0;
-      continue;
-    }
-    if (cells.size() != names.size())
-      r.fail(line_no, fmt::format("{} values, the header has {}", cells.size(), names.size()));
-    const auto values = parse_values(r, line_no, cells, names);
-    double key = NAN;
-    if (at[col_frame] >= 0) {
-      key = values[at[col_frame]];
-      if (!std::isfinite(key))
-        r.fail(line_no, fmt::format("{} must be a finite number", data.frame_key));
-    }
-    auto it = frame_of_value.find(std::isfinite(key) ? key : 0.0);
+  while (lines.next()) {
+    const auto fields = lines.fields();
+    const auto values = lines.values(fields, names, names.size());
+    const double key = at[col_frame] >= 0 ? values[at[col_frame]] : 0.0;
+    auto it = frame_of_value.find(key);
     if (it == frame_of_value.end()) {
-      it = frame_of_value.emplace(std::isfinite(key) ? key : 0.0, data.frames.size()).first;
+      it = frame_of_value.emplace(key, data.frames.size()).first;
       PivFrame f;
-      f.phase = key;
+      f.phase = at[col_frame] >= 0 ? key : NAN;
       f.label = data.frame_key.empty() ? "all" : fmt::format("{}={:.6g}", data.frame_key, key);
       data.frames.push_back(std::move(f));
     }
-    add_point(r, line_no, at, values, data.frames[it->second]);
+    add_point(lines, fields, at, values, data.frames[it->second]);
   }
-  if (names.empty()) r.fail(0, "empty (no header line)");
-  if (data.frames.empty()) r.fail(line_no, "no data rows after the header");
+  if (data.frames.empty())
+    throw lines.error(1, fmt::format("no data rows after the header (line {})", lines.line()));
   return data;
 }
 
 PivData read_piv_tecplot(const std::filesystem::path& path) {
-  const Reader r{path.string()};
-  std::ifstream in = open(r, path);
+  TableLines lines(path, piv_format(true));
   PivData data;
-  data.source = r.source;
+  data.source = lines.source();
   std::vector<std::string> names;
   std::array<int, num_columns> at{};
   std::size_t expected = 0;
   int zone_line = 0;
-  auto close_zone = [&](int line) {
-    if (!data.frames.empty() && data.frames.back().size() != expected)
-      r.fail(line,
-             fmt::format("zone '{}' (line {}) declares I*J = {} points, found {}",
-                         data.frames.back().label, zone_line, expected, data.frames.back().size()));
+  auto zone_error = [&](const std::string& what) {
+    return TableError(fmt::format("{}:{}:1: {}", data.source, zone_line, what));
   };
-  std::string line;
-  int line_no = 0;
-  bool in_zone_header = false;
-  while (std::getline(in, line)) {
-    ++line_no;
-    const std::string t = trim(line);
-    if (t.empty() || t[0] == '#') continue;
-    const std::string head = lower(t.substr(0, t.find_first_of(" =\t")));
-    const bool alpha = std::isalpha(static_cast<unsigned char>(t[0])) && lower(t) != "nan" &&
-                       lower(t.substr(0, 3)) != "nan";
+  // A zone must hold the I*J points it declares, whether a ZONE or the end of the file follows.
+  auto close_zone = [&] {
+    if (!data.frames.empty() && data.frames.back().size() != expected)
+      throw zone_error(fmt::format("zone '{}' declares I*J = {} points, found {} (up to line {})",
+                                   data.frames.back().label, expected, data.frames.back().size(),
+                                   lines.line()));
+  };
+  bool in_zone_header = false, any_line = false;
+  while (lines.next()) {
+    any_line = true;
+    const auto fields = lines.fields();
+    if (fields.empty()) throw lines.error(1, "separators only, no values");
+    const std::string& first = fields.front().text;
+    const std::string head = lower(first.substr(0, first.find('=')));
+    const bool key_value =
+        std::isalpha(static_cast<unsigned char>(first[0])) && first.find('=') != std::string::npos;
     if (head == "title") continue;
     if (head == "variables") {
-      if (!names.empty()) r.fail(line_no, "a second VARIABLES line");
-      const auto eq = t.find('=');
-      if (eq == std::string::npos) r.fail(line_no, "VARIABLES without '='");
-      for (auto& n : split(t.substr(eq + 1), ", \t"))
-        if (!n.empty()) names.push_back(n);
-      at = map_columns(r, line_no, names, false, data.frame_key);
+      if (!names.empty()) throw lines.error(1, "a second VARIABLES line");
+      const auto eq = lines.text().find('=');
+      if (eq == std::string::npos) throw lines.error(1, "VARIABLES without '='");
+      const auto variables = lines.fields(eq + 1);
+      names = lines.header(variables);
+      at = map_columns(lines, variables, false, data.frame_key);
       data.has_rms = at[col_urms] >= 0;
       continue;
     }
-    if (head == "zone" || (in_zone_header && alpha && t.find('=') != std::string::npos)) {
-      if (names.empty()) r.fail(line_no, "ZONE before the VARIABLES line");
+    if (head == "zone" || (in_zone_header && key_value)) {
+      if (names.empty()) throw lines.error(1, "ZONE before the VARIABLES line");
       if (head == "zone") {
         if (in_zone_header)  // the previous zone ended before its first data line
-          r.fail(zone_line, fmt::format("zone '{}' has no data (the next ZONE is on line {})",
-                                        data.frames.back().label, line_no));
-        close_zone(line_no);
-        zone_line = line_no;
+          throw zone_error(fmt::format("zone '{}' has no data (the next ZONE is on line {})",
+                                       data.frames.back().label, lines.line()));
+        close_zone();
+        zone_line = lines.line();
         data.frames.emplace_back();
         data.frames.back().label = fmt::format("zone {}", data.frames.size());
       }
       in_zone_header = true;
       PivFrame& f = data.frames.back();
-      const std::string body = head == "zone" ? t.substr(4) : t;
-      for (const auto& item : split(body, ", \t")) {
-        if (item.empty()) continue;
-        const auto eq = item.find('=');
-        if (eq == std::string::npos) r.fail(line_no, fmt::format("'{}' is not KEY=VALUE", item));
-        const std::string key = lower(trim(item.substr(0, eq))), value = trim(item.substr(eq + 1));
-        double number = 0;
-        const bool numeric = parse_number(value, number) && !value.empty();
+      for (std::size_t i = head == "zone" ? 1 : 0; i < fields.size(); ++i) {
+        const auto& item = fields[i];
+        const auto eq = item.text.find('=');
+        if (eq == std::string::npos)
+          throw lines.error(item.column, fmt::format("'{}' is not KEY=VALUE", item.text));
+        const std::string key = lower(item.text.substr(0, eq));
+        const TableField value{item.text.substr(eq + 1), item.column + static_cast<int>(eq) + 1};
         if (key == "t") {
-          f.label = value;
+          f.label = value.text;
         } else if (key == "i" || key == "j" || key == "k") {
-          if (!numeric || number < 1 || number != std::floor(number))
-            r.fail(line_no, fmt::format("{} = '{}' must be a positive integer", key, value));
-          if (key == "i") f.ni = int(number);
-          if (key == "j") f.nj = int(number);
-          if (key == "k" && number != 1) r.fail(line_no, "K > 1: PIV zones are planar");
+          const double n = lines.number(value, key);
+          if (n < 1 || n != std::floor(n) || n > 1e9)
+            throw lines.error(value.column,
+                              fmt::format("{} = {} must be a positive integer (<= 1e9)", key, n));
+          if (key == "i") f.ni = static_cast<int>(n);
+          if (key == "j") f.nj = static_cast<int>(n);
+          if (key == "k" && n != 1) throw lines.error(value.column, "K > 1: PIV zones are planar");
         } else if (key == "solutiontime") {
-          if (!numeric) r.fail(line_no, fmt::format("SOLUTIONTIME = '{}' is not a number", value));
-          f.phase = number;
+          f.phase = lines.number(value, "SOLUTIONTIME");
           data.frame_key = "time";
         } else if (key == "f" || key == "datapacking") {
-          if (lower(value) != "point")
-            r.fail(line_no, fmt::format("{}={} is not supported (only POINT)", key, value));
+          if (lower(value.text) != "point")
+            throw lines.error(value.column,
+                              fmt::format("{}={} is not supported (only POINT)", key, value.text));
         } else if (key == "zonetype") {
-          if (lower(value) != "ordered")
-            r.fail(line_no, fmt::format("ZONETYPE={} is not supported (only ORDERED)", value));
+          if (lower(value.text) != "ordered")
+            throw lines.error(value.column, fmt::format("ZONETYPE={} is not supported (only "
+                                                        "ORDERED)",
+                                                        value.text));
         }  // STRANDID, C, DT and other display keys are ignored
       }
       continue;
     }
     // A data line.
-    if (data.frames.empty()) r.fail(line_no, "data before the first ZONE line");
+    if (data.frames.empty()) throw lines.error(1, "data before the first ZONE line");
     PivFrame& f = data.frames.back();
     if (in_zone_header) {
       in_zone_header = false;
       if (f.ni == 0 || f.nj == 0)
-        r.fail(zone_line, fmt::format("zone '{}' without {}", f.label, f.ni == 0 ? "I" : "J"));
+        throw zone_error(fmt::format("zone '{}' without {}", f.label, f.ni == 0 ? "I" : "J"));
       expected = std::size_t(f.ni) * std::size_t(f.nj);
     }
-    std::vector<std::string> cells;
-    for (auto& c : split(t, ", \t"))
-      if (!c.empty()) cells.push_back(c);
-    if (cells.size() != names.size())
-      r.fail(line_no, fmt::format("{} values, VARIABLES names {}", cells.size(), names.size()));
     if (f.size() == expected)
-      r.fail(line_no, fmt::format("zone '{}' (line {}) declares I*J = {} points, this is one more",
-                                  f.label, zone_line, expected));
-    add_point(r, line_no, at, parse_values(r, line_no, cells, names), f);
+      throw lines.error(1, fmt::format("zone '{}' (line {}) declares I*J = {} points, this is one "
+                                       "more",
+                                       f.label, zone_line, expected));
+    add_point(lines, fields, at, lines.values(fields, names, names.size()), f);
   }
-  if (names.empty()) r.fail(0, line_no == 0 ? "empty" : "no VARIABLES line");
-  if (data.frames.empty()) r.fail(line_no, "no ZONE");
+  if (names.empty())
+    throw TableError(
+        fmt::format("'{}': {}", data.source, any_line ? "no VARIABLES line" : "empty"));
+  if (data.frames.empty()) throw lines.error(1, "no ZONE");
   if (in_zone_header)
-    r.fail(zone_line, fmt::format("zone '{}' has no data", data.frames.back().label));
-  close_zone(line_no);
+    throw zone_error(fmt::format("zone '{}' has no data", data.frames.back().label));
+  close_zone();
   return data;
 }
 

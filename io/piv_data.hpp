@@ -6,11 +6,15 @@
 //
 // CSV: '#' comments and blank lines skipped; the first line names the columns (any order,
 //   case-insensitive): x, y, u, v [, u_rms, v_rms] [, valid] [, phase | time]. Rows with the same
-//   phase/time value form one frame, in order of first appearance. Empty fields read as NaN.
+//   phase/time value form one frame, in order of first appearance. Empty velocity fields read
+//   as NaN (masked).
 // Tecplot ASCII: TITLE (ignored), VARIABLES = "x" "y" "u" "v" ... (same names), then one ZONE per
 //   frame: ZONE T="...", I=.., J=.. [, K=1] [, F=POINT | DATAPACKING=POINT] [, SOLUTIONTIME=..],
 //   followed by I*J lines of one point each.
-// Every malformed input throws std::runtime_error "PIV file '<path>' line <n>: <what>".
+// Both are read with the strict table reader (io/numeric_table.hpp): every malformed input
+// throws TableError "<path>:<line>:<column>: <what>"; x, y, valid and phase/time must be finite
+// numbers, u, v, u_rms, v_rms finite or masked (empty or nan; inf and 1e999 are refused); column
+// names are unique (case-insensitively); a zone holds exactly its I*J points.
 #pragma once
 
 #include <cmath>

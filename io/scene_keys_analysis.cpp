@@ -11,6 +11,7 @@
 #include <regex>
 #include <set>
 
+#include "io/allocation_limit.hpp"
 #include "io/scene_keys.hpp"
 #include "io/scene_keys_sections.hpp"
 
@@ -186,6 +187,12 @@ AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh
     s.origin = scene_vector(scene, k + ".origin");
     const auto n = scene.get<std::array<int, 3>>(k + ".points");
     s.points = {n[0], s.plane ? n[1] : 1};
+    // Each point keeps at least its position and u, v, w, p (56 bytes).
+    if (const auto problem =
+            allocation_problem(fmt::format("{} x {} points", s.points[0], s.points[1]),
+                               double(s.points[0]) * s.points[1], 56);
+        !problem.empty())
+      throw scene.error(k + ".points", problem);
     if (s.plane) {
       s.u = scene_vector(scene, k + ".u");
       s.v = scene_vector(scene, k + ".v");

@@ -9,7 +9,9 @@
 #include <set>
 
 #include "io/numeric_table.hpp"
+#include "io/patch_shape.hpp"
 #include "io/scene_keys.hpp"
+#include "io/waveform_table.hpp"
 
 namespace valsalva::io {
 
@@ -35,7 +37,9 @@ void declare_boundary_keys(Schema& s) {
       .unit_of("-")
       .doc(
           "Inlet velocity profile along the inward normal; poiseuille and womersley assume a "
-          "circular section (centre and radius from the patch); womersley needs waveform = sine; "
+          "circular section (centre and radius from the patch), refused on a patch whose largest "
+          "radius from its centroid exceeds 1.12 times that of a disc of its area (a hexagon is "
+          "1.10, a square 1.25); womersley needs waveform = sine; "
           "plane_poiseuille is the parabola between two parallel walls (a 2D or slab channel), "
           "across the direction `across`");
   s.when(b + ".profile", b + ".type", {"inlet"});
@@ -128,16 +132,25 @@ std::vector<flow::BoundarySpec> read_boundary_conditions(const Scene& scene,
         if (!(spec.across.norm() > 0))
           throw scene.error(key + ".across", "must be a nonzero direction", "e.g. [0, 1, 0]");
       }
+      if (spec.profile == flow::InletProfile::poiseuille ||
+          spec.profile == flow::InletProfile::womersley) {
+        const auto shape = patch_shape(mesh, mesh.patch_index(name));
+        if (shape.circularity > max_circularity)
+          throw scene.error(
+              key + ".profile",
+              fmt::format("the {} profile assumes a circular section, but patch '{}' is not one: "
+                          "its largest radius from the centroid, {:.4g} m, is {:.3f} times the "
+                          "radius {:.4g} m of a disc of its area {:.4g} m^2 (a disc meshed with "
+                          "6 or more sides is below {})",
+                          profile, name, shape.max_radius, shape.circularity,
+                          shape.max_radius / shape.circularity, shape.area, max_circularity),
+              "\"flat\", or \"plane_poiseuille\" between two parallel walls");
+      }
       const auto waveform = scene.get<std::string>(key + ".waveform");
       auto& q = spec.flow_rate;
       if (waveform == "table") {
         try {
-          q = flow::read_waveform_csv(scene.path(key + ".file"));
-          // The strict reader too: flow's takes any first line that does not parse for a
-          // header, which drops a first data row with a typo.
-          read_numeric_table(scene.path(key + ".file"), TableHeader::optional, 2, true);
-        } catch (const flow::WaveformError& e) {
-          throw scene.error(key + ".file", e.what());
+          q = read_waveform_table(scene.path(key + ".file"));
         } catch (const TableError& e) {
           throw scene.error(key + ".file", e.what());
         }

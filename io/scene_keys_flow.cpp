@@ -14,23 +14,38 @@ namespace valsalva::io {
 
 namespace {
 constexpr double max_field_outputs = 1e5;  // fields written per run (output.interval in s)
-constexpr double max_time_steps = 1e9;     // steps a fixed time.dt may take to time.end
+constexpr double max_time_steps = 1e9;     // steps a run may take to time.end
+constexpr double default_density = 1100.0, default_viscosity = 3.6e-3;  // the reference fluid
+
+// The one rule for runs that would not end in a lifetime: a time step `dt` that takes more than
+// max_time_steps steps to time.end, unless time.max_steps caps the run. The implied step count
+// when refused, 0 when accepted.
+double refused_step_count(const flow::TimeOptions& t, double dt) {
+  if (t.max_steps > 0 || !(dt > 0)) return 0;
+  const double steps = t.end / dt;
+  return steps > max_time_steps ? steps : 0;
+}
 }  // namespace
 
 void declare_flow_keys(Schema& s) {
   s.section("flow", "Fluid properties and the discretisation of the momentum equation.");
   s.real("flow.density")
-      .def(1100.0)
+      .def(default_density)
       .above(0)
       .unit_of("kg/m3")
       .doc(
           "Fluid density; 1100 is the blood-analogue fluid of the reference pulse-duplicator "
-          "experiment");
+          "experiment. With time.dt = 0, a density so small (nu = viscosity / density so large) "
+          "that the viscous bound dt <= time.fourier h^2 / nu (h the mesh's smallest cube root "
+          "of a dual volume) takes more than 1e9 steps to time.end is refused unless "
+          "time.max_steps is set");
   s.real("flow.viscosity")
-      .def(3.6e-3)
+      .def(default_viscosity)
       .at_least(0)
       .unit_of("Pa s")
-      .doc("Dynamic viscosity (Newtonian); 3.6e-3 is the reference experiment's blood analogue");
+      .doc(
+          "Dynamic viscosity (Newtonian); 3.6e-3 is the reference experiment's blood analogue; "
+          "the 1e9-step rule of flow.density applies");
   s.choice("flow.scheme", {"central2", "central4"})
       .def("central2")
       .unit_of("-")
@@ -266,12 +281,12 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
                     "(each write also shortens the time step to land on it)",
                     out.interval, end / out.interval, end),
         fmt::format(">= time.end / {:g} = {:g} s", max_field_outputs, end / max_field_outputs));
-  if (o.time.dt > 0 && end / o.time.dt > max_time_steps && o.time.max_steps == 0)
-    throw scene.error("time.dt",
-                      fmt::format("{:g} s takes {:.3g} steps to time.end = {:g} s", o.time.dt,
-                                  end / o.time.dt, end),
-                      fmt::format(">= time.end / {:g} = {:g} s, or set time.max_steps",
-                                  max_time_steps, end / max_time_steps));
+  if (const double steps = refused_step_count(o.time, o.time.dt); steps > 0)
+    throw scene.error(
+        "time.dt",
+        fmt::format("{:g} s takes {:.3g} steps to time.end = {:g} s", o.time.dt, steps, end),
+        fmt::format(">= time.end / {:g} = {:g} s, or set time.max_steps", max_time_steps,
+                    end / max_time_steps));
   const auto fields = scene.get<std::vector<std::string>>("output.fields");
   auto wants = [&](const char* f) {
     return std::find(fields.begin(), fields.end(), f) != fields.end();
@@ -281,6 +296,37 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   out.vorticity = wants("vorticity");
   out.q_criterion = wants("q_criterion");
   return o;
+}
+
+void check_step_count(const Scene& scene, const flow::DualMetrics& metrics) {
+  if (scene.get<double>("time.dt") > 0 || metrics.h.empty()) return;  // fixed dt: checked above
+  flow::TimeOptions t;
+  t.end = scene.get<double>("time.end");
+  t.max_steps = scene.get<std::int64_t>("time.max_steps");
+  const double rho = scene.get<double>("flow.density"), mu = scene.get<double>("flow.viscosity");
+  const double fourier = scene.get<double>("time.fourier");
+  const double h = *std::min_element(metrics.h.begin(), metrics.h.end());
+  // The run's viscous bound max nu dt / h_j^2 <= time.fourier (flow/run_diagnostics.hpp, the
+  // same h_j): the first step's dt when the fluid starts at rest, an upper bound on every dt
+  // since convection and a subgrid viscosity only shorten it.
+  const double nu = mu / rho, dt = fourier * h * h / nu;
+  const double steps = refused_step_count(t, dt);
+  if (steps == 0) return;
+  // The message points at the key that departs further from the reference fluid towards a
+  // large nu.
+  const char* key =
+      default_density / rho >= mu / default_viscosity ? "flow.density" : "flow.viscosity";
+  throw scene.error(
+      key,
+      fmt::format("flow.viscosity / flow.density = {:g} Pa s / {:g} kg/m3 gives nu = {:.3g} m2/s: "
+                  "the viscous bound dt <= time.fourier h^2 / nu = {:g} x ({:.3g} m)^2 / nu = "
+                  "{:.3g} s (h = the mesh's smallest cube root of a dual volume) takes {:.3g} "
+                  "steps to time.end = {:g} s, more than {:g}",
+                  mu, rho, nu, fourier, h, dt, steps, t.end, max_time_steps),
+      fmt::format("nu <= time.fourier h^2 {:g} / time.end = {:.3g} m2/s (flow.density >= {:.3g} "
+                  "kg/m3 with this viscosity), or set time.max_steps",
+                  max_time_steps, fourier * h * h * max_time_steps / t.end,
+                  mu * t.end / (fourier * h * h * max_time_steps)));
 }
 
 void check_initial_state(const Scene& scene, const flow::Mesh& mesh) {

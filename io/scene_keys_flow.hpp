@@ -14,6 +14,11 @@ namespace valsalva::io {
 // that is not a whole number).
 flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::path& run_dir);
 
+// A time step from time.cfl and time.fourier (time.dt = 0) bounded by the viscous (Fourier) limit
+// on this mesh: refused, naming flow.density (or flow.viscosity), when that bound alone implies
+// more steps to time.end than a fixed time.dt may take (1e9) without time.max_steps.
+void check_step_count(const Scene& scene, const flow::DualMetrics& metrics);
+
 // The initial state against the mesh: a Taylor-Green start needs a mesh periodic in x and y
 // with translations that are whole multiples of 2 pi L (else the "exact solution" the run's
 // error is measured against is not one). Throws SceneError naming initial.taylor_green.length.

@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "io/gmsh_reader.hpp"
+#include "io/msh_counts.hpp"
 
 namespace valsalva::io {
 
@@ -136,6 +137,7 @@ structure::SolidMesh read_solid_gmsh(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path, ec))
     throw MeshFileError(fmt::format(
         "{}: not a readable mesh file (missing, a directory or a special file)", source));
+  check_msh_counts(path);
   GmshSession session;
   gmsh_call(source + ": cannot read the file", [&] { gmsh::open(source); });
   return solid_mesh_from_gmsh_model(source);

@@ -93,26 +93,15 @@ TEST_CASE("Womersley pressure gradient: the profile solves du/dt = G + nu (u'' +
         doctest::Approx(8e-6 * 1e-5 / (std::numbers::pi * 1e-8)).epsilon(1e-12));
 }
 
-TEST_CASE("CSV waveform: periodic interpolation and errors naming file and line") {
-  const auto dir = std::filesystem::temp_directory_path();
-  const auto good = dir / "valsalva_waveform_good.csv";
-  std::ofstream(good) << "# comment\nt,Q\n0.0, 1.0\n0.5, 3.0\n1.0, 1.0\n";
-  const auto w = flow::read_waveform_csv(good);
+TEST_CASE("table waveform: periodic interpolation, mean, rows that are not one period") {
+  const auto w = flow::table_waveform({0.0, 0.5, 1.0}, {1.0, 3.0, 1.0});
   CHECK(w.period == 1.0);
   CHECK(w(0.25) == doctest::Approx(2.0));
   CHECK(w(1.25) == doctest::Approx(2.0));
   CHECK(w(-0.75) == doctest::Approx(2.0));
   CHECK(w.mean == doctest::Approx(2.0));
-  const auto bad = dir / "valsalva_waveform_bad.csv";
-  std::ofstream(bad) << "t,Q\n0.0,1.0\n0.5\n";
-  CHECK_THROWS_WITH_AS(
-      flow::read_waveform_csv(bad),
-      doctest::Contains("valsalva_waveform_bad.csv:3: expected two finite numbers"),
-      flow::WaveformError);
-  std::ofstream(bad) << "0.0,1.0\n0.5,2.0\n0.5,3.0\n";
-  CHECK_THROWS_WITH_AS(flow::read_waveform_csv(bad),
-                       doctest::Contains("valsalva_waveform_bad.csv:3: time 0.5 is not after"),
+  CHECK_THROWS_WITH_AS(flow::table_waveform({0.0}, {1.0}), doctest::Contains("found 1"),
                        flow::WaveformError);
-  std::filesystem::remove(good);
-  std::filesystem::remove(bad);
+  CHECK_THROWS_WITH_AS(flow::table_waveform({0.0, 0.5, 0.5}, {1.0, 2.0, 3.0}),
+                       doctest::Contains("row 3: time 0.5 is not after"), flow::WaveformError);
 }

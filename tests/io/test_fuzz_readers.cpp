@@ -1,4 +1,5 @@
-// Seeded random-mutation fuzzing of the text readers and the scene loader (issue 23, evidence):
+// Seeded random-mutation fuzzing of the text readers (numeric tables, waveforms, probes, PIV CSV
+// and Tecplot, reference tables) and the scene loader (issue 23, evidence):
 // each good input is mutated (bytes flipped, deleted, duplicated; hostile tokens such as nan,
 // 1e999, ",", "=", "[", quotes and line breaks inserted; lines repeated or dropped) a fixed
 // number of times with a fixed seed, and each reader must either accept the result or throw its
@@ -20,6 +21,7 @@
 #include "io/piv_data.hpp"
 #include "io/probes.hpp"
 #include "io/scene.hpp"
+#include "io/waveform_table.hpp"
 
 namespace fs = std::filesystem;
 using namespace valsalva;
@@ -141,6 +143,26 @@ TEST_CASE("fuzzed numeric tables (probe series, waveforms) fail only with TableE
       io::read_numeric_table(f, io::TableHeader::optional);
       io::read_numeric_table(f, io::TableHeader::optional, 2, true);
       io::read_probe_csv(f);
+      io::read_waveform_table(f);
+    });
+  }
+}
+
+TEST_CASE("fuzzed reference tables (quoted fields, blank-separated) fail only with TableError") {
+  for (const char* seed : {"validation/refdata/ghia1982_cavity/ghia1982_u_vertical_centreline.csv",
+                           "validation/refdata/turek_hron_fsi/turek_hron_reference_values.csv",
+                           "validation/refdata/tgv_re1600/spectral_Re1600_512.gdiag"}) {
+    fuzz(source / seed, 300, 5, [](const fs::path& f) {
+      io::TableFormat quoted;
+      quoted.quoted = true;
+      quoted.maskable = [](const std::string& name) { return name.size() % 2 == 0; };
+      io::read_numeric_table(f, quoted);
+      io::read_numeric_table(f, io::TableHeader::none, 4, true);
+      // The Turek-Hron reader's way: a header, then fields read one by one.
+      io::TableLines lines(f, quoted);
+      if (lines.next()) lines.header(lines.fields());
+      while (lines.next())
+        for (const auto& field : lines.fields()) lines.number(field, "x", true);
     });
   }
 }

@@ -55,6 +55,11 @@ TEST_CASE("every bad mesh file gives its specific message") {
       {"interior_face.msh", {"lies inside", "'wall'"}},
       {"undefined_node.msh", {"Wrong node index 42"}},
       {"not_a_mesh.msh", {"truncated or not a Gmsh mesh"}},
+      // Was a bare std::bad_alloc from inside Gmsh (issue 23, item 11).
+      {"huge_node_count.msh",
+       {":15: the $Nodes header declares 1e+15 nodes", "hold at most 65 ", "corrupt header"}},
+      {"huge_element_count.msh",
+       {":21: the $Elements header declares 1e+15 elements", "hold at most 131 "}},
   };
   for (const auto& c : cases) {
     const auto file = data / "bad" / c.file;

@@ -45,7 +45,6 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include "flow/boundary_conditions.hpp"
@@ -55,6 +54,7 @@
 #include "flow/projection_rk4.hpp"
 #include "flow/run_diagnostics.hpp"
 #include "io/box_generator.hpp"
+#include "io/numeric_table.hpp"
 #include "validation/case.hpp"
 
 namespace valsalva::validation {
@@ -65,33 +65,13 @@ struct Profile {
   std::vector<double> s, value;  // position along the line, velocity component
 };
 
-// Column `re_column` ("Re100") of a Ghia table (comment lines start with '#').
+// Column `re_column` ("Re100") of a Ghia table against its first column (y or x), read by the
+// strict table reader (header of names, '#' comments).
 Profile read_ghia(const std::filesystem::path& file, const std::string& re_column) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error("cavity: cannot open " + file.string());
-  std::string line;
-  int column = -1, line_no = 0;
+  const auto table = io::read_numeric_table(file, io::TableHeader::required);
   Profile p;
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
-    if (column < 0) {
-      for (std::size_t k = 0; k < cells.size(); ++k)
-        if (cells[k] == re_column) column = static_cast<int>(k);
-      if (column < 0)
-        throw std::runtime_error(fmt::format("cavity: {}:{}: no column '{}' in the header",
-                                             file.string(), line_no, re_column));
-      continue;
-    }
-    if (static_cast<int>(cells.size()) <= column)
-      throw std::runtime_error(
-          fmt::format("cavity: {}:{}: fewer than {} columns", file.string(), line_no, column + 1));
-    p.s.push_back(std::stod(cells[0]));
-    p.value.push_back(std::stod(cells[column]));
-  }
+  p.value = table.column(re_column);
+  for (const auto& row : table.rows) p.s.push_back(row[0]);
   return p;
 }
 

@@ -6,16 +6,15 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
-#include <fstream>
 #include <memory>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
 
 #include "flow/poisson_weights.hpp"
 #include "flow/projection_rk4.hpp"
 #include "flow/run_diagnostics.hpp"
 #include "io/box_generator.hpp"
+#include "io/numeric_table.hpp"
 #include "les/subgrid_viscosity.hpp"
 
 namespace valsalva::validation {
@@ -120,16 +119,10 @@ TgvLesResult run_tgv_les(const TgvLesSpec& spec, const TgvBox& box) {
 }
 
 std::vector<std::array<double, 3>> read_tgv_reference(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error("cannot open " + file.string());
+  // time, energy, dissipation rate, enstrophy; blank-separated under '#' comments.
+  const auto table = io::read_numeric_table(file, io::TableHeader::none, 4, true);
   std::vector<std::array<double, 3>> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream s(line);
-    std::array<double, 3> row{};
-    if (s >> row[0] >> row[1] >> row[2]) rows.push_back(row);
-  }
+  for (const auto& r : table.rows) rows.push_back({r[0], r[1], r[2]});
   if (rows.size() < 2) throw std::runtime_error("no data rows in " + file.string());
   return rows;
 }

@@ -3,57 +3,41 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
 #include <limits>
 #include <stdexcept>
 #include <vector>
+
+#include "io/numeric_table.hpp"
 
 namespace valsalva::validation {
 
 namespace {
 
-std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> out;
-  std::string cur;
-  bool quoted = false;
-  for (char c : line) {
-    if (c == '"')
-      quoted = !quoted;
-    else if (c == ',' && !quoted) {
-      out.push_back(cur);
-      cur.clear();
-    } else
-      cur += c;
-  }
-  out.push_back(cur);
-  return out;
+// A number of field i of a row; NaN for an empty field (or "rigid") when `optional`. Errors name
+// FILE:LINE:COLUMN and the column (io/numeric_table.hpp).
+double parse(const io::TableLines& lines, const std::vector<io::TableField>& f, std::size_t i,
+             const std::string& what, bool optional = false) {
+  if (i >= f.size())
+    throw lines.error(1, fmt::format("{} fields, no column {} ({})", f.size(), i + 1, what));
+  if (optional && (f[i].text.empty() || f[i].text == "rigid"))
+    return std::numeric_limits<double>::quiet_NaN();
+  return lines.number(f[i], what);
 }
 
-// A number, NaN for an empty field (or "rigid") when `optional`.
-double parse(const std::vector<std::string>& f, std::size_t i, const std::filesystem::path& file,
-             int line, const std::string& what, bool optional = false) {
-  const std::string s = i < f.size() ? f[i] : "";
-  if (optional && (s.empty() || s == "rigid")) return std::numeric_limits<double>::quiet_NaN();
-  try {
-    std::size_t pos = 0;
-    const double v = std::stod(s, &pos);
-    if (pos == s.size()) return v;
-  } catch (const std::exception&) {
-  }
-  throw std::runtime_error(
-      fmt::format("{}:{}: cannot read {} from '{}'", file.string(), line, what, s));
-}
-
-// Calls row(fields, line) for every data row whose first field is `case_name`.
+// Calls row(lines, fields) for every data row whose first field is `case_name`, after a header
+// line of unique column names.
 template <class Row>
 void for_rows(const std::filesystem::path& file, const std::string& case_name, Row row) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error(fmt::format("cannot open {}", file.string()));
-  std::string line;
-  for (int ln = 1; std::getline(in, line); ++ln) {
-    if (line.empty() || line[0] == '#') continue;
-    const auto f = split_csv(line);
-    if (f[0] == case_name) row(f, ln);
+  io::TableFormat format;
+  format.quoted = true;
+  io::TableLines lines(file, format);
+  if (!lines.next()) throw std::runtime_error(fmt::format("{}: no header line", file.string()));
+  const auto width = lines.header(lines.fields()).size();
+  while (lines.next()) {
+    const auto f = lines.fields();
+    if (f.size() != width)
+      throw lines.error(1, fmt::format("{} fields, the header has {}", f.size(), width));
+    if (f[0].text == case_name) row(lines, f);
   }
 }
 
@@ -64,16 +48,16 @@ TurekHronParameters read_turek_hron_parameters(const std::filesystem::path& dir,
   const auto file = dir / "turek_hron_parameters.csv";
   std::optional<TurekHronParameters> found;
   // case,rho_s,nu_s,mu_s,E_s,rho_f,nu_f,Ubar,Re,g,type
-  for_rows(file, case_name, [&](const std::vector<std::string>& f, int ln) {
+  for_rows(file, case_name, [&](const io::TableLines& l, const std::vector<io::TableField>& f) {
     TurekHronParameters p;
-    p.rho_s = parse(f, 1, file, ln, "rho_s", true);
-    p.nu_s = parse(f, 2, file, ln, "nu_s", true);
-    p.mu_s = parse(f, 3, file, ln, "mu_s", true);
-    p.E_s = parse(f, 4, file, ln, "E_s", true);
-    p.rho_f = parse(f, 5, file, ln, "rho_f");
-    p.nu_f = parse(f, 6, file, ln, "nu_f");
-    p.U_bar = parse(f, 7, file, ln, "Ubar");
-    p.g = parse(f, 9, file, ln, "g");
+    p.rho_s = parse(l, f, 1, "rho_s", true);
+    p.nu_s = parse(l, f, 2, "nu_s", true);
+    p.mu_s = parse(l, f, 3, "mu_s", true);
+    p.E_s = parse(l, f, 4, "E_s", true);
+    p.rho_f = parse(l, f, 5, "rho_f");
+    p.nu_f = parse(l, f, 6, "nu_f");
+    p.U_bar = parse(l, f, 7, "Ubar");
+    p.g = parse(l, f, 9, "g");
     found = p;
   });
   if (!found)
@@ -87,11 +71,10 @@ TurekHronReference read_turek_hron_reference(const std::filesystem::path& dir,
   const auto file = dir / "turek_hron_reference_values.csv";
   std::optional<TurekHronReference> found;
   // case,quantity,mean,amplitude,frequency_Hz,set,note
-  for_rows(file, case_name, [&](const std::vector<std::string>& f, int ln) {
-    if (f.size() < 6 || f[1] != quantity || f[5] != set) return;
-    found =
-        TurekHronReference{parse(f, 2, file, ln, "mean"), parse(f, 3, file, ln, "amplitude", true),
-                           parse(f, 4, file, ln, "frequency_Hz", true)};
+  for_rows(file, case_name, [&](const io::TableLines& l, const std::vector<io::TableField>& f) {
+    if (f[1].text != quantity || f[5].text != set) return;
+    found = TurekHronReference{parse(l, f, 2, "mean"), parse(l, f, 3, "amplitude", true),
+                               parse(l, f, 4, "frequency_Hz", true)};
   });
   if (!found)
     throw std::runtime_error(fmt::format("{}: no row for case {}, quantity {}, set {}",

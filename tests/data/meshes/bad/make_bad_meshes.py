@@ -89,6 +89,18 @@ def write41(name, nodes, tets, triangles, node_tags=None):
         f.write("\n".join(lines) + "\n")
 
 
+def edit(name, replacements):
+    """Replaces text in a written file (each `old` must occur)."""
+    path = os.path.join(HERE, name)
+    with open(path) as f:
+        text = f.read()
+    for old, new in replacements:
+        assert old in text, old
+        text = text.replace(old, new)
+    with open(path, "w") as f:
+        f.write(text)
+
+
 NAMES = [(2, 1, "wall"), (3, 2, "fluid")]
 TETS = kuhn_tets()
 BOUNDARY, INTERIOR = boundary_triangles(TETS)
@@ -156,6 +168,13 @@ def main():
     write22("interior_face.msh", NODES, cube(extra=[(2, 1, 3, list(INTERIOR[0]))]), NAMES)
     # An element that refers to node 42, which the file does not define.
     write22("undefined_node.msh", NODES, cube(extra=[(4, 2, 1, [1, 2, 3, 42])]), NAMES)
+    # Headers that claim 1e15 nodes or elements in a file of a few hundred bytes: Gmsh would
+    # allocate for all of them (a bare std::bad_alloc); refused from the file's size.
+    huge = "1000000000000000"
+    write41("huge_node_count.msh", NODES, TETS, BOUNDARY)
+    edit("huge_node_count.msh", [("1 8 1 8\n3 1 0 8\n", f"1 {huge} 1 {huge}\n3 1 0 {huge}\n")])
+    write22("huge_element_count.msh", NODES, cube(), NAMES)
+    edit("huge_element_count.msh", [("$Elements\n18\n", f"$Elements\n{huge}\n")])
     # Not a mesh at all.
     with open(os.path.join(HERE, "not_a_mesh.msh"), "w") as f:
         f.write("solid cube\n  facet normal 0 0 1\nendsolid cube\n")
