@@ -3,9 +3,12 @@
 #include <fmt/format.h>
 
 #include <charconv>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace valsalva::les {
 
@@ -13,10 +16,18 @@ namespace {
 constexpr double per_cm = 100.0;     // 1/cm -> 1/m
 constexpr double cm3_per_s2 = 1e-6;  // cm^3/s^2 -> m^3/s^2
 
+// A finite number spelled as the whole token (from_chars also reads "inf" and "nan").
 bool parse_number(const std::string& token, double& value) {
   const char* end = token.data() + token.size();
   const auto r = std::from_chars(token.data(), end, value);
-  return r.ec == std::errc() && r.ptr == end;
+  return r.ec == std::errc() && r.ptr == end && std::isfinite(value);
+}
+
+bool any_number(const std::vector<std::string>& tokens) {
+  double v = 0;
+  for (const auto& t : tokens)
+    if (parse_number(t, v)) return true;
+  return false;
 }
 }  // namespace
 
@@ -49,10 +60,12 @@ CbcSpectra read_cbc_table3(const std::string& path) {
     if (tok.empty()) continue;
     double k = 0.0;
     if (!parse_number(tok[0], k)) {
-      if (in_data)
-        throw std::runtime_error(
-            fmt::format("{}:{}: expected a wavenumber, got '{}'", path, line_no, tok[0]));
-      continue;  // header line
+      // A header line holds no number at all (recognised, not guessed): a data row with a typo
+      // in its wavenumber is an error, not a header.
+      if (in_data || any_number(tok))
+        throw std::runtime_error(fmt::format(
+            "{}:{}: expected a finite wavenumber, got '{}'", path, line_no, tok[0]));
+      continue;
     }
     in_data = true;
     if (tok.size() != 4)

@@ -121,4 +121,26 @@ TEST_CASE("CBC reader: malformed input names file and line") {
   CHECK(msg.find("'x'") != std::string::npos);
   std::remove(path.c_str());
   CHECK_THROWS_AS(read_cbc_table3("does/not/exist.txt"), std::runtime_error);
+  // A typo in the first data row is not taken for a header; inf is not a value.
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"k  t=42 t=98 t=171\n0.2O 1.29E+2 1.06E+2 9.20E+1\n0.25 2.30E+2 1.96E+2 1.20E+2\n",
+       ":2: expected a finite wavenumber, got '0.2O'"},
+      {"k  t=42 t=98 t=171\n0.20 1.29E+2 inf 9.20E+1\n0.25 2.30E+2 1.96E+2 1.20E+2\n",
+       ":2: E at tU0/M = 98: 'inf'"},
+  };
+  for (const auto& [text, expected] : bad) {
+    {
+      std::ofstream out(path);
+      out << text;
+    }
+    std::string why;
+    try {
+      read_cbc_table3(path);
+    } catch (const std::runtime_error& e) {
+      why = e.what();
+    }
+    CAPTURE(why);
+    CHECK(why.find(path + expected) != std::string::npos);
+  }
+  std::remove(path.c_str());
 }
