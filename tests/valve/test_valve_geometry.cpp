@@ -27,7 +27,7 @@ std::string refusal(const std::vector<std::string>& settings) {
 TEST_CASE("valve geometry: defaults and derived angles") {
   const valve::ValveGeometry g;
   CHECK_NOTHROW(valve::validate(g));
-  CHECK(valve::valve_keys().size() == 18);
+  CHECK(valve::valve_keys().size() == 19);
   const double deg = M_PI / 180;
   CHECK(g.commissure_angle(0) == doctest::Approx(90 * deg));
   CHECK(g.commissure_angle(2) == doctest::Approx(330 * deg));
