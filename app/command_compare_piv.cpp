@@ -101,7 +101,8 @@ int run(const Options& o) {
     if (bin >= int(phase_times.size()))
       throw std::invalid_argument(fmt::format(
           "compare-piv: --bin {} but the statistics have {} bins", bin, phase_times.size()));
-    const auto sim = io::read_statistics_bin(dir / fmt::format("{}_{:06d}.h5", name, bin), mesh, mesh_file);
+    const auto sim =
+        io::read_statistics_bin(dir / fmt::format("{}_{:06d}.h5", name, bin), mesh, mesh_file);
     const io::PivSampler sampler(locator, plane, frame);
     auto c = io::compare_frame(frame, sampler, sim);
     const auto csv = fs::path(o.out) / fmt::format("frame_{:03d}.csv", f);

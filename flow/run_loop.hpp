@@ -118,7 +118,7 @@ struct RunSummary {
   std::int64_t steps = 0;
   double time = 0;
   double wall_seconds = 0;
-  double max_divergence = 0;  // over all steps, 1/s
+  double max_divergence = 0;         // over all steps, 1/s
   double max_divergence_number = 0;  // StepReport::divergence_number, max over all steps
   int max_poisson_iterations = 0;
   double max_mass_imbalance = 0;  // max over steps of |sum of all boundary fluxes|, m^3/s

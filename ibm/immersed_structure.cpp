@@ -66,7 +66,8 @@ void ImmersedStructure::gather(const Eigen::Matrix3Xd& all, Eigen::Matrix3Xd& co
 void ImmersedStructure::locate(const Eigen::Matrix3Xd& x) {
   gather(x, wrapped_);
   if (options_.box)
-    for (int a = 0; a < wrapped_.cols(); ++a) wrapped_.col(a) = wrap_into(*options_.box, wrapped_.col(a));
+    for (int a = 0; a < wrapped_.cols(); ++a)
+      wrapped_.col(a) = wrap_into(*options_.box, wrapped_.col(a));
   transfer_.locate(as_points(wrapped_));
 }
 

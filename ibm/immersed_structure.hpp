@@ -46,8 +46,7 @@ struct PeriodicBox {
 // x moved by whole periods into [origin, origin + length) along the periodic directions.
 inline Eigen::Vector3d wrap_into(const PeriodicBox& box, Eigen::Vector3d x) {
   for (int d = 0; d < 3; ++d)
-    if (box.periodic[d])
-      x[d] -= box.length[d] * std::floor((x[d] - box.origin[d]) / box.length[d]);
+    if (box.periodic[d]) x[d] -= box.length[d] * std::floor((x[d] - box.origin[d]) / box.length[d]);
   return x;
 }
 

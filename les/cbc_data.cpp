@@ -63,8 +63,8 @@ CbcSpectra read_cbc_table3(const std::string& path) {
       // A header line holds no number at all (recognised, not guessed): a data row with a typo
       // in its wavenumber is an error, not a header.
       if (in_data || any_number(tok))
-        throw std::runtime_error(fmt::format(
-            "{}:{}: expected a finite wavenumber, got '{}'", path, line_no, tok[0]));
+        throw std::runtime_error(
+            fmt::format("{}:{}: expected a finite wavenumber, got '{}'", path, line_no, tok[0]));
       continue;
     }
     in_data = true;

@@ -39,9 +39,9 @@ struct LeafletPositions {
 };
 
 struct OrificeOptions {
-  int rings = 512;           // radial cells of the polar grid
-  int sectors = 0;           // angular cells; 0: the integer nearest 2 pi rings (square at rim)
-  int face_subdivision = 4;  // n: each boundary face cut into n x n quadrilaterals
+  int rings = 512;              // radial cells of the polar grid
+  int sectors = 0;              // angular cells; 0: the integer nearest 2 pi rings (square at rim)
+  int face_subdivision = 4;     // n: each boundary face cut into n x n quadrilaterals
   bool list_uncovered = false;  // fill OrificeArea::uncovered (to draw where the holes are)
 };
 
@@ -58,7 +58,7 @@ struct OrificeArea {
   double opening_ratio = 0;  // area / disc_area
   double raster_error = 0;   // estimate of the rasterisation error of `area` [m^2], see above
   int rings = 0, sectors = 0;
-  long triangles = 0;  // projected triangles
+  long triangles = 0;                    // projected triangles
   std::vector<UncoveredCell> uncovered;  // only with OrificeOptions::list_uncovered
 };
 

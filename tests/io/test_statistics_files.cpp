@@ -51,9 +51,10 @@ TEST_CASE("statistics files: read back, and a bin from another run refused") {
   REQUIRE(own.mean_velocity.size() == 3 * 729);
   CHECK(own.mean_velocity[0] == doctest::Approx(2.0));
   CHECK(own.rms_velocity[0] == doctest::Approx(1.0));
-  const std::string expected = "b/stats_000000.h5' dataset 'mean_velocity' has 3000 values (3 "
-                               "per node: 1000 nodes), but the statistics mesh '" +
-                               mesh_a.string() + "' has 729 nodes";
+  const std::string expected =
+      "b/stats_000000.h5' dataset 'mean_velocity' has 3000 values (3 "
+      "per node: 1000 nodes), but the statistics mesh '" +
+      mesh_a.string() + "' has 729 nodes";
   CHECK_THROWS_WITH(io::read_statistics_bin(dir / "b" / "stats_000000.h5", mesh, mesh_a),
                     doctest::Contains(expected.c_str()));
   fs::remove_all(dir);

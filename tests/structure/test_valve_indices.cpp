@@ -117,7 +117,8 @@ TEST_CASE("orifice area: the uncovered cells listed are the gaps, and sum to the
     // (R / rings radially, 2 pi r / sectors around) away from them would be misclassified.
     const double deg = std::atan2(c.centre.y(), c.centre.x()) * 180 / M_PI;
     const double into_gap = std::remainder(deg - 117.3, 120.0);  // 0 at a gap's centre
-    const double r = c.centre.norm(), slack_deg = 180 / M_PI * (R / o.rings) / r + 360.0 / a.sectors;
+    const double r = c.centre.norm(),
+                 slack_deg = 180 / M_PI * (R / o.rings) / r + 360.0 / a.sectors;
     if (std::abs(into_gap) > 10 + slack_deg) ++outside_gaps;
     CHECK(r <= R);
   }
