@@ -26,6 +26,7 @@ Case ib_leakage_case();
 Case turek_hron_fsi_case();
 Case contact_patch_case();
 Case hertz_contact_case();
+Case time_order_case();
 
 const std::vector<Case>& all_cases() {
   // clang-format off
@@ -51,6 +52,7 @@ const std::vector<Case>& all_cases() {
       turek_hron_fsi_case(),
       contact_patch_case(),
       hertz_contact_case(),
+      time_order_case(),
   };
   // clang-format on
   return cases;
