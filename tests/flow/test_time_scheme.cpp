@@ -103,8 +103,9 @@ TEST_CASE("rk4_classic is 4th order and rk4_jameson 2nd order on a nonlinear ODE
       const double e1 = ode_error(local, scheme, project, 8, &stage_times);
       const double e2 = ode_error(local, scheme, project, 16);
       const double order = std::log2(e1 / e2);
-      MESSAGE(flow::time_scheme_name(scheme) << (project ? " + project_stages" : "") << ": errors "
-                                             << e1 << ", " << e2 << ", order " << order);
+      const std::string name =
+          flow::time_scheme_name(scheme) + (project ? " + project_stages" : "");
+      MESSAGE(name << ": errors " << e1 << ", " << e2 << ", order " << order);
       const auto c = flow::tableau(scheme).c;
       REQUIRE(stage_times.size() == 4);
       for (int k = 0; k < 4; ++k)

@@ -11,11 +11,13 @@
 // log cpu = a + s log e per variant, evaluated at rk4_jameson's error of the middle level).
 // The spatial error is the same in every run of one variant and cancels: this measures the
 // time integration alone (plus the splitting of the projection).
-// Asserted: the observed order of the two finest levels of each variant >= 1.8 (the splitting
-// of the incremental projection makes every variant 2nd order at best; 1.8 leaves 0.2 for the
-// reference run's own error, which biases the finest pair by at most 2^2/8^2, i.e. 0.09 in the
-// order), and the measured errors and cost ratios against the stored ones of this case (see
-// the reference table below).
+// Asserted: the observed order of the two finest levels of each variant >= 1.8 (every variant
+// is 2nd order: the splitting of the incremental projection; 1.8 leaves room for the reference
+// run's own error, which moves the finest pair's order by (4 - 1/64)/(1 - 1/64), +0.02, and for
+// the pre-asymptotic range of the quick run); rk4_classic's error within 2 % of rk4_jameson's
+// and its CPU time at equal error at least 0.8 of it; with project_stages, an error at most
+// rk4_jameson's and a CPU time at equal error at least rk4_jameson's (the reason the default
+// is rk4_jameson without stage projections: the check fails when that stops being true).
 // CSV: errors.csv; plot.py makes time_order.png (error against dt and against CPU time).
 #include <fmt/format.h>
 #include <fmt/os.h>
@@ -91,6 +93,7 @@ void run(const Context& ctx, Report& report) {
                    n, t_end, l, level.run.steps, level.run.dt, level.error, level.relative,
                    level.order, level.run.cpu_seconds, level.run.wall_seconds,
                    level.run.max_poisson_iterations);
+      if (csv) csv->flush();
       results.push_back(std::move(level));
     }
     if (csv)
@@ -101,14 +104,29 @@ void run(const Context& ctx, Report& report) {
                Check::at_least);
     all.push_back(std::move(results));
   }
+  // Equal error: rk4_jameson's at the middle level (inside every variant's range of errors).
   const double target = all[0][static_cast<std::size_t>(levels / 2)].error;
   const double cpu_jameson = cpu_at_error(all[0], target);
   for (std::size_t v = 1; v < variants.size(); ++v) {
-    const auto& finest = all[v].back();
-    report.add(variants[v].name() + ": error / rk4_jameson's at the finest dt",
-               finest.error / all[0].back().error, 1.0, 1e300, Check::at_most);
-    report.add(variants[v].name() + ": CPU / rk4_jameson's at equal error",
-               cpu_at_error(all[v], target) / cpu_jameson, 1.0, 1e300, Check::at_most);
+    const double error_ratio = all[v].back().error / all[0].back().error;
+    const double cpu_ratio = cpu_at_error(all[v], target) / cpu_jameson;
+    const std::string name = variants[v].name();
+    if (!variants[v].project_stages) {
+      // The same splitting error dominates both schemes: equal errors (measured 1.001 quick,
+      // see docs/validation.md), and the same work per step (timing noise of a shared machine
+      // up to ~10 %).
+      report.add(name + ": error / rk4_jameson's at the finest dt", error_ratio, 1.0, 0.02);
+      report.add(name + ": CPU / rk4_jameson's at equal error", cpu_ratio, 1.0, 0.2,
+                 Check::at_least);
+    } else {
+      // Projecting the stages removes part of the splitting error, never adds to it; it costs
+      // three Poisson solves more per step, more than the smaller error saves (the default
+      // stays rk4_jameson without it while this ratio is above 1).
+      report.add(name + ": error / rk4_jameson's at the finest dt", error_ratio, 1.0, 0.0,
+                 Check::at_most);
+      report.add(name + ": CPU / rk4_jameson's at equal error", cpu_ratio, 1.0, 0.0,
+                 Check::at_least);
+    }
   }
 }
 
