@@ -42,8 +42,8 @@ struct TaylorGreen3d {
   Eigen::Vector3d velocity(const Eigen::Vector3d& x) const {
     const Eigen::Vector3d a = x / length;
     const double cz = std::cos(a.z());
-    return {u0 * std::sin(a.x()) * std::cos(a.y()) * cz, -u0 * std::cos(a.x()) * std::sin(a.y()) * cz,
-            0.0};
+    return {u0 * std::sin(a.x()) * std::cos(a.y()) * cz,
+            -u0 * std::cos(a.x()) * std::sin(a.y()) * cz, 0.0};
   }
   double pressure(const Eigen::Vector3d& x) const {
     const Eigen::Vector3d a = 2 * x / length;

@@ -7,8 +7,10 @@
 // rk4_jameson (the default: c = 1/4, 1/3, 1/2, v* = w_4 with coefficient 1) is 4th order in
 // time for linear autonomous right-hand sides and 2nd order for the nonlinear momentum
 // equation; rk4_classic is the classic 4th-order scheme. Either way only v* is projected: the
-// stages w_1..w_3 carry the divergence that grad(p^n) leaves, O(dt), and see the old pressure
-// (the splitting limits the velocity to 2nd order in time; validation/time_order measures it).
+// stages w_1..w_3 carry the divergence that grad(p^n) leaves and see the old pressure. Measured
+// (validation/time_order, 3D Taylor-Green Re 1600): every variant, with project_stages too, is
+// 2nd order in time, rk4_classic with rk4_jameson's error; the limit is mainly the approximate
+// projection (the nodal velocity is not discretely divergence-free), see docs/validation.md.
 // ProjectionOptions::project_stages projects every stage velocity as well (Sanderse & Koren,
 // J. Comput. Phys. 231, 3041-3063, 2012, the "projection at every stage" of their explicit RK
 // methods for the index-2 DAE): w_k* as above, lap(dp_k) = rho div(w_k*) / (c_k dt), w_k =
@@ -98,9 +100,9 @@ struct ProjectionOptions {
 };
 
 struct StepReport {
-  PoissonResult poisson;  // the end-of-step projection
+  PoissonResult poisson;             // the end-of-step projection
   int stage_poisson_iterations = 0;  // summed over the stage projections (project_stages)
-  double max_divergence = 0;  // max |div v^{n+1}| over owned nodes, 1/s
+  double max_divergence = 0;         // max |div v^{n+1}| over owned nodes, 1/s
   // max |div v^{n+1}| h / max |v^{n+1}| with h = (dual volume)^(1/3) per node: the projection's
   // divergence error as a fraction of the resolved velocity gradient, comparable between meshes
   // with graded cells (0 when the flow is at rest).

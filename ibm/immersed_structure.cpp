@@ -147,8 +147,7 @@ void ImmersedStructure::finish_step(const flow::FlowState& state) {
     interpolate(state.velocity);
   }
   // X^{n+1} = X^n + dt sum_k b_k U_k (per_step: U(u^{n+1}, X^n) alone).
-  if (options_.mode == CouplingMode::per_stage && !rk_.last_stage_only())
-    velocity_ = velocity_sum_;
+  if (options_.mode == CouplingMode::per_stage && !rk_.last_stage_only()) velocity_ = velocity_sum_;
   x_ = x_n_ + dt * velocity_;
 }
 

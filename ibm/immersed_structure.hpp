@@ -138,7 +138,7 @@ class ImmersedStructure {
   Eigen::Matrix3Xd x_, x_n_, x_stage_, velocity_, force_;
   flow::RungeKuttaTableau rk_;
   Eigen::Matrix3Xd velocity_sum_;  // sum b_k U_k over the stages so far (rk4_classic only)
-  std::vector<int> coupled_;  // markers of the coupling: every node but the fixed ones
+  std::vector<int> coupled_;       // markers of the coupling: every node but the fixed ones
   Eigen::Matrix3Xd wrapped_, coupled_force_, coupled_velocity_;  // per coupled marker
   double t_n_ = 0;
   double min_det_ = 1;

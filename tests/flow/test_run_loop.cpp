@@ -271,7 +271,8 @@ fields = ["vorticity"]
 }
 
 TEST_CASE("time.scheme and time.project_stages become run options; unknown schemes are refused") {
-  const auto defaults = io::flow_run_options(io::parse_scene("[mesh]\nsource = \"box\"\n", "d.toml"), "dir");
+  const auto defaults =
+      io::flow_run_options(io::parse_scene("[mesh]\nsource = \"box\"\n", "d.toml"), "dir");
   CHECK(defaults.projection.time_scheme == flow::TimeScheme::rk4_jameson);
   CHECK_FALSE(defaults.projection.project_stages);
   const auto classic = io::flow_run_options(
@@ -283,11 +284,9 @@ TEST_CASE("time.scheme and time.project_stages become run options; unknown schem
   CHECK(classic.projection.project_stages);
   CHECK_THROWS_WITH_AS(
       io::parse_scene("[mesh]\nsource = \"box\"\n[time]\nscheme = \"rk4\"\n", "u.toml"),
-      doctest::Contains("u.toml:4:10: key 'time.scheme': unknown value \"rk4\"; did you mean "),
+      doctest::Contains("u.toml:4:10: key 'time.scheme': unknown value \"rk4\" (accepted: "
+                        "\"rk4_jameson\", \"rk4_classic\")"),
       io::SceneError);
-  CHECK_THROWS_WITH_AS(
-      io::parse_scene("[mesh]\nsource = \"box\"\n[time]\nscheme = \"rk4\"\n", "u.toml"),
-      doctest::Contains("(accepted: \"rk4_jameson\", \"rk4_classic\")"), io::SceneError);
 }
 
 TEST_CASE("the 3D Taylor-Green initial state: closed-form pressure and a consistent start") {
@@ -309,12 +308,10 @@ TEST_CASE("the 3D Taylor-Green initial state: closed-form pressure and a consist
     CHECK(std::abs(grad.trace()) < 1e-6 * tg.u0 / tg.length);  // divergence-free
   }
   // On the periodic 16^3 box of side 2 pi: the run loop starts from the closed form, and its
-  // first pressure increment is a small fraction of the pressure (measured 0.029: the O(h^2)
+  // first pressure increment is a small fraction of the pressure (measured 0.035: the O(h^2)
   // difference of the discrete pressure; at rest with p = 0 it would be 1).
-  io::BoxSpec box;
-  box.cells = {16, 16, 16};
+  auto box = test::periodic_box("hexa", 16);
   box.length = Eigen::Vector3d::Constant(2 * std::numbers::pi);
-  box.periodic = {true, true, true};
   const auto mesh = io::generate_box(box);
   const auto metrics = flow::compute_dual_metrics(mesh);
   const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
@@ -334,7 +331,8 @@ TEST_CASE("the 3D Taylor-Green initial state: closed-form pressure and a consist
   CHECK(local.comm.max(worst) == 0);
   loop.run();
   double dp = 0;
-  for (int j = 0; j < local.num_owned; ++j) dp = std::max(dp, std::abs(loop.pressure_increment()[j]));
+  for (int j = 0; j < local.num_owned; ++j)
+    dp = std::max(dp, std::abs(loop.pressure_increment()[j]));
   dp = local.comm.max(dp), p_max = local.comm.max(p_max);
   MESSAGE("taylor_green_3d 16^3: max |dp| / max |p| after one step = " << dp / p_max);
   CHECK(dp < 0.1 * p_max);
@@ -356,9 +354,10 @@ length = 1.0
   box.periodic = {true, true, true};
   CHECK_NOTHROW(io::check_initial_state(scene, io::generate_box(box)));
   box.periodic = {true, true, false};
-  CHECK_THROWS_WITH_AS(io::check_initial_state(scene, io::generate_box(box)),
-                       doctest::Contains("the Taylor-Green vortex is periodic in z, the mesh is not "
-                                         "(no periodic pair along z) (accepted: a mesh periodic in "
-                                         "x, y and z)"),
-                       io::SceneError);
+  CHECK_THROWS_WITH_AS(
+      io::check_initial_state(scene, io::generate_box(box)),
+      doctest::Contains("the Taylor-Green vortex is periodic in z, the mesh is not "
+                        "(no periodic pair along z) (accepted: a mesh periodic in "
+                        "x, y and z)"),
+      io::SceneError);
 }

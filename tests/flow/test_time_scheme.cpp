@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "field_test_utils.hpp"
-#include "flow/projection_rk4.hpp"
 #include "flow/initial_condition.hpp"
+#include "flow/projection_rk4.hpp"
 #include "flow/time_scheme.hpp"
 
 using namespace valsalva;
@@ -29,8 +29,12 @@ using Vec = Eigen::Vector3d;
 
 namespace {
 
-double exact(double t) { return 1 / (1 + t) + std::sin(2 * t) / 2; }
-double exact_rate(double t) { return -1 / ((1 + t) * (1 + t)) + std::cos(2 * t); }
+double exact(double t) {
+  return 1 / (1 + t) + std::sin(2 * t) / 2;
+}
+double exact_rate(double t) {
+  return -1 / ((1 + t) * (1 + t)) + std::cos(2 * t);
+}
 
 // Error at t = 1 of `steps` steps of the uniform-velocity ODE; stage times of the first step.
 double ode_error(const flow::LocalMesh& local, flow::TimeScheme scheme, bool project, int steps,
@@ -113,8 +117,7 @@ TEST_CASE("rk4_classic is 4th order and rk4_jameson 2nd order on a nonlinear ODE
       MESSAGE(name << ": errors " << e1 << ", " << e2 << ", order " << order);
       const auto c = flow::tableau(scheme).c;
       REQUIRE(stage_times.size() == 4);
-      for (int k = 0; k < 4; ++k)
-        CHECK(stage_times[k] == doctest::Approx(c[k] / 8).epsilon(1e-14));
+      for (int k = 0; k < 4; ++k) CHECK(stage_times[k] == doctest::Approx(c[k] / 8).epsilon(1e-14));
       if (scheme == flow::TimeScheme::rk4_classic) {
         // Measured 3.9-4.0 (the asymptotic range starts near dt = 1/8 here).
         CHECK(order >= 3.8);

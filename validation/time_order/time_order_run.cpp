@@ -1,20 +1,15 @@
 // A fixed-dt 3D Taylor-Green run through flow::RunLoop; see time_order_run.hpp.
 #include "validation/time_order/time_order_run.hpp"
 
-#include <ctime>
+#include <cmath>
 #include <limits>
 
 #include "flow/run_loop.hpp"
+#include "validation/bench/bench_util.hpp"
 
 namespace valsalva::validation {
 
-namespace {
-double cpu_seconds() {
-  timespec c;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c);
-  return static_cast<double>(c.tv_sec) + 1e-9 * static_cast<double>(c.tv_nsec);
-}
-}  // namespace
+using bench::cpu_seconds;
 
 std::string TimeVariant::name() const {
   return flow::time_scheme_name(scheme) + (project_stages ? "+project_stages" : "");
