@@ -7,7 +7,6 @@
 #include <cmath>
 #include <iostream>
 
-#include "app/phase.hpp"
 #include "flow/dual_metrics.hpp"
 #include "flow/local_mesh.hpp"
 #include "flow/mesh_check.hpp"
@@ -23,11 +22,15 @@
 #include "io/scene_keys_les.hpp"
 #include "io/scene_keys_structure.hpp"
 #include "io/scene_keys_valve.hpp"
+#include "run/phase.hpp"
 #include "validation/case.hpp"
 
 namespace valsalva::app {
 
 namespace {
+
+using run::mesh_phase;
+using run::Phase;
 
 int world_rank() {
   int rank = 0;
@@ -41,9 +44,9 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 }  // namespace
 
-int check_scene(const std::filesystem::path& scene_file) {
+int check_scene(const std::filesystem::path& scene_file, const std::vector<std::string>& settings) {
   Phase phase("reading the scene " + scene_file.string());
-  const auto scene = io::load_scene(scene_file);
+  const auto scene = io::load_scene(scene_file, settings);
   phase.next(mesh_phase(scene));
   const auto mesh = io::build_mesh(scene);
   phase.next(fmt::format("computing the dual metrics of the mesh ({} nodes, {} cells)",

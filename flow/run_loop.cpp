@@ -244,7 +244,7 @@ RunSummary RunLoop::run() {
 
   while (t.end - state_.time > eps && (t.max_steps == 0 || step_ < t.max_steps)) {
     double remaining = t.end - state_.time;
-    if (fields && !out.interval_in_steps)
+    if (fields && !out.interval_in_steps && t.land_on_output)
       remaining = std::min(remaining, next_output - state_.time);
     dt = choose_dt(remaining);
     last_good_.velocity = state_.velocity;  // sizes match: no allocation

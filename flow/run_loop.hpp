@@ -32,6 +32,9 @@ struct TimeOptions {
   double cfl = 0.5;            // target max |u| dt / h
   double fourier = 0.2;        // target max nu dt / h^2
   std::int64_t max_steps = 0;  // 0 = no cap
+  // Shorten steps to land on every field output time; false = full steps only (fields at the
+  // first step at or after each output time), so that output does not change the results.
+  bool land_on_output = true;
 };
 
 // How progress reaches the terminal (rank 0's stdout): `lines`, one line per log_every steps

@@ -62,6 +62,14 @@ void declare_flow_keys(Schema& s) {
           "converges at 4th order on uniform hexahedra and split tetrahedra (Taylor-Green case); "
           "the Poisson matrix and the pressure damping at boundaries stay 2nd order; refused "
           "with an LES model; needs partition.ghost_layers >= 2");
+  s.choice("flow.viscous_weights", {"two_point", "stiffness"})
+      .def("two_point")
+      .unit_of("-")
+      .doc(
+          "Edge weights of the 2nd-order laminar viscous term: two_point = two-point weights "
+          "with the non-orthogonal correction from nodal gradients; stiffness = the Poisson "
+          "matrix's P1 stiffness weights without correction (on tetrahedra the median-dual flux "
+          "of the piecewise-linear velocity; the DFG cylinder benchmark uses it)");
   s.real("flow.velocity_limit")
       .def(50.0)
       .above(0)
@@ -97,6 +105,13 @@ void declare_flow_keys(Schema& s) {
       .at_least(0)
       .unit_of("-")
       .doc("Stop after this many steps even before time.end; 0 = no limit");
+  s.boolean("time.land_on_output")
+      .def(true)
+      .unit_of("-")
+      .doc(
+          "Shorten a step to land on each field output time (output.interval in s); false = "
+          "full steps only, the fields written at the first step at or after each output time, "
+          "so that writing fields cannot change the results (e.g. a fixed-dt benchmark)");
 
   s.section("poisson", "Pressure Poisson solver: hypre PCG preconditioned by BoomerAMG.");
   s.real("poisson.tolerance")
@@ -240,6 +255,7 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   o.projection.viscosity = scene.get<double>("flow.viscosity") / rho;
   o.projection.scheme = scene.get<std::string>("flow.scheme");
   o.projection.fourth_order_operators = scene.get<bool>("flow.fourth_order_operators");
+  o.projection.stiffness_viscous = scene.get<std::string>("flow.viscous_weights") == "stiffness";
   o.velocity_limit = scene.get<double>("flow.velocity_limit");
 
   o.time.end = scene.get<double>("time.end");
@@ -247,6 +263,7 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   o.time.cfl = scene.get<double>("time.cfl");
   o.time.fourier = scene.get<double>("time.fourier");
   o.time.max_steps = scene.get<std::int64_t>("time.max_steps");
+  o.time.land_on_output = scene.get<bool>("time.land_on_output");
 
   auto& p = o.projection.poisson;
   p.tolerance = scene.get<double>("poisson.tolerance");

@@ -112,6 +112,31 @@ TEST_CASE("Taylor-Green run: exact-solution error, output times, rank independen
   CHECK(diff < 1e-10);
 }
 
+TEST_CASE("time.land_on_output = false: full steps only, fields at the first step past") {
+  Setup s(16, MPI_COMM_WORLD);
+  auto options = tgv_options(0.5);
+  options.time.dt = 0.125;  // 4 full steps; output times 0.2 and 0.4 fall inside steps 2 and 4
+  options.output.interval = 0.2;
+  options.time.land_on_output = false;
+  Recorder rec;
+  flow::RunLoop loop(s.mesh, s.metrics, s.local, options, rec.sink());
+  const auto summary = loop.run();
+  CHECK(summary.steps == 4);
+  CHECK(summary.time == doctest::Approx(0.5).epsilon(1e-14));
+  // t = 0, then 0.25 (first step at or after 0.2), 0.5 (after 0.4; also the end).
+  REQUIRE(rec.writes.size() == 3);
+  CHECK(rec.writes[1].second == doctest::Approx(0.25).epsilon(1e-14));
+  CHECK(rec.writes[2].second == doctest::Approx(0.5).epsilon(1e-14));
+
+  // Landing on the output times (the default) splits those steps: 0.125, 0.2, 0.3, 0.4, 0.5.
+  options.time.land_on_output = true;
+  Recorder landing;
+  flow::RunLoop landed(s.mesh, s.metrics, s.local, options, landing.sink());
+  CHECK(landed.run().steps == 5);
+  REQUIRE(landing.writes.size() == 4);
+  CHECK(landing.writes[1].second == doctest::Approx(0.2).epsilon(1e-14));
+}
+
 TEST_CASE("vorticity of the Taylor-Green field is 2 U0/L sin x sin y to 2nd order") {
   Setup s(32, MPI_COMM_WORLD);
   auto options = tgv_options(0.0);
@@ -262,6 +287,15 @@ fields = ["vorticity"]
   CHECK(o.output.vorticity);
   CHECK_FALSE(o.output.velocity);
   CHECK(o.output.log_every == 10);
+  CHECK(o.time.land_on_output);  // the defaults
+  CHECK_FALSE(o.projection.stiffness_viscous);
+  const auto full_steps = io::parse_scene(
+      "[mesh]\nsource = \"box\"\n[time]\nland_on_output = false\n[flow]\n"
+      "viscous_weights = \"stiffness\"\n",
+      "l.toml");
+  const auto f = io::flow_run_options(full_steps, "dir");
+  CHECK_FALSE(f.time.land_on_output);
+  CHECK(f.projection.stiffness_viscous);
   const auto fractional = io::parse_scene(
       "[mesh]\nsource = \"box\"\n[output]\ninterval = 2.5\ninterval_unit = \"steps\"\n", "f.toml");
   CHECK_THROWS_WITH_AS(io::flow_run_options(fractional, "dir"),
