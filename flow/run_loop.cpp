@@ -41,9 +41,12 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
       state_.velocity[j] = tg.velocity(local.position[j], 0.0);
       state_.pressure[j] = tg.pressure(local.position[j], 0.0);
     }
+  } else if (ic.type == "cyclic_sines") {
+    for (int j = 0; j < n; ++j)
+      state_.velocity[j] = cyclic_sines(local.position[j], ic.velocity, ic.length);
   } else if (ic.type != "rest") {
     throw RunError("flow run: unknown initial.type '" + ic.type +
-                   "' (accepted: rest, taylor_green)");
+                   "' (accepted: rest, taylor_green, cyclic_sines)");
   }
   if (boundary_) {
     boundary_->impose_pressure(state_.pressure);
@@ -51,7 +54,21 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
     boundary_->impose(state_.velocity, 0.0);
   }
   last_good_ = state_;
-  if (options_.coupling.body_force) solver_.set_body_force(options_.coupling.body_force);
+  if (options_.forcing.type != ForcingSpec::Type::none) {
+    auto prescribed = forcing_density(local, options_.forcing);
+    solver_.set_body_force(
+        [prescribed = std::move(prescribed), coupled = options_.coupling.body_force](
+            int stage, double t, const VectorField& u, VectorField& f) {
+          if (!coupled) {
+            f = prescribed;
+            return;
+          }
+          coupled(stage, t, u, f);
+          for (std::size_t j = 0; j < f.size(); ++j) f[j] += prescribed[j];
+        });
+  } else if (options_.coupling.body_force) {
+    solver_.set_body_force(options_.coupling.body_force);
+  }
 }
 
 void RunLoop::resume(FlowState state, std::int64_t step, const ScalarField& pressure_increment,
@@ -108,8 +125,12 @@ double RunLoop::choose_dt(double remaining) {
           "time.dt");
   } else {
     dt = std::numeric_limits<double>::infinity();
-    if (rates_.convective > 0) dt = t.cfl / rates_.convective;
-    if (rates_.viscous > 0) dt = std::min(dt, t.fourier / rates_.viscous);
+    if (t.stability_fraction > 0) {
+      dt = t.stability_fraction * limit;
+    } else {
+      if (rates_.convective > 0) dt = t.cfl / rates_.convective;
+      if (rates_.viscous > 0) dt = std::min(dt, t.fourier / rates_.viscous);
+    }
     if (!std::isfinite(dt))
       throw RunError(
           "time.dt = 0 asks for a time step from time.cfl and time.fourier, but the "

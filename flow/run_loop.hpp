@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "flow/body_forcing.hpp"
 #include "flow/boundary_conditions.hpp"
 #include "flow/dual_metrics.hpp"
 #include "flow/initial_condition.hpp"
@@ -27,10 +28,13 @@
 namespace valsalva::flow {
 
 struct TimeOptions {
-  double end = 0;              // s
-  double dt = 0;               // s; 0 = from the cfl and fourier targets
-  double cfl = 0.5;            // target max |u| dt / h
-  double fourier = 0.2;        // target max nu dt / h^2
+  double end = 0;        // s
+  double dt = 0;         // s; 0 = from the cfl and fourier targets
+  double cfl = 0.5;      // target max |u| dt / h
+  double fourier = 0.2;  // target max nu dt / h^2
+  // > 0 (with dt = 0): dt = this fraction of the RK4 stability limit of convection and
+  // viscosity together (flow/run_diagnostics.hpp) instead of the cfl and fourier targets.
+  double stability_fraction = 0;
   std::int64_t max_steps = 0;  // 0 = no cap
   // Shorten steps to land on every field output time; false = full steps only (fields at the
   // first step at or after each output time), so that output does not change the results.
@@ -72,6 +76,7 @@ struct RunOptions {
   OutputOptions output;
   InitialCondition initial;
   std::vector<BoundarySpec> boundary;  // one per non-periodic patch
+  ForcingSpec forcing;                 // a prescribed body force, added to the coupling's
   StepCoupling coupling;
   double velocity_limit = 50;  // m/s
   // Tests only: let a time step beyond the stability limit through to exercise the guard.

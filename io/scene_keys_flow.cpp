@@ -100,6 +100,15 @@ void declare_flow_keys(Schema& s) {
       .doc(
           "Target viscous Fourier number max nu dt / h^2 when time.dt = 0 (nu = viscosity / "
           "density)");
+  s.real("time.stability_fraction")
+      .def(0.0)
+      .in_range(0, 1)
+      .unit_of("-")
+      .doc(
+          "> 0 with time.dt = 0: dt = this fraction of the RK4 stability limit of convection "
+          "and viscosity together (Gershgorin bounds, flow/run_diagnostics.hpp), recomputed "
+          "every step, instead of time.cfl and time.fourier; 1 = the largest step the limit "
+          "admits (the stability case)");
   s.integer("time.max_steps")
       .def(0)
       .at_least(0)
@@ -167,6 +176,14 @@ void declare_flow_keys(Schema& s) {
       .in_range(0, 10)
       .unit_of("-")
       .doc("Levels of aggressive coarsening (cheaper set-up, weaker AMG)");
+  s.boolean("poisson.periodic_damping")
+      .def(false)
+      .unit_of("-")
+      .doc(
+          "The pressure damping term that boundary conditions always switch on, also on fully "
+          "periodic meshes: it removes slowly decaying pressure modes of the incremental "
+          "projection on irregular tetrahedra (the stability case) at the price of an O(h^2) "
+          "pressure error (twice the Taylor-Green central2 error on hexahedra)");
   s.integer("poisson.print_level")
       .def(0)
       .in_range(0, 3)
@@ -174,12 +191,14 @@ void declare_flow_keys(Schema& s) {
       .doc("hypre's own diagnostic output (0 = none)");
 
   s.section("initial", "The state at t = 0.");
-  s.choice("initial.type", {"rest", "taylor_green"})
+  s.choice("initial.type", {"rest", "taylor_green", "cyclic_sines"})
       .def("rest")
       .unit_of("-")
       .doc(
-          "Fluid at rest, or the 2D Taylor-Green vortex ([initial.taylor_green]), whose exact "
-          "decay gives the run's error");
+          "Fluid at rest, the 2D Taylor-Green vortex ([initial.taylor_green]), whose exact "
+          "decay gives the run's error, or the divergence-free field u = U0 (sin(z/L), sin(x/L), "
+          "sin(y/L)) ([initial.cyclic_sines]), a start with motion in every direction for forced "
+          "periodic boxes");
   s.section(
       "initial.taylor_green",
       "u = U0 sin(x/L) cos(y/L) F, v = -U0 cos(x/L) sin(y/L) F, w = 0, p = rho U0^2/4 (cos 2x/L + "
@@ -196,6 +215,21 @@ void declare_flow_keys(Schema& s) {
       .above(0)
       .unit_of("m")
       .doc("Length L: the vortex period is 2 pi L in x and y, measured from the origin");
+
+  s.section("initial.cyclic_sines",
+            "u = U0 (sin(z/L), sin(x/L), sin(y/L)), p = 0: divergence-free, periodic on a box of "
+            "side 2 pi L.");
+  s.when("initial.cyclic_sines", "initial.type", {"cyclic_sines"});
+  s.real("initial.cyclic_sines.velocity")
+      .required()
+      .above(0)
+      .unit_of("m/s")
+      .doc("Velocity amplitude U0");
+  s.real("initial.cyclic_sines.length")
+      .required()
+      .above(0)
+      .unit_of("m")
+      .doc("Length L: the period is 2 pi L");
 
   s.section("output", "Fields written to HDF5 + XDMF (fields.xmf in the run directory).");
   s.real("output.interval")
@@ -264,6 +298,7 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   o.time.fourier = scene.get<double>("time.fourier");
   o.time.max_steps = scene.get<std::int64_t>("time.max_steps");
   o.time.land_on_output = scene.get<bool>("time.land_on_output");
+  o.time.stability_fraction = scene.get<double>("time.stability_fraction");
 
   auto& p = o.projection.poisson;
   p.tolerance = scene.get<double>("poisson.tolerance");
@@ -274,12 +309,14 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   p.relax_type = scene.get<int>("poisson.relax_type");
   p.aggressive_levels = scene.get<int>("poisson.aggressive_levels");
   p.print_level = scene.get<int>("poisson.print_level");
+  o.projection.periodic_pressure_damping = scene.get<bool>("poisson.periodic_damping");
 
   o.initial.type = scene.get<std::string>("initial.type");
-  if (o.initial.type == "taylor_green") {
-    o.initial.velocity = scene.get<double>("initial.taylor_green.velocity");
-    o.initial.length = scene.get<double>("initial.taylor_green.length");
+  if (o.initial.type == "taylor_green" || o.initial.type == "cyclic_sines") {
+    o.initial.velocity = scene.get<double>("initial." + o.initial.type + ".velocity");
+    o.initial.length = scene.get<double>("initial." + o.initial.type + ".length");
   }
+  o.forcing = read_forcing(scene);
 
   auto& out = o.output;
   out.dir = run_dir;

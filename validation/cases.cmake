@@ -3,9 +3,14 @@
 # tests/app/CMakeLists.txt turns into validate_<case>_quick (and _np2) and validate_<case>_full;
 # valsalva_write_case_registry() generates the list registry.cpp includes.
 
-# valsalva_validation_case(NAME SOURCES file... [QUICK_NP 1 2] [QUICK_TIMEOUT s] [FULL_TIMEOUT s])
+# valsalva_validation_case(NAME SOURCES file... [QUICK_NP 1 2] [QUICK_TIMEOUT s] [FULL_TIMEOUT s]
+#                          [KNOWN_FAILURE "what fails, measured, and the issue"])
+# KNOWN_FAILURE: the quick version misses one of its targets today; its entry is labelled
+# known-failure instead of quick, so that `make test` (which leaves that label out) stays a gate
+# while `ctest -L known-failure` shows the failure. The reason is printed at configure time.
 function(valsalva_validation_case name)
-  cmake_parse_arguments(CASE "" "QUICK_TIMEOUT;FULL_TIMEOUT" "SOURCES;QUICK_NP" ${ARGN})
+  cmake_parse_arguments(CASE "" "QUICK_TIMEOUT;FULL_TIMEOUT;KNOWN_FAILURE" "SOURCES;QUICK_NP"
+    ${ARGN})
   if(NOT CASE_SOURCES)
     message(FATAL_ERROR "valsalva_validation_case(${name}): no SOURCES")
   endif()
@@ -26,6 +31,10 @@ function(valsalva_validation_case name)
   set_property(GLOBAL PROPERTY VALSALVA_CASE_${name}_QUICK_NP "${CASE_QUICK_NP}")
   set_property(GLOBAL PROPERTY VALSALVA_CASE_${name}_QUICK_TIMEOUT ${CASE_QUICK_TIMEOUT})
   set_property(GLOBAL PROPERTY VALSALVA_CASE_${name}_FULL_TIMEOUT ${CASE_FULL_TIMEOUT})
+  set_property(GLOBAL PROPERTY VALSALVA_CASE_${name}_KNOWN_FAILURE "${CASE_KNOWN_FAILURE}")
+  if(CASE_KNOWN_FAILURE)
+    message(STATUS "validation case ${name}: known failure: ${CASE_KNOWN_FAILURE}")
+  endif()
 endfunction()
 
 # registry_cases.inc in the build tree: a declaration and a list entry per case, in the order

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "field_test_utils.hpp"
+#include "flow/body_forcing.hpp"
 #include "flow/run_loop.hpp"
 #include "io/scene.hpp"
 #include "io/scene_keys_flow.hpp"
@@ -300,4 +301,85 @@ fields = ["vorticity"]
       "[mesh]\nsource = \"box\"\n[output]\ninterval = 2.5\ninterval_unit = \"steps\"\n", "f.toml");
   CHECK_THROWS_WITH_AS(io::flow_run_options(fractional, "dir"),
                        doctest::Contains("f.toml:4:1: key 'output.interval'"), io::SceneError);
+}
+
+TEST_CASE("[forcing], initial.cyclic_sines and time.stability_fraction from a scene") {
+  const auto scene = io::parse_scene(R"(
+[mesh]
+source = "box"
+[forcing]
+type = "kolmogorov"
+force = [2.0, 0.0, 0.0]
+wavelength = 1.0
+[initial]
+type = "cyclic_sines"
+[initial.cyclic_sines]
+velocity = 0.1
+length = 0.5
+[time]
+stability_fraction = 0.8
+[poisson]
+periodic_damping = true
+)",
+                                     "k.toml");
+  const auto o = io::flow_run_options(scene, "dir");
+  CHECK(o.forcing.type == flow::ForcingSpec::Type::kolmogorov);
+  CHECK(o.forcing.across == Eigen::Vector3d::UnitY());  // the default
+  CHECK(o.initial.type == "cyclic_sines");
+  CHECK(o.initial.length == 0.5);
+  CHECK(o.time.stability_fraction == 0.8);
+  CHECK(o.projection.periodic_pressure_damping);
+
+  // On 20 % perturbed tetrahedra the sampled sine has a discrete mean; the force has none, and
+  // away from it the nodal values are F sin(2 pi y) to that mean (|mean| << F).
+  io::BoxSpec box;
+  box.cells = {6, 6, 6};
+  box.cell_type = "tetra";
+  box.perturbation = 0.2;
+  box.periodic = {true, true, true};
+  const auto mesh = io::generate_box(box);
+  const auto metrics = flow::compute_dual_metrics(mesh);
+  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
+  const auto f = flow::forcing_density(local, o.forcing);
+  Eigen::Vector3d net = Eigen::Vector3d::Zero();
+  double deviation = 0;
+  for (int i = 0; i < local.num_owned; ++i) {
+    net += local.volume[i] * f[i];
+    deviation =
+        std::max(deviation,
+                 std::abs(f[i].x() - 2.0 * std::sin(2 * std::numbers::pi * local.position[i].y())));
+  }
+  for (int c = 0; c < 3; ++c) CHECK(std::abs(local.comm.sum(net[c])) < 1e-14);
+  CHECK(deviation > 0);     // the mean was there to remove ...
+  CHECK(deviation < 2e-2);  // ... and it is small against F = 2
+
+  // The time step at the stability fraction: 0.8 of the limit, whatever cfl and fourier say.
+  Setup s(8, MPI_COMM_WORLD);
+  auto run = tgv_options(100.0);
+  run.time.stability_fraction = 0.8;
+  run.time.max_steps = 1;
+  flow::RunLoop loop(s.mesh, s.metrics, s.local, run);
+  std::vector<double> scratch;
+  const double limit = 1.0 / flow::stability_rates(s.local, flow::laplacian_weights(s.local), 0.01,
+                                                   loop.state().velocity, scratch)
+                                 .stability;
+  const auto summary = loop.run();
+  CHECK(summary.time == doctest::Approx(0.8 * limit).epsilon(1e-12));
+
+  auto bad = [](const std::string& forcing) {
+    try {
+      io::flow_run_options(
+          io::parse_scene("[mesh]\nsource = \"box\"\n[forcing]\n" + forcing, "b.toml"), "dir");
+    } catch (const io::SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK(bad("type = \"kolmogorov\"\nforce = [1.0, 0.0, 0.0]\nwavelength = 1.0\n"
+            "across = [0.0, 0.0, 0.0]\n")
+            .find("key 'forcing.across': the direction must be a non-zero") != std::string::npos);
+  CHECK(bad("type = \"kolmogorov\"\nforce = [1.0, 0.0, 0.0]\n").find("forcing.wavelength") !=
+        std::string::npos);
+  CHECK(bad("type = \"uniform\"\nforce = [1.0, 0.0, 0.0]\nwavelength = 1.0\n")
+            .find("forcing.wavelength") != std::string::npos);  // no effect with uniform
 }
