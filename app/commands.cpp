@@ -22,6 +22,7 @@
 #include "io/scene_keys_les.hpp"
 #include "io/scene_keys_structure.hpp"
 #include "io/scene_keys_valve.hpp"
+#include "run/data_dir.hpp"
 #include "run/phase.hpp"
 #include "validation/case.hpp"
 
@@ -118,9 +119,12 @@ int validate(const std::string& case_name, bool list, bool quick, const std::str
   ctx.quick = quick;
   ctx.out_dir = out.empty() ? std::filesystem::path("validation-results") / case_name
                             : std::filesystem::path(out);
-  ctx.case_dir = std::filesystem::path(VALSALVA_SOURCE_DIR) / "validation" / case_name;
-  ctx.refdata_dir = std::filesystem::path(VALSALVA_SOURCE_DIR) / "validation" / "refdata";
-  if (rank == 0) std::filesystem::create_directories(ctx.out_dir);
+  ctx.case_dir = run::data_dir() / "validation" / case_name;
+  ctx.refdata_dir = run::data_dir() / "validation" / "refdata";
+  if (rank == 0) {
+    std::filesystem::create_directories(ctx.out_dir);
+    fmt::print("{}: case files and reference data from {}\n", c->name, ctx.case_dir.string());
+  }
   MPI_Barrier(MPI_COMM_WORLD);
   const auto t0 = std::chrono::steady_clock::now();
   validation::Report report;

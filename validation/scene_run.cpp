@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "io/scene.hpp"
+#include "run/data_dir.hpp"
 
 namespace valsalva::validation {
 
@@ -52,7 +53,7 @@ class ScratchDir {
 }  // namespace
 
 std::filesystem::path case_scene(const std::string& case_name, const std::string& file) {
-  return fs::path(VALSALVA_SOURCE_DIR) / "validation" / case_name / file;
+  return run::data_dir() / "validation" / case_name / file;
 }
 
 run::RunResult run_scene_file(const std::filesystem::path& scene_file,
