@@ -109,6 +109,13 @@ void declare_flow_keys(Schema& s) {
           "and viscosity together (Gershgorin bounds, flow/run_diagnostics.hpp), recomputed "
           "every step, instead of time.cfl and time.fourier; 1 = the largest step the limit "
           "admits (the stability case)");
+  s.real("time.steady_tolerance")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("m/s2")
+      .doc(
+          "> 0: the run stops at a steady state, once max over nodes and components of "
+          "|u^{n+1} - u^n| / dt falls below this (before time.end); 0 = run to time.end");
   s.integer("time.max_steps")
       .def(0)
       .at_least(0)
@@ -299,6 +306,7 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   o.time.max_steps = scene.get<std::int64_t>("time.max_steps");
   o.time.land_on_output = scene.get<bool>("time.land_on_output");
   o.time.stability_fraction = scene.get<double>("time.stability_fraction");
+  o.time.steady_tolerance = scene.get<double>("time.steady_tolerance");
 
   auto& p = o.projection.poisson;
   p.tolerance = scene.get<double>("poisson.tolerance");

@@ -320,9 +320,6 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
   if (p.checkpoint) {
     p.loop->resume(std::move(start), start_step, start_dp, start_nu_sgs, start_flux);
     p.les.resume(p.loop->subgrid_viscosity());
-  } else {
-    if (p.analysis) p.analysis->sample(p.loop->state(), 0, p.loop->face_flux());
-    if (p.valve_monitor) p.valve_monitor->sample(p.loop->state(), 0);
   }
   if (p.mesh_hash != 0 && checkpoints)
     p.writer.emplace(p.local, p.mesh_hash, p.run_path / "checkpoints", "checkpoint",
@@ -331,6 +328,16 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
 }
 
 Simulation::~Simulation() = default;
+
+void Simulation::set_initial_velocity(
+    const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& u) {
+  auto& p = *parts_;
+  if (p.checkpoint)
+    throw std::logic_error("Simulation::set_initial_velocity on a restart from a checkpoint");
+  flow::VectorField velocity(p.local.num_local());
+  for (int i = 0; i < p.local.num_local(); ++i) velocity[i] = u(p.local.position[i]);
+  p.loop->set_initial_velocity(std::move(velocity));
+}
 
 void Simulation::observe(StepObserver observer) {
   parts_->observer = std::move(observer);
@@ -351,6 +358,10 @@ RunResult Simulation::run() {
                             bool stopping) { p.write_checkpoint(state, step, dt, stopping); };
   if (p.stop) hooks.stop_requested = [&p] { return p.stop->requested(p.comm); };
   p.loop->set_hooks(std::move(hooks));
+  if (!p.checkpoint) {  // the initial state (a new run)
+    if (p.analysis) p.analysis->sample(p.loop->state(), 0, p.loop->face_flux());
+    if (p.valve_monitor) p.valve_monitor->sample(p.loop->state(), 0);
+  }
   p.last_write = Clock::now();
   RunResult result;
   result.run_path = p.run_path;

@@ -49,6 +49,10 @@ class Simulation {
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 
+  // Before run(), not on a restart: start from u(x) at every node instead of initial.type's
+  // velocity (boundary values imposed on it), e.g. a validation level from the coarser level's
+  // steady field.
+  void set_initial_velocity(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& u);
   // Something a validation case or benchmark measures on the way; nothing by default.
   void observe(StepObserver observer);
   // Runs to time.end (or time.max_steps, or a stop signal), writes the analysis results.
