@@ -24,12 +24,23 @@ double seconds(Clock::time_point a, Clock::time_point b) {
 
 }  // namespace
 
+std::vector<double> RunLoop::chosen_poisson_weights(const Mesh& mesh, const DualMetrics& metrics,
+                                                    const LocalMesh& local) const {
+  if (options_.poisson_weights == PoissonWeights::standard)
+    return poisson_weights(mesh, metrics, local);
+  try {
+    return slab_stiffness_weights(mesh, metrics, local);
+  } catch (const std::invalid_argument& e) {
+    throw RunError(std::string("poisson.weights = prism_slab: ") + e.what(), "poisson.weights");
+  }
+}
+
 RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& local,
                  RunOptions options, FieldSink sink)
     : local_(local),
       options_(std::move(options)),
       sink_(std::move(sink)),
-      solver_(local, attach_boundary(), poisson_weights(mesh, metrics, local)) {
+      solver_(local, attach_boundary(), chosen_poisson_weights(mesh, metrics, local)) {
   const auto& ic = options_.initial;
   const int n = local.num_local();
   state_.velocity.assign(n, Eigen::Vector3d::Zero());

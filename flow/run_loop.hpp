@@ -73,8 +73,14 @@ struct StepCoupling {
   std::string max_dt_source;  // what sets max_dt, for the message when time.dt exceeds it
 };
 
+// The Poisson matrix's edge weights (flow/poisson_weights.hpp): standard = P1 stiffness on
+// all-tetrahedral meshes, two-point weights otherwise; prism_slab = slab_stiffness_weights, the
+// P1 weights extended to slabs of right prisms (the DFG benchmark's prism meshes).
+enum class PoissonWeights { standard, prism_slab };
+
 struct RunOptions {
   ProjectionOptions projection;  // density, kinematic viscosity, Poisson settings
+  PoissonWeights poisson_weights = PoissonWeights::standard;
   TimeOptions time;
   OutputOptions output;
   InitialCondition initial;
@@ -168,6 +174,8 @@ class RunLoop {
   RunSummary run();
 
   const FlowState& state() const { return state_; }
+  // The solver, read-only: its weights for wall forces (flow/wall_force.hpp).
+  const ProjectionRK4& solver() const { return solver_; }
   // The boundary conditions, or null when every patch is periodic.
   const BoundaryConditions* boundary() const { return boundary_.get(); }
   // Velocity error against the exact Taylor-Green solution at the current time (collective).
@@ -180,6 +188,8 @@ class RunLoop {
                       double eta, const std::string& flux_text) const;
   [[noreturn]] void fail(const std::string& why);
   void impose_initial_boundary_values();
+  std::vector<double> chosen_poisson_weights(const Mesh& mesh, const DualMetrics& metrics,
+                                             const LocalMesh& local) const;
   ProjectionOptions& attach_boundary();
 
   const LocalMesh& local_;

@@ -106,6 +106,7 @@ struct Simulation::Parts {
   fs::path last_checkpoint;
   Clock::time_point t0 = Clock::now(), last_write = Clock::now();
   StepObserver observer;
+  bool stop_requested = false;  // by the observer
 
   void write_fields(const std::string& stream, double time, const flow::FieldSet& set);
   void write_checkpoint(const flow::FlowState& state, std::int64_t step, double dt, bool stopping);
@@ -356,7 +357,12 @@ RunResult Simulation::run() {
   if (p.writer)
     hooks.checkpoint = [&p](const flow::FlowState& state, std::int64_t step, double dt,
                             bool stopping) { p.write_checkpoint(state, step, dt, stopping); };
-  if (p.stop) hooks.stop_requested = [&p] { return p.stop->requested(p.comm); };
+  hooks.stop_requested = [&p] {
+    // Collective (StopSignal::requested reduces over the ranks); the observer's request is
+    // made on every rank alike.
+    const bool signalled = p.stop && p.stop->requested(p.comm);
+    return signalled || p.stop_requested;
+  };
   p.loop->set_hooks(std::move(hooks));
   if (!p.checkpoint) {  // the initial state (a new run)
     if (p.analysis) p.analysis->sample(p.loop->state(), 0, p.loop->face_flux());
@@ -378,8 +384,18 @@ RunResult Simulation::run() {
   return result;
 }
 
+void Simulation::request_stop() {
+  parts_->stop_requested = true;
+}
+
 const flow::Mesh& Simulation::mesh() const {
   return parts_->mesh;
+}
+const flow::DualMetrics& Simulation::metrics() const {
+  return parts_->metrics;
+}
+const flow::RunLoop& Simulation::loop() const {
+  return *parts_->loop;
 }
 const flow::LocalMesh& Simulation::local() const {
   return parts_->local;

@@ -59,9 +59,15 @@ class Simulation {
   // Throws flow::RunError as std::runtime_error with the scene key's location when it names one.
   RunResult run();
 
+  // From an observer: end the run after this step (RunSummary::stopped), e.g. once a
+  // validation case's quantity is steady.
+  void request_stop();
+
   const flow::Mesh& mesh() const;
+  const flow::DualMetrics& metrics() const;
   const flow::LocalMesh& local() const;
   const flow::FlowState& state() const;
+  const flow::RunLoop& loop() const;
   const std::filesystem::path& run_path() const;
 
  private:
