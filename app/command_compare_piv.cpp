@@ -19,6 +19,7 @@
 #include "io/piv_compare.hpp"
 #include "io/probes.hpp"
 #include "io/statistics_files.hpp"
+#include "run/data_dir.hpp"
 
 namespace valsalva::app {
 
@@ -129,7 +130,7 @@ int run(const Options& o) {
       const auto png = fs::path(o.out) / fmt::format("frame_{:03d}.png", f);
       const std::string cmd = fmt::format(
           "/usr/bin/python3 '{}/io/plot_piv.py' '{}' '{}'{} --title '{}: PIV vs simulation bin {}'",
-          VALSALVA_SOURCE_DIR, csv.string(), png.string(), profiles, frame.label, bin);
+          run::data_dir().string(), csv.string(), png.string(), profiles, frame.label, bin);
       if (std::system(cmd.c_str()) != 0)
         fmt::print(stderr, "compare-piv: warning: plot failed ({})\n", cmd);
     }

@@ -21,6 +21,7 @@
 #include "io/probes.hpp"
 #include "io/uniform_sampling.hpp"
 #include "io/welch_psd.hpp"
+#include "run/data_dir.hpp"
 
 namespace valsalva::app {
 
@@ -131,7 +132,7 @@ int run(const Options& o) {
     const auto png = fs::path(o.out) / "psd.png";
     const std::string cmd = fmt::format(
         "/usr/bin/python3 '{}/io/plot_psd.py' '{}'{} --title 'Welch PSD of {}'",
-        VALSALVA_SOURCE_DIR, png.string(), plot_args, fs::path(o.file).filename().string());
+        run::data_dir().string(), png.string(), plot_args, fs::path(o.file).filename().string());
     if (std::system(cmd.c_str()) != 0) fmt::print(stderr, "psd: warning: plot failed ({})\n", cmd);
   }
   return 0;

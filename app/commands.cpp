@@ -7,7 +7,6 @@
 #include <cmath>
 #include <iostream>
 
-#include "app/phase.hpp"
 #include "flow/dual_metrics.hpp"
 #include "flow/local_mesh.hpp"
 #include "flow/mesh_check.hpp"
@@ -23,11 +22,16 @@
 #include "io/scene_keys_les.hpp"
 #include "io/scene_keys_structure.hpp"
 #include "io/scene_keys_valve.hpp"
+#include "run/data_dir.hpp"
+#include "run/phase.hpp"
 #include "validation/case.hpp"
 
 namespace valsalva::app {
 
 namespace {
+
+using run::mesh_phase;
+using run::Phase;
 
 int world_rank() {
   int rank = 0;
@@ -41,9 +45,9 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 }  // namespace
 
-int check_scene(const std::filesystem::path& scene_file) {
+int check_scene(const std::filesystem::path& scene_file, const std::vector<std::string>& settings) {
   Phase phase("reading the scene " + scene_file.string());
-  const auto scene = io::load_scene(scene_file);
+  const auto scene = io::load_scene(scene_file, settings);
   phase.next(mesh_phase(scene));
   const auto mesh = io::build_mesh(scene);
   phase.next(fmt::format("computing the dual metrics of the mesh ({} nodes, {} cells)",
@@ -115,9 +119,12 @@ int validate(const std::string& case_name, bool list, bool quick, const std::str
   ctx.quick = quick;
   ctx.out_dir = out.empty() ? std::filesystem::path("validation-results") / case_name
                             : std::filesystem::path(out);
-  ctx.case_dir = std::filesystem::path(VALSALVA_SOURCE_DIR) / "validation" / case_name;
-  ctx.refdata_dir = std::filesystem::path(VALSALVA_SOURCE_DIR) / "validation" / "refdata";
-  if (rank == 0) std::filesystem::create_directories(ctx.out_dir);
+  ctx.case_dir = run::data_dir() / "validation" / case_name;
+  ctx.refdata_dir = run::data_dir() / "validation" / "refdata";
+  if (rank == 0) {
+    std::filesystem::create_directories(ctx.out_dir);
+    fmt::print("{}: case files and reference data from {}\n", c->name, ctx.case_dir.string());
+  }
   MPI_Barrier(MPI_COMM_WORLD);
   const auto t0 = std::chrono::steady_clock::now();
   validation::Report report;

@@ -5,13 +5,16 @@
 #include <string>
 #include <vector>
 
+#include "run/simulation.hpp"
+
 namespace valsalva::app {
 
-// `restart`: empty, a checkpoint file, or "latest" (newest in <run dir>/checkpoints);
-// `quiet`: no resolved scene and no progress lines (app/command_run.cpp).
-int run_scene(const std::filesystem::path& scene_file, bool overwrite, const std::string& out,
-              const std::string& restart = {}, bool quiet = false);
-int check_scene(const std::filesystem::path& scene_file);
+// `settings`: scene overrides "key=value" (--set, io::load_scene); `request.quiet`: no
+// resolved scene and no progress lines (app/command_run.cpp).
+int run_scene(const std::filesystem::path& scene_file, const std::vector<std::string>& settings,
+              const run::RunRequest& request);
+int check_scene(const std::filesystem::path& scene_file,
+                const std::vector<std::string>& settings = {});
 int mesh_info(const std::filesystem::path& mesh_file, double scale);
 // `settings`: the case options as "key=value" (--set); `show_options` prints the case's
 // options instead of running it.

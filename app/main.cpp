@@ -12,8 +12,8 @@
 #include "app/command_make_valve.hpp"
 #include "app/command_psd.hpp"
 #include "app/commands.hpp"
-#include "app/phase.hpp"
 #include "io/allocation_limit.hpp"
+#include "run/phase.hpp"
 
 int main(int argc, char** argv) {
   // Line-buffered stdout, so that a run or validation case redirected to a file (or piped to
@@ -38,9 +38,15 @@ int main(int argc, char** argv) {
   run->add_option("--restart", restart,
                   "Continue from a checkpoint FILE, or 'latest' in <run dir>/checkpoints");
   run->add_flag("--quiet", quiet, "Print only the start and the end of the run (run.progress)");
+  std::vector<std::string> scene_settings;
+  run->add_option("--set", scene_settings,
+                  "Scene override KEY=VALUE, VALUE in TOML (repeatable; a bare word is a string)")
+      ->allow_extra_args(false);
 
   auto* check = cli.add_subcommand("check", "Validate a scene and its mesh without running");
   check->add_option("scene", scene, "Scene file (TOML)")->required();
+  check->add_option("--set", scene_settings, "Scene override KEY=VALUE (as for run)")
+      ->allow_extra_args(false);
 
   auto* info = cli.add_subcommand("mesh-info", "Counts, patches, volumes and quality of a mesh");
   info->add_option("mesh", mesh_file, "Gmsh .msh file")->required();
@@ -78,8 +84,9 @@ int main(int argc, char** argv) {
     return code;
   }
   try {
-    if (*run) code = valsalva::app::run_scene(scene, overwrite, out, restart, quiet);
-    if (*check) code = valsalva::app::check_scene(scene);
+    if (*run)
+      code = valsalva::app::run_scene(scene, scene_settings, {out, overwrite, restart, quiet});
+    if (*check) code = valsalva::app::check_scene(scene, scene_settings);
     if (*info) code = valsalva::app::mesh_info(mesh_file, scale);
     if (*val)
       code = valsalva::app::validate(case_name, list, quick, out, case_settings, case_options);
@@ -90,7 +97,7 @@ int main(int argc, char** argv) {
     if (*make_valve_cmd) code = make_valve();
   } catch (const std::bad_alloc&) {
     // Says nothing by itself: name the step that ran out of memory (app/phase.hpp).
-    const auto& phase = valsalva::app::Phase::current();
+    const auto& phase = valsalva::run::Phase::current();
     if (size == 1 || rank == 0)
       fmt::print(stderr,
                  "valsalva: error: out of memory while {} (std::bad_alloc: the input asks for "

@@ -18,10 +18,18 @@
 namespace valsalva::flow {
 
 struct InitialCondition {
-  std::string type = "rest";  // rest | taylor_green | taylor_green_3d
-  double velocity = 1.0;      // U0, m/s (taylor_green)
-  double length = 1.0;        // L, m: the period is 2 pi L (taylor_green)
+  std::string type = "rest";  // rest | taylor_green | taylor_green_3d | cyclic_sines
+  double velocity = 1.0;      // U0, m/s (taylor_green, taylor_green_3d, cyclic_sines)
+  double length = 1.0;        // L, m: the period is 2 pi L (the vortices, cyclic_sines)
 };
+
+// A divergence-free 3D field (each component varies only across itself), pressure 0: a start
+// with motion in every direction for forced periodic boxes (the stability case):
+//   u = U0 (sin(z/L), sin(x/L), sin(y/L)).
+inline Eigen::Vector3d cyclic_sines(const Eigen::Vector3d& x, double u0, double length) {
+  return u0 * Eigen::Vector3d(std::sin(x.z() / length), std::sin(x.x() / length),
+                              std::sin(x.y() / length));
+}
 
 struct TaylorGreen {
   double u0, length, nu, rho;

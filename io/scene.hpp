@@ -105,8 +105,15 @@ Location nearest_written(const std::map<std::string, Location>& where, std::stri
 // syntax, unknown keys (with the nearest declared key), wrong types, values out of range or not
 // among the accepted ones, missing required keys, keys that have no effect under a condition.
 Scene load_scene(const std::filesystem::path& file, const Schema& schema = scene_schema());
+// The same with overrides "KEY=VALUE" (`valsalva run --set`, validation levels) applied to the
+// file's table before it is checked: VALUE is TOML (a bare word that is not TOML is a string),
+// and a problem with an override is reported at "--set KEY=VALUE".
+Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides,
+                 const Schema& schema = scene_schema());
 // The same from text; `file` names it in messages and anchors relative paths.
 Scene parse_scene(std::string_view text, const std::filesystem::path& file,
                   const Schema& schema = scene_schema());
+Scene parse_scene(std::string_view text, const std::filesystem::path& file,
+                  const std::vector<std::string>& overrides, const Schema& schema = scene_schema());
 
 }  // namespace valsalva::io

@@ -63,6 +63,14 @@ void declare_flow_keys(Schema& s) {
           "converges at 4th order on uniform hexahedra and split tetrahedra (Taylor-Green case); "
           "the Poisson matrix and the pressure damping at boundaries stay 2nd order; refused "
           "with an LES model; needs partition.ghost_layers >= 2");
+  s.choice("flow.viscous_weights", {"two_point", "stiffness"})
+      .def("two_point")
+      .unit_of("-")
+      .doc(
+          "Edge weights of the 2nd-order laminar viscous term: two_point = two-point weights "
+          "with the non-orthogonal correction from nodal gradients; stiffness = the Poisson "
+          "matrix's P1 stiffness weights without correction (on tetrahedra the median-dual flux "
+          "of the piecewise-linear velocity; the DFG cylinder benchmark uses it)");
   s.real("flow.velocity_limit")
       .def(50.0)
       .above(0)
@@ -93,6 +101,22 @@ void declare_flow_keys(Schema& s) {
       .doc(
           "Target viscous Fourier number max nu dt / h^2 when time.dt = 0 (nu = viscosity / "
           "density)");
+  s.real("time.stability_fraction")
+      .def(0.0)
+      .in_range(0, 1)
+      .unit_of("-")
+      .doc(
+          "> 0 with time.dt = 0: dt = this fraction of the RK4 stability limit of convection "
+          "and viscosity together (Gershgorin bounds, flow/run_diagnostics.hpp), recomputed "
+          "every step, instead of time.cfl and time.fourier; 1 = the largest step the limit "
+          "admits (the stability case)");
+  s.real("time.steady_tolerance")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("m/s2")
+      .doc(
+          "> 0: the run stops at a steady state, once max over nodes and components of "
+          "|u^{n+1} - u^n| / dt falls below this (before time.end); 0 = run to time.end");
   s.integer("time.max_steps")
       .def(0)
       .at_least(0)
@@ -114,6 +138,13 @@ void declare_flow_keys(Schema& s) {
           "Project every RK stage velocity, not only the end of the step (Sanderse & Koren, J. "
           "Comput. Phys. 231, 2012): three more Poisson solves per step; measured 0.61x the error "
           "at 2.1x the CPU time at equal error (docs/validation.md, time_order)");
+  s.boolean("time.land_on_output")
+      .def(true)
+      .unit_of("-")
+      .doc(
+          "Shorten a step to land on each field output time (output.interval in s); false = "
+          "full steps only, the fields written at the first step at or after each output time, "
+          "so that writing fields cannot change the results (e.g. a fixed-dt benchmark)");
 
   s.section("poisson", "Pressure Poisson solver: hypre PCG preconditioned by BoomerAMG.");
   s.real("poisson.tolerance")
@@ -169,6 +200,22 @@ void declare_flow_keys(Schema& s) {
       .in_range(0, 10)
       .unit_of("-")
       .doc("Levels of aggressive coarsening (cheaper set-up, weaker AMG)");
+  s.choice("poisson.weights", {"standard", "prism_slab"})
+      .def("standard")
+      .unit_of("-")
+      .doc(
+          "Edge weights of the Poisson matrix: standard = the P1 stiffness on all-tetrahedral "
+          "meshes, two-point weights on others; prism_slab = the P1 weights extended to slabs of "
+          "right prisms (tensor product of the section's P1 stiffness and the 1D axial one; "
+          "refused on other cells), for extruded 2D benchmarks such as DFG");
+  s.boolean("poisson.periodic_damping")
+      .def(false)
+      .unit_of("-")
+      .doc(
+          "The pressure damping term that boundary conditions always switch on, also on fully "
+          "periodic meshes: it removes slowly decaying pressure modes of the incremental "
+          "projection on irregular tetrahedra (the stability case) at the price of an O(h^2) "
+          "pressure error (twice the Taylor-Green central2 error on hexahedra)");
   s.integer("poisson.print_level")
       .def(0)
       .in_range(0, 3)
@@ -176,13 +223,15 @@ void declare_flow_keys(Schema& s) {
       .doc("hypre's own diagnostic output (0 = none)");
 
   s.section("initial", "The state at t = 0.");
-  s.choice("initial.type", {"rest", "taylor_green", "taylor_green_3d"})
+  s.choice("initial.type", {"rest", "taylor_green", "taylor_green_3d", "cyclic_sines"})
       .def("rest")
       .unit_of("-")
       .doc(
           "Fluid at rest, the 2D Taylor-Green vortex ([initial.taylor_green]), whose exact "
-          "decay gives the run's error, or the 3D Taylor-Green vortex (the same keys; no exact "
-          "solution after t = 0: it goes turbulent at Re = U0 L / nu = 1600)");
+          "decay gives the run's error, the 3D Taylor-Green vortex (the same keys; no exact "
+          "solution after t = 0: it goes turbulent at Re = U0 L / nu = 1600), or the "
+          "divergence-free field u = U0 (sin(z/L), sin(x/L), sin(y/L)) ([initial.cyclic_sines]), "
+          "a start with motion in every direction for forced periodic boxes");
   s.section("initial.taylor_green",
             "taylor_green: u = U0 sin(x/L) cos(y/L) F, v = -U0 cos(x/L) sin(y/L) F, w = 0, p = "
             "rho U0^2/4 (cos 2x/L + cos 2y/L) F^2, F = exp(-2 nu t / L^2), Re = U0 L / nu; exact "
@@ -200,6 +249,21 @@ void declare_flow_keys(Schema& s) {
       .above(0)
       .unit_of("m")
       .doc("Length L: the vortex period is 2 pi L in x and y, measured from the origin");
+
+  s.section("initial.cyclic_sines",
+            "u = U0 (sin(z/L), sin(x/L), sin(y/L)), p = 0: divergence-free, periodic on a box of "
+            "side 2 pi L.");
+  s.when("initial.cyclic_sines", "initial.type", {"cyclic_sines"});
+  s.real("initial.cyclic_sines.velocity")
+      .required()
+      .above(0)
+      .unit_of("m/s")
+      .doc("Velocity amplitude U0");
+  s.real("initial.cyclic_sines.length")
+      .required()
+      .above(0)
+      .unit_of("m")
+      .doc("Length L: the period is 2 pi L");
 
   s.section("output", "Fields written to HDF5 + XDMF (fields.xmf in the run directory).");
   s.real("output.interval")
@@ -259,6 +323,7 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   o.projection.viscosity = scene.get<double>("flow.viscosity") / rho;
   o.projection.scheme = scene.get<std::string>("flow.scheme");
   o.projection.fourth_order_operators = scene.get<bool>("flow.fourth_order_operators");
+  o.projection.stiffness_viscous = scene.get<std::string>("flow.viscous_weights") == "stiffness";
   o.velocity_limit = scene.get<double>("flow.velocity_limit");
 
   o.time.end = scene.get<double>("time.end");
@@ -268,6 +333,9 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   o.time.max_steps = scene.get<std::int64_t>("time.max_steps");
   o.projection.time_scheme = flow::parse_time_scheme(scene.get<std::string>("time.scheme"));
   o.projection.project_stages = scene.get<bool>("time.project_stages");
+  o.time.land_on_output = scene.get<bool>("time.land_on_output");
+  o.time.stability_fraction = scene.get<double>("time.stability_fraction");
+  o.time.steady_tolerance = scene.get<double>("time.steady_tolerance");
 
   auto& p = o.projection.poisson;
   p.tolerance = scene.get<double>("poisson.tolerance");
@@ -278,12 +346,20 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   p.relax_type = scene.get<int>("poisson.relax_type");
   p.aggressive_levels = scene.get<int>("poisson.aggressive_levels");
   p.print_level = scene.get<int>("poisson.print_level");
+  o.projection.periodic_pressure_damping = scene.get<bool>("poisson.periodic_damping");
+  o.poisson_weights = scene.get<std::string>("poisson.weights") == "prism_slab"
+                          ? flow::PoissonWeights::prism_slab
+                          : flow::PoissonWeights::standard;
 
   o.initial.type = scene.get<std::string>("initial.type");
-  if (o.initial.type == "taylor_green" || o.initial.type == "taylor_green_3d") {
-    o.initial.velocity = scene.get<double>("initial.taylor_green.velocity");
-    o.initial.length = scene.get<double>("initial.taylor_green.length");
+  if (o.initial.type == "taylor_green" || o.initial.type == "taylor_green_3d" ||
+      o.initial.type == "cyclic_sines") {
+    const std::string table =
+        o.initial.type == "cyclic_sines" ? "initial.cyclic_sines" : "initial.taylor_green";
+    o.initial.velocity = scene.get<double>(table + ".velocity");
+    o.initial.length = scene.get<double>(table + ".length");
   }
+  o.forcing = read_forcing(scene);
 
   auto& out = o.output;
   out.dir = run_dir;

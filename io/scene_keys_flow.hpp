@@ -13,6 +13,8 @@ namespace valsalva::io {
 // go to `run_dir`. Throws SceneError for values the declarations cannot express (a step count
 // that is not a whole number).
 flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::path& run_dir);
+// [forcing] (io/scene_keys_forcing.cpp); part of flow_run_options.
+flow::ForcingSpec read_forcing(const Scene& scene);
 
 // A time step from time.cfl and time.fourier (time.dt = 0) bounded by the viscous (Fourier) limit
 // on this mesh: refused, naming flow.density (or flow.viscosity), when that bound alone implies

@@ -89,8 +89,10 @@ class Loader {
   std::map<std::string, Location> where;
 
  private:
+  // Keys from --set overrides carry their own source name ("--set KEY=VALUE").
   Location at(const toml::source_region& r) const {
-    return {file_, static_cast<int>(r.begin.line), static_cast<int>(r.begin.column)};
+    return {r.path ? *r.path : file_, static_cast<int>(r.begin.line),
+            static_cast<int>(r.begin.column)};
   }
   void problem(const Location& loc, std::string_view key, std::string_view text,
                std::string_view accepted = {}) {
@@ -431,9 +433,55 @@ void Loader::fail() {
   throw SceneError(std::move(lines));
 }
 
+// One override "a.b.c=VALUE" into `root`: VALUE parsed as TOML (a bare word that is not TOML
+// becomes a string), its tables created, its source named "--set a.b.c=VALUE" for messages.
+void apply_override(toml::table& root, const std::string& setting) {
+  const std::string name = "--set " + setting;
+  const auto eq = setting.find('=');
+  auto trim = [](std::string_view v) {
+    const auto b = v.find_first_not_of(" \t"), e = v.find_last_not_of(" \t");
+    return b == std::string_view::npos ? std::string() : std::string(v.substr(b, e - b + 1));
+  };
+  const std::string key = eq == std::string::npos ? "" : trim(setting.substr(0, eq));
+  if (key.empty() || key.front() == '.' || key.back() == '.' || key.find("..") != std::string::npos)
+    throw SceneError(
+        {fmt::format("{}: expected KEY=VALUE with a dotted scene key, e.g. --set "
+                     "time.end=2 or --set flow.scheme=central4",
+                     name)});
+  const std::string value = trim(setting.substr(eq + 1));
+  toml::table parsed;
+  try {
+    parsed = toml::parse("v = " + value, std::string_view(name));
+  } catch (const toml::parse_error& e) {
+    if (value.empty() || value.find_first_of("'\n") != std::string::npos)
+      throw SceneError({fmt::format("{}: the value is not TOML ({})", name, e.description())});
+    parsed = toml::parse("v = '" + value + "'", std::string_view(name));
+  }
+  toml::table* table = &root;
+  std::string_view rest = key;
+  for (auto dot = rest.find('.'); dot != std::string_view::npos; dot = rest.find('.')) {
+    const std::string segment(rest.substr(0, dot));
+    auto [it, inserted] = table->emplace(segment, toml::table{});
+    if (!it->second.is_table())
+      throw SceneError({fmt::format("{}: '{}' is a value in the scene, not a table", name,
+                                    key.substr(0, key.size() - rest.size() + dot))});
+    table = it->second.as_table();
+    rest.remove_prefix(dot + 1);
+  }
+  auto it = parsed.begin();
+  toml::key leaf(std::string(rest), it->first.source());
+  table->erase(leaf.str());  // so that the key, too, names the override as its source
+  it->second.visit([&](auto&& v) { table->insert(leaf, std::move(v)); });
+}
+
 }  // namespace
 
 Scene parse_scene(std::string_view text, const std::filesystem::path& file, const Schema& schema) {
+  return parse_scene(text, file, {}, schema);
+}
+
+Scene parse_scene(std::string_view text, const std::filesystem::path& file,
+                  const std::vector<std::string>& overrides, const Schema& schema) {
   const std::string name = file.string();
   toml::table parsed;
   try {
@@ -443,6 +491,7 @@ Scene parse_scene(std::string_view text, const std::filesystem::path& file, cons
                        static_cast<int>(e.source().begin.column)};
     throw SceneError({fmt::format("{}: TOML syntax error: {}", loc.str(), e.description())});
   }
+  for (const auto& setting : overrides) apply_override(parsed, setting);
   Loader loader(schema, name);
   loader.walk(parsed, "", "");
   loader.fill_defaults();
@@ -452,11 +501,16 @@ Scene parse_scene(std::string_view text, const std::filesystem::path& file, cons
 }
 
 Scene load_scene(const std::filesystem::path& file, const Schema& schema) {
+  return load_scene(file, {}, schema);
+}
+
+Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides,
+                 const Schema& schema) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw SceneError({fmt::format("{}: cannot open the scene file", file.string())});
   std::ostringstream text;
   text << in.rdbuf();
-  return parse_scene(text.str(), file, schema);
+  return parse_scene(text.str(), file, overrides, schema);
 }
 
 }  // namespace valsalva::io

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "field_test_utils.hpp"
+#include "flow/body_forcing.hpp"
 #include "flow/run_loop.hpp"
 #include "io/scene.hpp"
 #include "io/scene_keys_flow.hpp"
@@ -112,6 +113,31 @@ TEST_CASE("Taylor-Green run: exact-solution error, output times, rank independen
   const double diff = test::max_abs_difference(a, b);
   MESSAGE("np " << s.local.comm.size() << " vs serial: max |du| " << diff);
   CHECK(diff < 1e-10);
+}
+
+TEST_CASE("time.land_on_output = false: full steps only, fields at the first step past") {
+  Setup s(16, MPI_COMM_WORLD);
+  auto options = tgv_options(0.5);
+  options.time.dt = 0.125;  // 4 full steps; output times 0.2 and 0.4 fall inside steps 2 and 4
+  options.output.interval = 0.2;
+  options.time.land_on_output = false;
+  Recorder rec;
+  flow::RunLoop loop(s.mesh, s.metrics, s.local, options, rec.sink());
+  const auto summary = loop.run();
+  CHECK(summary.steps == 4);
+  CHECK(summary.time == doctest::Approx(0.5).epsilon(1e-14));
+  // t = 0, then 0.25 (first step at or after 0.2), 0.5 (after 0.4; also the end).
+  REQUIRE(rec.writes.size() == 3);
+  CHECK(rec.writes[1].second == doctest::Approx(0.25).epsilon(1e-14));
+  CHECK(rec.writes[2].second == doctest::Approx(0.5).epsilon(1e-14));
+
+  // Landing on the output times (the default) splits those steps: 0.125, 0.2, 0.3, 0.4, 0.5.
+  options.time.land_on_output = true;
+  Recorder landing;
+  flow::RunLoop landed(s.mesh, s.metrics, s.local, options, landing.sink());
+  CHECK(landed.run().steps == 5);
+  REQUIRE(landing.writes.size() == 4);
+  CHECK(landing.writes[1].second == doctest::Approx(0.2).epsilon(1e-14));
 }
 
 TEST_CASE("vorticity of the Taylor-Green field is 2 U0/L sin x sin y to 2nd order") {
@@ -264,6 +290,15 @@ fields = ["vorticity"]
   CHECK(o.output.vorticity);
   CHECK_FALSE(o.output.velocity);
   CHECK(o.output.log_every == 10);
+  CHECK(o.time.land_on_output);  // the defaults
+  CHECK_FALSE(o.projection.stiffness_viscous);
+  const auto full_steps = io::parse_scene(
+      "[mesh]\nsource = \"box\"\n[time]\nland_on_output = false\n[flow]\n"
+      "viscous_weights = \"stiffness\"\n",
+      "l.toml");
+  const auto f = io::flow_run_options(full_steps, "dir");
+  CHECK_FALSE(f.time.land_on_output);
+  CHECK(f.projection.stiffness_viscous);
   const auto fractional = io::parse_scene(
       "[mesh]\nsource = \"box\"\n[output]\ninterval = 2.5\ninterval_unit = \"steps\"\n", "f.toml");
   CHECK_THROWS_WITH_AS(io::flow_run_options(fractional, "dir"),
@@ -360,4 +395,117 @@ length = 1.0
                         "(no periodic pair along z) (accepted: a mesh periodic in "
                         "x, y and z)"),
       io::SceneError);
+}
+
+TEST_CASE("[forcing], initial.cyclic_sines and time.stability_fraction from a scene") {
+  const auto scene = io::parse_scene(R"(
+[mesh]
+source = "box"
+[forcing]
+type = "kolmogorov"
+force = [2.0, 0.0, 0.0]
+wavelength = 1.0
+[initial]
+type = "cyclic_sines"
+[initial.cyclic_sines]
+velocity = 0.1
+length = 0.5
+[time]
+stability_fraction = 0.8
+[poisson]
+periodic_damping = true
+)",
+                                     "k.toml");
+  const auto o = io::flow_run_options(scene, "dir");
+  CHECK(o.forcing.type == flow::ForcingSpec::Type::kolmogorov);
+  CHECK(o.forcing.across == Eigen::Vector3d::UnitY());  // the default
+  CHECK(o.initial.type == "cyclic_sines");
+  CHECK(o.initial.length == 0.5);
+  CHECK(o.time.stability_fraction == 0.8);
+  CHECK(o.projection.periodic_pressure_damping);
+
+  // On 20 % perturbed tetrahedra the sampled sine has a discrete mean; the force has none, and
+  // away from it the nodal values are F sin(2 pi y) to that mean (|mean| << F).
+  io::BoxSpec box;
+  box.cells = {6, 6, 6};
+  box.cell_type = "tetra";
+  box.perturbation = 0.2;
+  box.periodic = {true, true, true};
+  const auto mesh = io::generate_box(box);
+  const auto metrics = flow::compute_dual_metrics(mesh);
+  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
+  const auto f = flow::forcing_density(local, o.forcing);
+  Eigen::Vector3d net = Eigen::Vector3d::Zero();
+  double deviation = 0;
+  for (int i = 0; i < local.num_owned; ++i) {
+    net += local.volume[i] * f[i];
+    deviation =
+        std::max(deviation,
+                 std::abs(f[i].x() - 2.0 * std::sin(2 * std::numbers::pi * local.position[i].y())));
+  }
+  for (int c = 0; c < 3; ++c) CHECK(std::abs(local.comm.sum(net[c])) < 1e-14);
+  CHECK(deviation > 0);     // the mean was there to remove ...
+  CHECK(deviation < 2e-2);  // ... and it is small against F = 2
+
+  // The time step at the stability fraction: 0.8 of the limit, whatever cfl and fourier say.
+  Setup s(8, MPI_COMM_WORLD);
+  auto run = tgv_options(100.0);
+  run.time.stability_fraction = 0.8;
+  run.time.max_steps = 1;
+  flow::RunLoop loop(s.mesh, s.metrics, s.local, run);
+  std::vector<double> scratch;
+  const double limit = 1.0 / flow::stability_rates(s.local, flow::laplacian_weights(s.local), 0.01,
+                                                   loop.state().velocity, scratch)
+                                 .stability;
+  const auto summary = loop.run();
+  CHECK(summary.time == doctest::Approx(0.8 * limit).epsilon(1e-12));
+
+  auto bad = [](const std::string& forcing) {
+    try {
+      io::flow_run_options(
+          io::parse_scene("[mesh]\nsource = \"box\"\n[forcing]\n" + forcing, "b.toml"), "dir");
+    } catch (const io::SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK(bad("type = \"kolmogorov\"\nforce = [1.0, 0.0, 0.0]\nwavelength = 1.0\n"
+            "across = [0.0, 0.0, 0.0]\n")
+            .find("key 'forcing.across': the direction must be a non-zero") != std::string::npos);
+  CHECK(bad("type = \"kolmogorov\"\nforce = [1.0, 0.0, 0.0]\n").find("forcing.wavelength") !=
+        std::string::npos);
+  CHECK(bad("type = \"uniform\"\nforce = [1.0, 0.0, 0.0]\nwavelength = 1.0\n")
+            .find("forcing.wavelength") != std::string::npos);  // no effect with uniform
+}
+
+TEST_CASE("set_initial_velocity replaces the initial condition; time.steady_tolerance stops") {
+  Setup s(8, MPI_COMM_WORLD);
+  auto options = tgv_options(100.0);
+  options.time.dt = 0.1;
+  options.time.steady_tolerance = 1e-9;  // m/s^2
+  auto at_rest = options;
+  at_rest.initial.type = "rest";  // p = 0
+  flow::RunLoop loop(s.mesh, s.metrics, s.local, at_rest);
+  // The Taylor-Green velocity at rest pressure: the first step moves the fluid.
+  flow::VectorField vortex_velocity(s.local.num_local());
+  const flow::TaylorGreen tg{1.0, 1.0, 0.01, 1.0};
+  for (int i = 0; i < s.local.num_local(); ++i)
+    vortex_velocity[i] = tg.velocity(s.local.position[i], 0.0);
+  loop.set_initial_velocity(vortex_velocity);
+  CHECK(loop.state().velocity[0] == vortex_velocity[0]);
+  // And a fluid at rest stays at rest: steady after one step.
+  loop.set_initial_velocity(flow::VectorField(s.local.num_local(), Eigen::Vector3d::Zero()));
+  const auto summary = loop.run();
+  CHECK(summary.steady);
+  CHECK(summary.steps == 1);
+  CHECK(summary.change_rate < 1e-9);
+  // The vortex itself decays at 2 nu u: |du/dt| ~ 0.02 m/s^2 is far from steady at 1e-3.
+  options.time.steady_tolerance = 1e-3;
+  options.time.max_steps = 3;
+  flow::RunLoop vortex(s.mesh, s.metrics, s.local, options);
+  const auto decaying = vortex.run();
+  CHECK_FALSE(decaying.steady);
+  CHECK(decaying.steps == 3);
+  CHECK(decaying.change_rate == doctest::Approx(0.02).epsilon(0.1));
+  CHECK_THROWS_AS(vortex.set_initial_velocity(flow::VectorField(3)), flow::RunError);
 }

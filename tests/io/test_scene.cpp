@@ -232,3 +232,38 @@ TEST_CASE("edit distance") {
   CHECK(edit_distance("kitten", "sitting") == 3);
   CHECK(edit_distance("", "abc") == 3);
 }
+
+TEST_CASE("overrides (run --set KEY=VALUE) replace or add keys and are checked like the file") {
+  const std::string text = "[mesh]\nsource = \"box\"\n[mesh.box]\ncells = [4, 4, 4]\n";
+  const Scene s = parse_scene(text, "o.toml",
+                              {"mesh.box.cells=[6, 7, 8]", "flow.scheme=central4", "time.end = 2.5",
+                               "mesh.box.periodic=['x']", "run.overwrite=true"});
+  CHECK(s.get<std::array<int, 3>>("mesh.box.cells") == std::array{6, 7, 8});
+  CHECK(s.get<std::string>("flow.scheme") == "central4");  // a bare word is a string
+  CHECK(s.get<double>("time.end") == 2.5);
+  CHECK(s.get<std::vector<std::string>>("mesh.box.periodic") == std::vector<std::string>{"x"});
+  CHECK(s.get<bool>("run.overwrite"));
+  CHECK(s.is_set("time.end"));
+  CHECK(s.location("time.end").file == "--set time.end = 2.5");
+  CHECK(s.location("mesh.box.cells").file == "--set mesh.box.cells=[6, 7, 8]");
+
+  auto error_with = [&](const std::string& setting) {
+    try {
+      parse_scene(text, "o.toml", {setting});
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  // A value the schema refuses is reported at the override, with the key.
+  const auto bad_value = error_with("time.end=-1");
+  CHECK(bad_value.find("--set time.end=-1:1:") == 0);
+  CHECK(bad_value.find("'time.end'") != std::string::npos);
+  CHECK(error_with("time.ende=1").find("time.ende") != std::string::npos);
+  CHECK(error_with("flow.scheme=central9").find("central9") != std::string::npos);
+  CHECK(error_with("no_equals_sign").find("expected KEY=VALUE") != std::string::npos);
+  CHECK(error_with("=3").find("expected KEY=VALUE") != std::string::npos);
+  CHECK(error_with("mesh..box=3").find("expected KEY=VALUE") != std::string::npos);
+  CHECK(error_with("mesh.source.x=3").find("'mesh.source' is a value") != std::string::npos);
+  CHECK(error_with("time.end=").find("not TOML") != std::string::npos);
+}

@@ -28,7 +28,7 @@ struct Bad {
 // clang-format off
 const Bad bad_scenes[] = {
   {"unknown_key.toml", "6:1: key 'mesh.box.cels': unknown key; did you mean 'mesh.box.cells'? (accepted: keys origin, length, cells, cell_type, perturbation, seed, periodic)"},
-  {"unknown_section.toml", "5:2: key 'partiton': unknown table; did you mean 'partition'? (accepted: sections run, mesh, partition, flow, time, poisson, initial, output, boundary, les, probe, probes, sample, statistics, wall_shear, pressure_drop, section, sections, immersed, structure, valve)"},
+  {"unknown_section.toml", "5:2: key 'partiton': unknown table; did you mean 'partition'? (accepted: sections run, mesh, partition, flow, time, poisson, initial, output, forcing, boundary, les, probe, probes, sample, statistics, wall_shear, pressure_drop, section, sections, immersed, structure, valve)"},
   {"wrong_type.toml", "6:9: key 'mesh.box.cells': expected an array of 3 integers, got the string \"8 8 8\" (accepted: 3 values, each >= 1)"},
   {"out_of_range.toml", "6:16: key 'partition.ghost_layers': value 7 is out of range (accepted: [1, 4])"},
   {"unknown_enum.toml", "3:10: key 'mesh.source': unknown value \"boks\"; did you mean \"box\"? (accepted: \"box\", \"gmsh\", \"pipe\", \"cylinder_channel\")"},

@@ -7,29 +7,27 @@
 // 10^5 steps) was, measured (energy budget per term): not the discretisation gaining energy
 // (convection is energy-neutral to round-off, tests/flow/test_energy_conservation.cpp; the
 // viscous and pressure terms dissipate) but (1) the nodal forcing's discrete mean, a net force
-// on the periodic box that made the mean flow grow linearly (removed below), and (2) a slow
-// transient of the incremental projection: pressure modes the wide gradient hardly sees decay
-// over ~2600 steps, which leaves a drift of a few 1e-8 over the second half of 10^5 steps;
+// on the periodic box that made the mean flow grow linearly (removed: flow/body_forcing.hpp), and
+// (2) a slow transient of the incremental projection: pressure modes the wide gradient hardly sees
+// decay over ~2600 steps, which leaves a drift of a few 1e-8 over the second half of 10^5 steps;
 // the pressure damping that boundary conditions always switch on removes it.
-// Flow: Kolmogorov forcing f = F sin(k y) e_x in the unit periodic box, started from rest
-// plus a divergence-free perturbation, Re = U / (nu k) = 16 (below the flow's linear-stability
-// limit, so the physical answer is the steady laminar profile U sin(k y), U = F / (rho nu k^2),
-// reached after a few 1/(nu k^2)). Checks: no blow-up (finite energy, bounded divergence), the
-// steady kinetic energy against the analytic U^2/4 within the discretisation error of the
-// coarse mesh, and no drift: the energy's relative change over the second half of the run.
+// Flow (validation/stability/stability.toml, run by `valsalva run`'s Simulation): Kolmogorov
+// forcing f = F sin(k y) e_x in the unit periodic box ([forcing], its discrete mean removed),
+// started from rest plus a divergence-free perturbation, Re = U / (nu k) = 16 (below the flow's
+// linear-stability limit, so the physical answer is the steady laminar profile U sin(k y),
+// U = F / (rho nu k^2), reached after a few 1/(nu k^2)); time.stability_fraction = sigma. Checks:
+// no blow-up (finite energy, bounded divergence), the steady kinetic energy against the analytic
+// U^2/4 within the discretisation error of the coarse mesh, and no drift: the energy's relative
+// change over the second half of the run.
 #include <fmt/format.h>
 
 #include <cmath>
 #include <fstream>
 #include <numbers>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
-#include "flow/poisson_weights.hpp"
-#include "flow/projection_rk4.hpp"
 #include "flow/run_diagnostics.hpp"
-#include "io/box_generator.hpp"
 #include "validation/case.hpp"
+#include "validation/scene_run.hpp"
 
 namespace valsalva::validation {
 
@@ -39,93 +37,55 @@ void run_stability(const Context& ctx, Report& report, double perturbation,
                    const std::string& label, bool asserted, bool damping) {
   const int steps = ctx.quick ? 10000 : 100000;
   const double sigma = ctx.option_real("sigma", 1.0);
-  const double rho = 1000, nu = 0.01, k = 2 * std::numbers::pi, u_max = 1.0;
-  const double force = u_max * rho * nu * k * k;  // N/m^3
-  io::BoxSpec spec;
-  spec.cells = {6, 6, 6};
-  spec.cell_type = "tetra";
-  spec.perturbation = perturbation;
-  spec.periodic = {true, true, true};
-  const auto mesh = io::generate_box(spec);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, ctx.comm);
-
-  flow::ProjectionOptions options;
-  options.density = rho;
-  options.viscosity = nu;
-  options.poisson.tolerance = 1e-10;
-  options.periodic_pressure_damping = damping;
-  flow::ProjectionRK4 solver(local, options, flow::poisson_weights(mesh, metrics, local));
-  // The nodal forcing without its discrete (volume-weighted) mean: F sin(k y) has zero mean, its
-  // samples at perturbed nodes do not (1.5e-4 F on the 20 % perturbed mesh), and a periodic box
-  // has nothing that removes the momentum a net force puts in. With the mean kept the mean flow
-  // grows linearly in time (measured: u_mean = 0.28 U at t = 2150 s), which is what made the
-  // perturbed-tetrahedra energy grow to 9.4 x the laminar value over 10^5 steps.
-  flow::VectorField forcing(local.num_local());
-  double net = 0, owned_volume = 0;
-  for (int i = 0; i < local.num_local(); ++i) {
-    forcing[i] = Eigen::Vector3d(force * std::sin(k * local.position[i].y()), 0, 0);
-    if (i < local.num_owned)
-      net += local.volume[i] * forcing[i].x(), owned_volume += local.volume[i];
-  }
-  const double mean_force = local.comm.sum(net) / local.comm.sum(owned_volume);
-  for (auto& f : forcing) f.x() -= mean_force;
-  solver.set_body_force(
-      [&](int, double, const flow::VectorField&, flow::VectorField& f) { f = forcing; });
-  flow::FlowState state;
-  state.velocity.resize(local.num_local());
-  state.pressure.assign(local.num_local(), 0.0);
-  for (int i = 0; i < local.num_local(); ++i) {
-    const auto& x = local.position[i];  // a divergence-free 3D perturbation, 10 % of U
-    state.velocity[i] =
-        0.1 * u_max *
-        Eigen::Vector3d(std::sin(k * x.z()), std::sin(k * x.x()), std::sin(k * x.y()));
-  }
-  const auto weights = flow::laplacian_weights(local);
-  std::vector<double> scratch;
-  const double volume = local.comm.sum([&] {
-    double v = 0;
-    for (int i = 0; i < local.num_owned; ++i) v += local.volume[i];
-    return v;
-  }());
-  auto mean_energy = [&] { return flow::kinetic_energy(local, 1.0, state.velocity) / volume; };
-
+  const double u_max = 1.0;  // the laminar amplitude of stability.toml
   std::ofstream csv;
-  if (local.comm.rank() == 0) {
+  int rank = 0;
+  MPI_Comm_rank(ctx.comm, &rank);
+  if (rank == 0) {
     csv.open(ctx.out_dir / ("energy_" + label + ".csv"));
-    csv << "step,time,dt,energy,max_divergence\n";
+    csv << "step,time,dt,energy\n";
   }
-  double max_div = 0, e_half = 0, dt_min = 1e300, dt_max = 0;
+  double e_half = 0, e_end = 0, dt_min = 1e300, dt_max = 0, t_previous = 0;
   bool finite = true;
-  for (int s = 1; s <= steps; ++s) {
-    const auto rates = flow::stability_rates(local, weights, nu, state.velocity, scratch);
-    const double dt = sigma / rates.stability;  // sigma = 1: the largest admissible step
+  double volume = 0;
+  SceneRun measure;
+  auto mean_energy = [&](const run::Simulation& sim) {
+    return flow::kinetic_energy(sim.local(), 1.0, sim.state().velocity) / volume;
+  };
+  measure.at_start = [&](const run::Simulation& sim) {
+    double v = 0;
+    for (int i = 0; i < sim.local().num_owned; ++i) v += sim.local().volume[i];
+    volume = sim.local().comm.sum(v);
+  };
+  measure.observer = [&](const run::Simulation& sim, std::int64_t s) {
+    const double t = sim.state().time, dt = t - t_previous;
+    t_previous = t;
     dt_min = std::min(dt_min, dt);
     dt_max = std::max(dt_max, dt);
-    const auto r = solver.step(state, dt);
-    max_div = std::max(max_div, r.max_divergence);
-    if (s == steps / 2) e_half = mean_energy();
+    if (s == steps / 2) e_half = mean_energy(sim);
     if (s % (steps / 200) == 0 || s == steps) {
-      const double e = mean_energy();
-      if (!std::isfinite(e)) {
-        finite = false;
-        break;
-      }
-      if (csv.is_open())
-        csv << fmt::format("{},{:.6g},{:.6g},{:.12e},{:.4e}\n", s, state.time, dt, e,
-                           r.max_divergence);
+      const double e = mean_energy(sim);
+      finite = finite && std::isfinite(e);
+      if (csv.is_open()) csv << fmt::format("{},{:.6g},{:.6g},{:.12e}\n", s, t, dt, e);
     }
-  }
-  const double e_end = mean_energy();
+  };
+  measure.at_end = [&](const run::Simulation& sim) { e_end = mean_energy(sim); };
+  const auto result = run_scene_file(case_scene("stability", "stability.toml"),
+                                     {fmt::format("mesh.box.perturbation={}", perturbation),
+                                      fmt::format("poisson.periodic_damping={}", damping),
+                                      fmt::format("time.stability_fraction={:.17g}", sigma),
+                                      fmt::format("time.max_steps={}", steps)},
+                                     ctx.out_dir / "runs" / label, ctx.comm, measure);
+  const double max_div = result.summary.max_divergence;
   const double exact = u_max * u_max / 4;  // mean of (U sin ky)^2 / 2
   const double drift = std::abs(e_end / e_half - 1);
-  if (local.comm.rank() == 0)
+  if (rank == 0)
     fmt::print(
-        "stability {}: {} steps, dt {:.4g}..{:.4g} s (sigma = {}), t = {:.1f} s, removed mean "
-        "force / F {:.3e}, E/E_exact {:.6f}, drift over the second half {:.3e}, max |div v| h/U "
-        "{:.3e}\n",
-        label, steps, dt_min, dt_max, sigma, state.time, mean_force / force, e_end / exact, drift,
-        max_div / (u_max * 6));
+        "stability {}: {} steps, dt {:.4g}..{:.4g} s (sigma = {}), t = {:.1f} s, E/E_exact "
+        "{:.6f}, drift over the second half {:.3e}, max |div v| h/U {:.3e}\n",
+        label, result.summary.steps, dt_min, dt_max, sigma, result.summary.time, e_end / exact,
+        drift, max_div / (u_max * 6));
+  finite = finite && result.summary.steps == steps;
   if (!asserted) return;
   report.add(label + ": steps completed with finite energy", finite ? steps : 0, steps, 0);
   // Steady energy: the compact Laplacian of the coarse (h = 1/6) mesh misses the continuous

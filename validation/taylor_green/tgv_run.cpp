@@ -1,6 +1,8 @@
 // Taylor-Green vortex run and error measurement; see tgv_run.hpp.
 #include "validation/taylor_green/tgv_run.hpp"
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -14,6 +16,7 @@
 #include "flow/poisson_weights.hpp"
 #include "flow/projection_rk4.hpp"
 #include "io/box_generator.hpp"
+#include "validation/scene_run.hpp"
 
 namespace valsalva::validation {
 
@@ -65,69 +68,80 @@ double l2_difference(const flow::LocalMesh& local, const flow::VectorField& a,
   return std::sqrt(local.comm.sum(e) / local.comm.sum(v));
 }
 
+// The level as scene overrides of validation/taylor_green/taylor_green.toml.
+std::vector<std::string> level_overrides(const TgvSpec& spec, double dt) {
+  const double h = 2 * std::numbers::pi / spec.n;
+  const double mu = std::isfinite(spec.reynolds) ? 1.0 / spec.reynolds : 0.0;  // rho = U0 = L = 1
+  return {
+      fmt::format("mesh.box.cells=[{}, {}, {}]", spec.n, spec.n, spec.nz),
+      fmt::format("mesh.box.length=[{:.17g}, {:.17g}, {:.17g}]", 2 * std::numbers::pi,
+                  2 * std::numbers::pi, spec.nz * h),
+      fmt::format("mesh.box.cell_type={}", spec.cell_type),
+      fmt::format("mesh.box.perturbation={:.17g}", spec.perturbation),
+      fmt::format("flow.viscosity={:.17g}", mu),
+      fmt::format("flow.scheme={}", spec.scheme),
+      fmt::format("flow.fourth_order_operators={}", spec.fourth_order_operators),
+      fmt::format("flow.viscous_weights={}", spec.stiffness_viscous ? "stiffness" : "two_point"),
+      fmt::format("poisson.tolerance={:.17g}", spec.poisson.tolerance),
+      fmt::format("poisson.max_iterations={}", spec.poisson.max_iterations),
+      fmt::format("time.end={:.17g}", spec.t_end),
+      fmt::format("time.dt={:.17g}", dt)};
+}
+
 }  // namespace
 
-TgvResult run_taylor_green(const TgvSpec& spec, MPI_Comm comm) {
+TgvResult run_taylor_green(const TgvSpec& spec, MPI_Comm comm,
+                           const std::filesystem::path& run_dir) {
   const auto start = std::chrono::steady_clock::now();
-  const TgvMesh m = build_mesh(spec, comm);
-  const auto& local = m.local;
-
-  flow::ProjectionOptions options;
   const auto exact = exact_solution(spec);
-  options.density = exact.rho;
-  options.viscosity = exact.nu;
-  options.scheme = spec.scheme;
-  options.stiffness_viscous = spec.stiffness_viscous;
-  options.fourth_order_operators = spec.fourth_order_operators;
-  options.poisson = spec.poisson;
-  flow::ProjectionRK4 solver(local, options, flow::poisson_weights(m.mesh, m.metrics, local));
-
-  flow::FlowState state;
-  for (int i = 0; i < local.num_local(); ++i) {
-    state.velocity.push_back(exact.velocity(local.position[i], 0.0));
-    state.pressure.push_back(exact.pressure(local.position[i], 0.0));
-  }
   TgvResult r;
   r.n = spec.n;
   r.h = 2 * std::numbers::pi / spec.n;
-  r.nodes = local.global_nodes;
   double dt = spec.cfl * r.h;
   if (spec.dt_max > 0) dt = std::min(dt, spec.dt_max);
   r.steps = static_cast<int>(std::ceil(spec.t_end / dt - 1e-9));
   r.dt = spec.t_end / r.steps;
-  r.kinetic_energy.reserve(r.steps + 1);
-  r.kinetic_energy.push_back(mean_kinetic_energy(local, state.velocity));
-  for (int s = 0; s < r.steps; ++s) {
-    const auto report = solver.step(state, r.dt);
-    r.max_poisson_iterations = std::max(r.max_poisson_iterations, report.poisson.iterations);
-    r.max_divergence = std::max(r.max_divergence, report.max_divergence);
-    r.kinetic_energy.push_back(mean_kinetic_energy(local, state.velocity));
-  }
 
-  const auto& c = local.comm;
-  double volume = 0, p_mean = 0, pe_mean = 0;
-  for (int i = 0; i < local.num_owned; ++i) {
-    volume += local.volume[i];
-    p_mean += local.volume[i] * state.pressure[i];
-    pe_mean += local.volume[i] * exact.pressure(local.position[i], state.time);
-  }
-  volume = c.sum(volume);
-  p_mean = c.sum(p_mean) / volume;
-  pe_mean = c.sum(pe_mean) / volume;
-  double e2 = 0, einf = 0, ep = 0;
-  for (int i = 0; i < local.num_owned; ++i) {
-    const auto& x = local.position[i];
-    const double du = (state.velocity[i] - exact.velocity(x, state.time)).norm();
-    e2 += local.volume[i] * du * du;
-    einf = std::max(einf, du);
-    ep += local.volume[i] *
-          std::pow(state.pressure[i] - p_mean - (exact.pressure(x, state.time) - pe_mean), 2);
-  }
-  r.velocity_l2 = std::sqrt(c.sum(e2) / volume);
-  r.velocity_linf = c.max(einf);
-  r.pressure_l2 = std::sqrt(c.sum(ep) / volume);
-  r.wall_seconds =
-      c.max(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  SceneRun measure;
+  r.kinetic_energy.reserve(r.steps + 1);
+  auto energy = [&](const run::Simulation& sim) {
+    r.kinetic_energy.push_back(mean_kinetic_energy(sim.local(), sim.state().velocity));
+  };
+  measure.at_start = energy;
+  measure.observer = [&](const run::Simulation& sim, std::int64_t) { energy(sim); };
+  measure.at_end = [&](const run::Simulation& sim) {
+    const auto& local = sim.local();
+    const auto& state = sim.state();
+    r.nodes = local.global_nodes;
+    const auto& c = local.comm;
+    double volume = 0, p_mean = 0, pe_mean = 0;
+    for (int i = 0; i < local.num_owned; ++i) {
+      volume += local.volume[i];
+      p_mean += local.volume[i] * state.pressure[i];
+      pe_mean += local.volume[i] * exact.pressure(local.position[i], state.time);
+    }
+    volume = c.sum(volume);
+    p_mean = c.sum(p_mean) / volume;
+    pe_mean = c.sum(pe_mean) / volume;
+    double e2 = 0, einf = 0, ep = 0;
+    for (int i = 0; i < local.num_owned; ++i) {
+      const auto& x = local.position[i];
+      const double du = (state.velocity[i] - exact.velocity(x, state.time)).norm();
+      e2 += local.volume[i] * du * du;
+      einf = std::max(einf, du);
+      ep += local.volume[i] *
+            std::pow(state.pressure[i] - p_mean - (exact.pressure(x, state.time) - pe_mean), 2);
+    }
+    r.velocity_l2 = std::sqrt(c.sum(e2) / volume);
+    r.velocity_linf = c.max(einf);
+    r.pressure_l2 = std::sqrt(c.sum(ep) / volume);
+  };
+  const auto result = run_scene_file(case_scene("taylor_green", "taylor_green.toml"),
+                                     level_overrides(spec, r.dt), run_dir, comm, measure);
+  r.max_poisson_iterations = result.summary.max_poisson_iterations;
+  r.max_divergence = result.summary.max_divergence;
+  r.wall_seconds = flow::Comm(comm).max(
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return r;
 }
 

@@ -10,6 +10,7 @@
 #include <mpi.h>
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -48,7 +49,10 @@ struct TgvResult {
   std::vector<double> kinetic_energy;
 };
 
-TgvResult run_taylor_green(const TgvSpec& spec, MPI_Comm comm);
+// Through the product's path: validation/taylor_green/taylor_green.toml with the spec as scene
+// overrides, run by run::Simulation in `run_dir` (empty: a scratch folder, removed after).
+TgvResult run_taylor_green(const TgvSpec& spec, MPI_Comm comm,
+                           const std::filesystem::path& run_dir = {});
 
 // The 4th-order set-up at Re 100: central4 with flow::ProjectionOptions::fourth_order_operators
 // and dt = c (16 / n)^2 (at most CFL 0.1), c = 0.0125 on hexahedra, 0.05 on tetrahedra (whose

@@ -1,14 +1,17 @@
-// One run of the time-order study (validation/time_order): the 3D Taylor-Green vortex
-// (initial.type = taylor_green_3d, L = 1, nu = 1/1600) on a periodic n^3 box of side 2 pi,
-// driven through the product's run loop (flow::RunLoop) with a fixed time step, and the L2
-// difference of two such runs' final velocities.
+// One run of the time-order study (validation/time_order): the scene time_order.toml (the 3D
+// Taylor-Green vortex, initial.type = taylor_green_3d, on a periodic n^3 box of side 2 pi) with
+// the run's cells, end time, fixed time step and time integrator as overrides, run as users run
+// it (run::Simulation and its run loop), and the L2 difference of two runs' final velocities.
 #pragma once
 
-#include <string>
+#include <mpi.h>
 
-#include "flow/local_mesh.hpp"
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "flow/operators.hpp"
 #include "flow/time_scheme.hpp"
-#include "validation/tgv_les/tgv_les_run.hpp"
 
 namespace valsalva::validation {
 
@@ -21,26 +24,30 @@ struct TimeVariant {
 
 struct TimeOrderRunSpec {
   TimeVariant variant;
+  int cells = 16;       // per side
   double velocity = 1;  // U0, m/s; nu = 1/1600 m^2/s whatever U0 (Re = 1600 U0)
-  double t_end = 2;     // s
-  int steps = 20;       // dt = t_end / steps
-  double poisson_tolerance = 1e-10;
+  double t_end = 1;     // s
+  int steps = 5;        // time.dt = t_end / steps
 };
 
 struct TimeOrderRun {
   double dt = 0;
   int steps = 0;
-  double cpu_seconds = 0;   // process CPU time of the run loop, summed over ranks
+  double cpu_seconds = 0;   // process CPU time of Simulation::run, summed over ranks
   double wall_seconds = 0;  // max over ranks
   int max_poisson_iterations = 0;
-  flow::VectorField velocity;  // at t_end, every local node of box.local
+  flow::VectorField velocity;  // at t_end, owned nodes in local order
+  std::vector<double> volume;  // their dual volumes
+  // Owned nodes' positions: every run of one mesh partitions it the same way; checked.
+  std::vector<Eigen::Vector3d> position;
 };
 
-// Collective over box.local's communicator.
-TimeOrderRun run_time_order(const TimeOrderRunSpec& spec, const TgvBox& box);
+// Collective over `comm`; the run directory is `run_dir` (replaced).
+TimeOrderRun run_time_order(const TimeOrderRunSpec& spec, const std::filesystem::path& run_dir,
+                            MPI_Comm comm);
 
-// Collective: sqrt(sum_j V_j |a_j - b_j|^2 / sum_j V_j) over owned nodes.
-double velocity_l2_difference(const flow::LocalMesh& local, const flow::VectorField& a,
-                              const flow::VectorField& b);
+// Collective: sqrt(sum_j V_j |a_j - b_j|^2 / sum_j V_j) over the owned nodes of two runs of the
+// same mesh (b = nullptr: the L2 norm of a); throws when their nodes differ.
+double velocity_l2_difference(const TimeOrderRun& a, const TimeOrderRun* b, MPI_Comm comm);
 
 }  // namespace valsalva::validation

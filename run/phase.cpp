@@ -1,11 +1,11 @@
-#include "app/phase.hpp"
+#include "run/phase.hpp"
 
 #include <fmt/format.h>
 
 #include <exception>
 #include <utility>
 
-namespace valsalva::app {
+namespace valsalva::run {
 
 namespace {
 std::string current_phase;  // one command per process, one thread
@@ -35,4 +35,4 @@ std::string mesh_phase(const io::Scene& scene) {
   return fmt::format("generating the mesh mesh.source = {}", source);
 }
 
-}  // namespace valsalva::app
+}  // namespace valsalva::run

@@ -8,7 +8,7 @@
 
 #include "io/scene.hpp"
 
-namespace valsalva::app {
+namespace valsalva::run {
 
 class Phase {
  public:
@@ -28,4 +28,4 @@ class Phase {
 // "reading the mesh mesh.file = 'root.msh'" or "generating the mesh mesh.source = box".
 std::string mesh_phase(const io::Scene& scene);
 
-}  // namespace valsalva::app
+}  // namespace valsalva::run

@@ -1,0 +1,78 @@
+// One simulation assembled from a scene — mesh, partition, solver, boundary conditions, LES,
+// immersed structures, valve monitor, analysis, fields and checkpoints — and its one run loop.
+// `valsalva run`, every validation case and every benchmark that times a run go through it, so
+// that what is validated is what users run (issue 20).
+#pragma once
+
+#include <mpi.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "flow/local_mesh.hpp"
+#include "flow/mesh.hpp"
+#include "flow/run_loop.hpp"
+#include "io/scene.hpp"
+
+namespace valsalva::run {
+
+// How a run is started, apart from the scene: the command line of `valsalva run`.
+struct RunRequest {
+  std::filesystem::path out;  // empty: run.output_dir, else runs/<scene>
+  bool overwrite = false;     // or run.overwrite: replace an earlier run's directory
+  std::string restart;        // "": a new run; a checkpoint file; "latest" in <out>/checkpoints
+  bool quiet = false;         // start and end lines only (run.progress = quiet)
+  bool print = true;          // false: nothing on stdout at all (tests, validation levels)
+};
+
+struct RunResult {
+  flow::RunSummary summary;
+  std::filesystem::path run_path;         // the run directory (log.csv and the rest)
+  std::filesystem::path fields_xmf;       // empty without field output
+  std::filesystem::path last_checkpoint;  // empty when none was written
+};
+
+class Simulation;
+// Called on every rank after every step, after the analysis sampled it (collective).
+using StepObserver = std::function<void(const Simulation&, std::int64_t step)>;
+
+class Simulation {
+ public:
+  // Checks the whole scene against its mesh before the run directory is touched, then prepares
+  // the directory (or continues one in place on a restart) and sets everything up. Throws
+  // io::SceneError / std::runtime_error naming the key, file or checkpoint at fault.
+  Simulation(const io::Scene& scene, const RunRequest& request, MPI_Comm comm = MPI_COMM_WORLD);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  // Before run(), not on a restart: start from u(x) at every node instead of initial.type's
+  // velocity (boundary values imposed on it), e.g. a validation level from the coarser level's
+  // steady field.
+  void set_initial_velocity(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& u);
+  // Something a validation case or benchmark measures on the way; nothing by default.
+  void observe(StepObserver observer);
+  // Runs to time.end (or time.max_steps, or a stop signal), writes the analysis results.
+  // Throws flow::RunError as std::runtime_error with the scene key's location when it names one.
+  RunResult run();
+
+  // From an observer: end the run after this step (RunSummary::stopped), e.g. once a
+  // validation case's quantity is steady.
+  void request_stop();
+
+  const flow::Mesh& mesh() const;
+  const flow::DualMetrics& metrics() const;
+  const flow::LocalMesh& local() const;
+  const flow::FlowState& state() const;
+  const flow::RunLoop& loop() const;
+  const std::filesystem::path& run_path() const;
+
+ private:
+  struct Parts;
+  std::unique_ptr<Parts> parts_;
+};
+
+}  // namespace valsalva::run

@@ -1,0 +1,80 @@
+// Validation levels through run::Simulation; see scene_run.hpp.
+#include "validation/scene_run.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <system_error>
+
+#include "io/scene.hpp"
+#include "run/data_dir.hpp"
+
+namespace valsalva::validation {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh folder made by rank 0 (mkdtemp) and known to every rank; removed on destruction.
+class ScratchDir {
+ public:
+  explicit ScratchDir(MPI_Comm comm) : comm_(comm) {
+    int rank = 0;
+    MPI_Comm_rank(comm, &rank);
+    std::string name;
+    if (rank == 0) {
+      std::string pattern = (fs::temp_directory_path() / "valsalva-level-XXXXXX").string();
+      if (!mkdtemp(pattern.data()))
+        throw std::runtime_error(fmt::format("cannot create a scratch run directory {}", pattern));
+      name = pattern;
+    }
+    int size = static_cast<int>(name.size());
+    MPI_Bcast(&size, 1, MPI_INT, 0, comm);
+    name.resize(size);
+    MPI_Bcast(name.data(), size, MPI_CHAR, 0, comm);
+    path_ = name;
+  }
+  ~ScratchDir() {
+    MPI_Barrier(comm_);
+    int rank = 0;
+    MPI_Comm_rank(comm_, &rank);
+    std::error_code ignored;  // a leftover in the temporary directory is no reason to fail
+    if (rank == 0) fs::remove_all(path_, ignored);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  MPI_Comm comm_;
+  fs::path path_;
+};
+
+}  // namespace
+
+std::filesystem::path case_scene(const std::string& case_name, const std::string& file) {
+  return run::data_dir() / "validation" / case_name / file;
+}
+
+run::RunResult run_scene_file(const std::filesystem::path& scene_file,
+                              const std::vector<std::string>& overrides,
+                              const std::filesystem::path& run_dir, MPI_Comm comm,
+                              const SceneRun& measure) {
+  std::optional<ScratchDir> scratch;
+  if (run_dir.empty()) scratch.emplace(comm);
+  const auto scene = io::load_scene(scene_file, overrides);
+  run::RunRequest request;
+  request.out = scratch ? scratch->path() : run_dir;
+  request.overwrite = true;
+  request.quiet = true;
+  request.print = false;
+  run::Simulation simulation(scene, request, comm);
+  if (measure.at_start) measure.at_start(simulation);
+  if (measure.observer) simulation.observe(measure.observer);
+  auto result = simulation.run();
+  if (measure.at_end) measure.at_end(simulation);
+  if (scratch) result.run_path.clear();  // gone with the scratch folder
+  return result;
+}
+
+}  // namespace valsalva::validation

@@ -1,0 +1,37 @@
+// A validation level run as users run it: a case's scene file with the level's overrides
+// (`valsalva run SCENE --set KEY=VALUE ...`), through run::Simulation and its one run loop, into
+// a run directory of its own (issue 20: the validated code is the code users run).
+#pragma once
+
+#include <mpi.h>
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "run/simulation.hpp"
+
+namespace valsalva::validation {
+
+// validation/<case>/<file> in the source tree (the scenes ship with their cases).
+std::filesystem::path case_scene(const std::string& case_name, const std::string& file);
+
+struct SceneRun {
+  // What the case measures: called on every rank before the first step, ...
+  std::function<void(const run::Simulation&)> at_start;
+  // ... after every step (collective) ...
+  run::StepObserver observer;
+  // ... and once at the end, with the simulation in its final state (collective).
+  std::function<void(const run::Simulation&)> at_end;
+};
+
+// Loads `scene_file` with `overrides` and runs it quietly (nothing on stdout) into `run_dir`,
+// replacing what is there; an empty `run_dir` runs in a scratch folder under the system's
+// temporary directory (the same on every rank), removed afterwards. Collective over `comm`.
+run::RunResult run_scene_file(const std::filesystem::path& scene_file,
+                              const std::vector<std::string>& overrides,
+                              const std::filesystem::path& run_dir, MPI_Comm comm,
+                              const SceneRun& measure = {});
+
+}  // namespace valsalva::validation
