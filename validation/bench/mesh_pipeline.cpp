@@ -64,7 +64,16 @@ int main(int argc, char** argv) {
       ->check(bench::positive);
   app.add_option("--mesh", file,
                  "Mesh file, written by Gmsh first if it does not exist (default: "
-                 "bench_pipe_<target-size>.msh)");
+                 "bench_pipe_<target-size>.msh)")
+      ->check(CLI::Validator(
+          [](std::string& name) -> std::string {  // read, or written into an existing folder
+            const auto folder = std::filesystem::path(name).parent_path();
+            if (std::filesystem::exists(name) || folder.empty() ||
+                std::filesystem::is_directory(folder))
+              return {};
+            return "folder " + folder.string() + " does not exist";
+          },
+          "FILE"));
   return bench::mpi_main(app, argc, argv, [&](int rank, int size) {
     if (file.empty()) file = fmt::format("bench_pipe_{:.6f}.msh", target);
     if (rank == 0 && !std::filesystem::exists(file)) {
