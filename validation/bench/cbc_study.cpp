@@ -8,12 +8,10 @@
 #include <fmt/format.h>
 #include <mpi.h>
 
-#include <cstdlib>
 #include <string>
 #include <vector>
 
-#include "flow/convection_scheme.hpp"
-#include "validation/bench/bench_cli.hpp"
+#include "validation/bench/cbc_options.hpp"
 #include "validation/cbc_decay/cbc_run.hpp"
 
 int main(int argc, char** argv) {
@@ -24,18 +22,12 @@ int main(int argc, char** argv) {
   bench::App app{"bench_cbc_study",
                  "One Comte-Bellot & Corrsin decaying-turbulence run with every set-up choice "
                  "open: resolved energy against the filtered measurement per station"};
-  app.add_option("--n", spec.n, "Cells per side of the periodic box")->check(bench::positive);
-  app.add_option("--model", spec.model, "Subgrid model")
-      ->check(CLI::IsMember({"sigma", "wale", "smagorinsky", "none"}));
-  app.add_option("--scheme", spec.scheme, "Convective scheme")
-      ->check(CLI::IsMember(valsalva::flow::convection_scheme_names()));
+  bench::add_cbc_options(app, spec);
   app.add_option("--spinup", spec.spinup_turnovers,
                  "Rescaled spin-up before the start, in large-eddy turnovers L11 / u'")
       ->check(bench::non_negative);
   app.add_option("--stability", spec.stability, "dt = stability / (RK4 Gershgorin rate)")
       ->check(bench::positive);
-  app.add_option("--update", spec.update, "nu_sgs once per time step or at every RK stage")
-      ->check(CLI::IsMember({"step", "stage"}));
   app.add_option("--seed", spec.seed, "Seed of the random initial field");
   app.add_option("--box", spec.box_in_m, "Box side L / M")->check(bench::positive);
   app.add_option("--spectra", spectra, "Also print E(k) per shell at each station");

@@ -10,8 +10,7 @@
 #include <string>
 #include <thread>
 
-#include "flow/convection_scheme.hpp"
-#include "validation/bench/bench_cli.hpp"
+#include "validation/bench/cbc_options.hpp"
 #include "validation/cbc_decay/cbc_run.hpp"
 
 int main(int argc, char** argv) {
@@ -21,13 +20,7 @@ int main(int argc, char** argv) {
   bench::App app{"bench_les_cost",
                  "Share of a time step spent computing nu_sgs (CBC decaying turbulence to tU0/M "
                  "= 98; target <= 10 %)"};
-  app.add_option("--n", spec.n, "Cells per side of the periodic box")->check(bench::positive);
-  app.add_option("--model", spec.model, "Subgrid model")
-      ->check(CLI::IsMember({"sigma", "wale", "smagorinsky", "none"}));
-  app.add_option("--scheme", spec.scheme, "Convective scheme")
-      ->check(CLI::IsMember(valsalva::flow::convection_scheme_names()));
-  app.add_option("--update", spec.update, "nu_sgs once per time step or at every RK stage")
-      ->check(CLI::IsMember({"step", "stage"}));
+  bench::add_cbc_options(app, spec);
   return bench::mpi_main(app, argc, argv, [&](int rank, int size) {
     spec.stations = {98};
     spec.table = std::string(VALSALVA_SOURCE_DIR) +

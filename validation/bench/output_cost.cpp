@@ -47,17 +47,6 @@ struct Args {
   std::filesystem::path out = "bench-results/output_cost";
 };
 
-// The command line into `a` (defaults as in Args).
-void add_options(bench::App& app, Args& a) {
-  app.add_option("--n", a.n, "Cells per side of the periodic box (100: 1 M nodes)")
-      ->check(bench::positive);
-  app.add_option("--bins", a.bins, "Phase bins of the statistics")->check(bench::positive);
-  app.add_option("--steps", a.steps, "Timed flow steps")->check(bench::positive);
-  app.add_option("--probes", a.probes, "Probe points")->check(bench::positive);
-  app.add_option("--out", a.out, "Folder of the files written");
-  app.add_option("--keep", a.keep, "Keep the files written (else removed at the end)");
-}
-
 struct Seconds {
   double cpu = 0, wall = 0;
 };
@@ -110,7 +99,13 @@ int main(int argc, char** argv) {
   bench::App app{"bench_output_cost",
                  "Cost of statistics, probes, field and checkpoint output next to a flow step, "
                  "and the statistics memory"};
-  add_options(app, args);
+  app.add_option("--n", args.n, "Cells per side of the periodic box (100: 1 M nodes)")
+      ->check(bench::positive);
+  app.add_option("--bins", args.bins, "Phase bins of the statistics")->check(bench::positive);
+  app.add_option("--steps", args.steps, "Timed flow steps")->check(bench::positive);
+  app.add_option("--probes", args.probes, "Probe points")->check(bench::positive);
+  app.add_option("--out", args.out, "Folder of the files written");
+  app.add_option("--keep", args.keep, "Keep the files written (else removed at the end)");
   return bench::mpi_main(app, argc, argv, [&](int rank, int size) {
     const double L = 2 * std::numbers::pi, h = L / args.n;
     io::BoxSpec spec;

@@ -60,19 +60,6 @@ struct Args {
   std::filesystem::path out = "bench-results/tgv_re1600";
 };
 
-// The command line into `a` (defaults as in Args).
-void add_options(bench::App& app, Args& a) {
-  app.add_option("--n", a.n, "Cells per side of the periodic box")->check(bench::positive);
-  app.add_option("--scheme", a.scheme, "Convective scheme")
-      ->check(CLI::IsMember(flow::convection_scheme_names()));
-  app.add_option("--cfl", a.cfl, "Fixed dt from this CFL number")->check(bench::positive);
-  app.add_option("--t-end", a.t_end, "End time")->check(bench::positive);
-  app.add_option("--operators", a.operators,
-                 "Gradient, divergence and viscous operators (order4: \"+op4\" in the names)")
-      ->check(CLI::IsMember({"order2", "order4"}));
-  app.add_option("--out", a.out, "Folder of the CSV files");
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -80,7 +67,15 @@ int main(int argc, char** argv) {
   bench::App app{"bench_tgv_re1600",
                  "Taylor-Green vortex at Re 1600 (workshop case C3.5): cost and the error of "
                  "-dE/dt against the 512^3 spectral reference"};
-  add_options(app, args);
+  app.add_option("--n", args.n, "Cells per side of the periodic box")->check(bench::positive);
+  app.add_option("--scheme", args.scheme, "Convective scheme")
+      ->check(CLI::IsMember(flow::convection_scheme_names()));
+  app.add_option("--cfl", args.cfl, "Fixed dt from this CFL number")->check(bench::positive);
+  app.add_option("--t-end", args.t_end, "End time")->check(bench::positive);
+  app.add_option("--operators", args.operators,
+                 "Gradient, divergence and viscous operators (order4: \"+op4\" in the names)")
+      ->check(CLI::IsMember({"order2", "order4"}));
+  app.add_option("--out", args.out, "Folder of the CSV files");
   return bench::mpi_main(app, argc, argv, [&](int rank, int size) {
     const bool order4 = args.operators == "order4";
     const std::string label = args.scheme + (order4 ? "+op4" : "");
