@@ -39,6 +39,9 @@ int run_scene(const std::filesystem::path& scene_file, const std::vector<std::st
       "max Poisson iterations {}\n",
       summary.steps, summary.time, summary.max_divergence, summary.max_divergence_number,
       summary.max_poisson_iterations);
+  if (summary.steady)
+    fmt::print("steady state: max |u^(n+1) - u^n| / dt {:.3e} m/s2 below time.steady_tolerance\n",
+               summary.change_rate);
   if (!result.fields_xmf.empty())
     fmt::print("results: {} (open {} in ParaView)\n", result.run_path.string(),
                result.fields_xmf.string());

@@ -24,12 +24,23 @@ double seconds(Clock::time_point a, Clock::time_point b) {
 
 }  // namespace
 
+std::vector<double> RunLoop::chosen_poisson_weights(const Mesh& mesh, const DualMetrics& metrics,
+                                                    const LocalMesh& local) const {
+  if (options_.poisson_weights == PoissonWeights::standard)
+    return poisson_weights(mesh, metrics, local);
+  try {
+    return slab_stiffness_weights(mesh, metrics, local);
+  } catch (const std::invalid_argument& e) {
+    throw RunError(std::string("poisson.weights = prism_slab: ") + e.what(), "poisson.weights");
+  }
+}
+
 RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& local,
                  RunOptions options, FieldSink sink)
     : local_(local),
       options_(std::move(options)),
       sink_(std::move(sink)),
-      solver_(local, attach_boundary(), poisson_weights(mesh, metrics, local)) {
+      solver_(local, attach_boundary(), chosen_poisson_weights(mesh, metrics, local)) {
   const auto& ic = options_.initial;
   const int n = local.num_local();
   state_.velocity.assign(n, Eigen::Vector3d::Zero());
@@ -48,12 +59,7 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
     throw RunError("flow run: unknown initial.type '" + ic.type +
                    "' (accepted: rest, taylor_green, cyclic_sines)");
   }
-  if (boundary_) {
-    boundary_->impose_pressure(state_.pressure);
-    boundary_->hold_outlets(state_.velocity);
-    boundary_->impose(state_.velocity, 0.0);
-  }
-  last_good_ = state_;
+  impose_initial_boundary_values();
   if (options_.forcing.type != ForcingSpec::Type::none) {
     auto prescribed = forcing_density(local, options_.forcing);
     solver_.set_body_force(
@@ -69,6 +75,23 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
   } else if (options_.coupling.body_force) {
     solver_.set_body_force(options_.coupling.body_force);
   }
+}
+
+void RunLoop::impose_initial_boundary_values() {
+  if (boundary_) {
+    boundary_->impose_pressure(state_.pressure);
+    boundary_->hold_outlets(state_.velocity);
+    boundary_->impose(state_.velocity, state_.time);
+  }
+  last_good_ = state_;
+}
+
+void RunLoop::set_initial_velocity(VectorField velocity) {
+  if (velocity.size() != static_cast<std::size_t>(local_.num_local()))
+    throw RunError(fmt::format("flow run: initial velocity of {} nodes, the local mesh has {}",
+                               velocity.size(), local_.num_local()));
+  state_.velocity = std::move(velocity);
+  impose_initial_boundary_values();
 }
 
 void RunLoop::resume(FlowState state, std::int64_t step, const ScalarField& pressure_increment,
@@ -263,7 +286,8 @@ RunSummary RunLoop::run() {
     fmt::print("flow: t = {:.9g} s (step {}), kinetic energy {:.6e} J, running to t = {:.6g} s\n",
                state_.time, step_, energy0, t.end);
 
-  while (t.end - state_.time > eps && (t.max_steps == 0 || step_ < t.max_steps)) {
+  while (t.end - state_.time > eps && (t.max_steps == 0 || step_ < t.max_steps) &&
+         !summary.steady) {
     double remaining = t.end - state_.time;
     if (fields && !out.interval_in_steps && t.land_on_output)
       remaining = std::min(remaining, next_output - state_.time);
@@ -298,7 +322,15 @@ RunSummary RunLoop::run() {
       summary.max_mass_imbalance = std::max(summary.max_mass_imbalance, std::abs(imbalance));
     }
 
-    const bool finished = t.end - state_.time <= eps || step_ == t.max_steps;
+    if (t.steady_tolerance > 0) {
+      double change = 0;
+      for (int j = 0; j < local_.num_owned; ++j)
+        change =
+            std::max(change, (state_.velocity[j] - last_good_.velocity[j]).cwiseAbs().maxCoeff());
+      summary.change_rate = local_.comm.max(change) / dt;
+      summary.steady = summary.change_rate < t.steady_tolerance;
+    }
+    const bool finished = t.end - state_.time <= eps || step_ == t.max_steps || summary.steady;
     if (step_ % out.log_every == 0 || finished) {
       const auto now = Clock::now();
       const double per_step =

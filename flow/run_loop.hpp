@@ -39,6 +39,9 @@ struct TimeOptions {
   // Shorten steps to land on every field output time; false = full steps only (fields at the
   // first step at or after each output time), so that output does not change the results.
   bool land_on_output = true;
+  // > 0: stop once max over nodes and components of |u^{n+1} - u^n| / dt is below this (m/s^2):
+  // a steady state; RunSummary::steady says whether it was reached before end or max_steps.
+  double steady_tolerance = 0;
 };
 
 // How progress reaches the terminal (rank 0's stdout): `lines`, one line per log_every steps
@@ -70,8 +73,14 @@ struct StepCoupling {
   std::string max_dt_source;  // what sets max_dt, for the message when time.dt exceeds it
 };
 
+// The Poisson matrix's edge weights (flow/poisson_weights.hpp): standard = P1 stiffness on
+// all-tetrahedral meshes, two-point weights otherwise; prism_slab = slab_stiffness_weights, the
+// P1 weights extended to slabs of right prisms (the DFG benchmark's prism meshes).
+enum class PoissonWeights { standard, prism_slab };
+
 struct RunOptions {
   ProjectionOptions projection;  // density, kinematic viscosity, Poisson settings
+  PoissonWeights poisson_weights = PoissonWeights::standard;
   TimeOptions time;
   OutputOptions output;
   InitialCondition initial;
@@ -131,7 +140,9 @@ struct RunSummary {
   int max_poisson_iterations = 0;
   double max_mass_imbalance = 0;  // max over steps of |sum of all boundary fluxes|, m^3/s
   std::optional<TaylorGreenError> taylor_green;
-  bool stopped = false;  // ended early on a stop request (after the checkpoint hook)
+  bool stopped = false;    // ended early on a stop request (after the checkpoint hook)
+  bool steady = false;     // ended on time.steady_tolerance
+  double change_rate = 0;  // with steady_tolerance: max |u^{n+1} - u^n| / dt of the last step
 };
 
 class RunLoop {
@@ -147,6 +158,10 @@ class RunLoop {
   // `subgrid_viscosity` (all local nodes; empty = zero) the previous step's nu_sgs of an LES,
   // which bounds the first time step (choose_dt), `face_flux` (all local edges; empty = the face
   // value of the velocity) the projected face flux of the state (bitwise restarts).
+  // Before run(): start from this velocity (all local nodes) instead of the initial condition's,
+  // with the boundary values imposed on it as on the initial condition's (e.g. the steady field
+  // of a coarser level, interpolated).
+  void set_initial_velocity(VectorField velocity);
   void resume(FlowState state, std::int64_t step, const ScalarField& pressure_increment = {},
               const ScalarField& subgrid_viscosity = {}, const EdgeField& face_flux = {});
   // The last pressure increment and nu_sgs (for checkpoints; nu_sgs is empty without a model).
@@ -159,6 +174,8 @@ class RunLoop {
   RunSummary run();
 
   const FlowState& state() const { return state_; }
+  // The solver, read-only: its weights for wall forces (flow/wall_force.hpp).
+  const ProjectionRK4& solver() const { return solver_; }
   // The boundary conditions, or null when every patch is periodic.
   const BoundaryConditions* boundary() const { return boundary_.get(); }
   // Velocity error against the exact Taylor-Green solution at the current time (collective).
@@ -170,6 +187,9 @@ class RunLoop {
   void print_progress(const StepReport& report, double dt, double energy, double per_step,
                       double eta, const std::string& flux_text) const;
   [[noreturn]] void fail(const std::string& why);
+  void impose_initial_boundary_values();
+  std::vector<double> chosen_poisson_weights(const Mesh& mesh, const DualMetrics& metrics,
+                                             const LocalMesh& local) const;
   ProjectionOptions& attach_boundary();
 
   const LocalMesh& local_;

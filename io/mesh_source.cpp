@@ -103,6 +103,7 @@ flow::Mesh build_mesh(const Scene& scene) {
     spec.diameter = scene.get<double>(k + "diameter");
     spec.centre_x = scene.get<double>(k + "centre_x");
     spec.centre_y = scene.get<double>(k + "centre_y");
+    spec.split = scene.get<std::string>(k + "cells") == "tetra";
     try {
       mesh = generate_cylinder_channel_mesh(spec);
     } catch (const std::invalid_argument& e) {

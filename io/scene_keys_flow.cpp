@@ -109,6 +109,13 @@ void declare_flow_keys(Schema& s) {
           "and viscosity together (Gershgorin bounds, flow/run_diagnostics.hpp), recomputed "
           "every step, instead of time.cfl and time.fourier; 1 = the largest step the limit "
           "admits (the stability case)");
+  s.real("time.steady_tolerance")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("m/s2")
+      .doc(
+          "> 0: the run stops at a steady state, once max over nodes and components of "
+          "|u^{n+1} - u^n| / dt falls below this (before time.end); 0 = run to time.end");
   s.integer("time.max_steps")
       .def(0)
       .at_least(0)
@@ -176,6 +183,14 @@ void declare_flow_keys(Schema& s) {
       .in_range(0, 10)
       .unit_of("-")
       .doc("Levels of aggressive coarsening (cheaper set-up, weaker AMG)");
+  s.choice("poisson.weights", {"standard", "prism_slab"})
+      .def("standard")
+      .unit_of("-")
+      .doc(
+          "Edge weights of the Poisson matrix: standard = the P1 stiffness on all-tetrahedral "
+          "meshes, two-point weights on others; prism_slab = the P1 weights extended to slabs of "
+          "right prisms (tensor product of the section's P1 stiffness and the 1D axial one; "
+          "refused on other cells), for extruded 2D benchmarks such as DFG");
   s.boolean("poisson.periodic_damping")
       .def(false)
       .unit_of("-")
@@ -299,6 +314,7 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   o.time.max_steps = scene.get<std::int64_t>("time.max_steps");
   o.time.land_on_output = scene.get<bool>("time.land_on_output");
   o.time.stability_fraction = scene.get<double>("time.stability_fraction");
+  o.time.steady_tolerance = scene.get<double>("time.steady_tolerance");
 
   auto& p = o.projection.poisson;
   p.tolerance = scene.get<double>("poisson.tolerance");
@@ -310,6 +326,9 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   p.aggressive_levels = scene.get<int>("poisson.aggressive_levels");
   p.print_level = scene.get<int>("poisson.print_level");
   o.projection.periodic_pressure_damping = scene.get<bool>("poisson.periodic_damping");
+  o.poisson_weights = scene.get<std::string>("poisson.weights") == "prism_slab"
+                          ? flow::PoissonWeights::prism_slab
+                          : flow::PoissonWeights::standard;
 
   o.initial.type = scene.get<std::string>("initial.type");
   if (o.initial.type == "taylor_green" || o.initial.type == "cyclic_sines") {

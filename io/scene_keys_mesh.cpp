@@ -65,7 +65,8 @@ void declare_mesh_keys(Schema& s) {
 
   s.section("mesh.cylinder_channel",
             "DFG flow-around-a-cylinder channel (Schaefer & Turek 1996) as a slab of tetrahedra: "
-            "graded triangles extruded in z and split; patches inlet, outlet, wall, cylinder, "
+            "graded triangles extruded in z (split into tetrahedra, or prisms: cells); patches "
+            "inlet, outlet, wall, cylinder, "
             "front, back (pair front/back in [mesh.periodic.<pair>]).");
   s.when("mesh.cylinder_channel", "mesh.source", {"cylinder_channel"});
   s.real("mesh.cylinder_channel.size_near")
@@ -93,6 +94,12 @@ void declare_mesh_keys(Schema& s) {
       .at_least(3)
       .unit_of("-")
       .doc("Cell layers across the slab (3 at least, so that periodic images stay apart)");
+  s.choice("mesh.cylinder_channel.cells", {"tetra", "prism"})
+      .def("tetra")
+      .unit_of("-")
+      .doc(
+          "tetra = the extruded prisms split into tetrahedra; prism = the prisms themselves "
+          "(with poisson.weights = prism_slab)");
   s.real("mesh.cylinder_channel.length").def(2.2).above(0).unit_of("m").doc("Channel length");
   s.real("mesh.cylinder_channel.height").def(0.41).above(0).unit_of("m").doc("Channel height");
   s.real("mesh.cylinder_channel.diameter").def(0.1).above(0).unit_of("m").doc("Cylinder diameter");

@@ -106,6 +106,7 @@ struct Simulation::Parts {
   fs::path last_checkpoint;
   Clock::time_point t0 = Clock::now(), last_write = Clock::now();
   StepObserver observer;
+  bool stop_requested = false;  // by the observer
 
   void write_fields(const std::string& stream, double time, const flow::FieldSet& set);
   void write_checkpoint(const flow::FlowState& state, std::int64_t step, double dt, bool stopping);
@@ -320,9 +321,6 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
   if (p.checkpoint) {
     p.loop->resume(std::move(start), start_step, start_dp, start_nu_sgs, start_flux);
     p.les.resume(p.loop->subgrid_viscosity());
-  } else {
-    if (p.analysis) p.analysis->sample(p.loop->state(), 0, p.loop->face_flux());
-    if (p.valve_monitor) p.valve_monitor->sample(p.loop->state(), 0);
   }
   if (p.mesh_hash != 0 && checkpoints)
     p.writer.emplace(p.local, p.mesh_hash, p.run_path / "checkpoints", "checkpoint",
@@ -331,6 +329,16 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
 }
 
 Simulation::~Simulation() = default;
+
+void Simulation::set_initial_velocity(
+    const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& u) {
+  auto& p = *parts_;
+  if (p.checkpoint)
+    throw std::logic_error("Simulation::set_initial_velocity on a restart from a checkpoint");
+  flow::VectorField velocity(p.local.num_local());
+  for (int i = 0; i < p.local.num_local(); ++i) velocity[i] = u(p.local.position[i]);
+  p.loop->set_initial_velocity(std::move(velocity));
+}
 
 void Simulation::observe(StepObserver observer) {
   parts_->observer = std::move(observer);
@@ -349,8 +357,17 @@ RunResult Simulation::run() {
   if (p.writer)
     hooks.checkpoint = [&p](const flow::FlowState& state, std::int64_t step, double dt,
                             bool stopping) { p.write_checkpoint(state, step, dt, stopping); };
-  if (p.stop) hooks.stop_requested = [&p] { return p.stop->requested(p.comm); };
+  hooks.stop_requested = [&p] {
+    // Collective (StopSignal::requested reduces over the ranks); the observer's request is
+    // made on every rank alike.
+    const bool signalled = p.stop && p.stop->requested(p.comm);
+    return signalled || p.stop_requested;
+  };
   p.loop->set_hooks(std::move(hooks));
+  if (!p.checkpoint) {  // the initial state (a new run)
+    if (p.analysis) p.analysis->sample(p.loop->state(), 0, p.loop->face_flux());
+    if (p.valve_monitor) p.valve_monitor->sample(p.loop->state(), 0);
+  }
   p.last_write = Clock::now();
   RunResult result;
   result.run_path = p.run_path;
@@ -367,8 +384,18 @@ RunResult Simulation::run() {
   return result;
 }
 
+void Simulation::request_stop() {
+  parts_->stop_requested = true;
+}
+
 const flow::Mesh& Simulation::mesh() const {
   return parts_->mesh;
+}
+const flow::DualMetrics& Simulation::metrics() const {
+  return parts_->metrics;
+}
+const flow::RunLoop& Simulation::loop() const {
+  return *parts_->loop;
 }
 const flow::LocalMesh& Simulation::local() const {
   return parts_->local;

@@ -49,15 +49,25 @@ class Simulation {
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 
+  // Before run(), not on a restart: start from u(x) at every node instead of initial.type's
+  // velocity (boundary values imposed on it), e.g. a validation level from the coarser level's
+  // steady field.
+  void set_initial_velocity(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& u);
   // Something a validation case or benchmark measures on the way; nothing by default.
   void observe(StepObserver observer);
   // Runs to time.end (or time.max_steps, or a stop signal), writes the analysis results.
   // Throws flow::RunError as std::runtime_error with the scene key's location when it names one.
   RunResult run();
 
+  // From an observer: end the run after this step (RunSummary::stopped), e.g. once a
+  // validation case's quantity is steady.
+  void request_stop();
+
   const flow::Mesh& mesh() const;
+  const flow::DualMetrics& metrics() const;
   const flow::LocalMesh& local() const;
   const flow::FlowState& state() const;
+  const flow::RunLoop& loop() const;
   const std::filesystem::path& run_path() const;
 
  private:

@@ -383,3 +383,35 @@ periodic_damping = true
   CHECK(bad("type = \"uniform\"\nforce = [1.0, 0.0, 0.0]\nwavelength = 1.0\n")
             .find("forcing.wavelength") != std::string::npos);  // no effect with uniform
 }
+
+TEST_CASE("set_initial_velocity replaces the initial condition; time.steady_tolerance stops") {
+  Setup s(8, MPI_COMM_WORLD);
+  auto options = tgv_options(100.0);
+  options.time.dt = 0.1;
+  options.time.steady_tolerance = 1e-9;  // m/s^2
+  auto at_rest = options;
+  at_rest.initial.type = "rest";  // p = 0
+  flow::RunLoop loop(s.mesh, s.metrics, s.local, at_rest);
+  // The Taylor-Green velocity at rest pressure: the first step moves the fluid.
+  flow::VectorField vortex_velocity(s.local.num_local());
+  const flow::TaylorGreen tg{1.0, 1.0, 0.01, 1.0};
+  for (int i = 0; i < s.local.num_local(); ++i)
+    vortex_velocity[i] = tg.velocity(s.local.position[i], 0.0);
+  loop.set_initial_velocity(vortex_velocity);
+  CHECK(loop.state().velocity[0] == vortex_velocity[0]);
+  // And a fluid at rest stays at rest: steady after one step.
+  loop.set_initial_velocity(flow::VectorField(s.local.num_local(), Eigen::Vector3d::Zero()));
+  const auto summary = loop.run();
+  CHECK(summary.steady);
+  CHECK(summary.steps == 1);
+  CHECK(summary.change_rate < 1e-9);
+  // The vortex itself decays at 2 nu u: |du/dt| ~ 0.02 m/s^2 is far from steady at 1e-3.
+  options.time.steady_tolerance = 1e-3;
+  options.time.max_steps = 3;
+  flow::RunLoop vortex(s.mesh, s.metrics, s.local, options);
+  const auto decaying = vortex.run();
+  CHECK_FALSE(decaying.steady);
+  CHECK(decaying.steps == 3);
+  CHECK(decaying.change_rate == doctest::Approx(0.02).epsilon(0.1));
+  CHECK_THROWS_AS(vortex.set_initial_velocity(flow::VectorField(3)), flow::RunError);
+}

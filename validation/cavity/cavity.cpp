@@ -3,20 +3,21 @@
 // hexahedral cells in z, uniform mesh (io/box_generator has no wall stretching). Each level runs
 // to steady state, the coarsest from rest and every finer one from the previous level's steady
 // field interpolated bilinearly (only the time to get there depends on the start: Re 100 at 96^2
-// takes t = 3.3, 24^2 from rest t = 13.5). Time step: 0.8 of the RK4 stability limit of
-// flow::stability_rates, refreshed every 20 steps (viscous-limited at Re 100, dt ~ h^2 / nu;
-// convection and viscosity both count at Re 1000). Steady: max_j |u_j^{n+1} - u_j^n| / dt below
-// 1e-4 U^2/L (quick 1e-3); the measured decay rate of that rate near the end (Re 100: ~1 /s;
-// Re 1000: 0.07, 0.13, 0.26 /s at 32^2, 64^2, 128^2) puts the remaining distance to the steady
-// state at 1e-4 U (Re 100) and 1.4e-3, 8e-4, 4e-4 U (Re 1000).
-// The centreline profiles u(y) at x = 1/2 and v(x) at y = 1/2 (N even: nodal lines) are
-// interpolated linearly at the points of U. Ghia, K.N. Ghia, C.T. Shin, J. Comput. Phys. 48
-// (1982) 387-411 (129^2 multigrid, stream function-vorticity; validation/refdata/
-// ghia1982_cavity; of the typos its SOURCE.txt names, v(Re 1000, x = 0.5) is checked to be the
-// consensus 0.02526, Re 3200 is not used). Corner nodes belong to the side walls (a stationary
-// wall wins over the moving lid), as in Ghia's discretisation where the lid velocity starts
-// inside the corners. Metric: max over both lines of |u - u_Ghia| / U on the finest level, the
-// issue's target 1 %; plus the h -> 0 Richardson estimate of the two finest levels (order 2).
+// takes t = 3.3, 24^2 from rest t = 13.5). Each level is validation/cavity/cavity.toml with the
+// level's overrides, run by run::Simulation (`valsalva run`'s path). Time step: 0.8 of the RK4
+// stability limit of flow::stability_rates (time.stability_fraction, every step; viscous-limited at
+// Re 100, dt ~ h^2 / nu; convection and viscosity both count at Re 1000). Steady: max_j |u_j^{n+1}
+// - u_j^n| / dt below 1e-4 U^2/L (quick 1e-3); the measured decay rate of that rate near the end
+// (Re 100: ~1 /s; Re 1000: 0.07, 0.13, 0.26 /s at 32^2, 64^2, 128^2) puts the remaining distance to
+// the steady state at 1e-4 U (Re 100) and 1.4e-3, 8e-4, 4e-4 U (Re 1000). The centreline profiles
+// u(y) at x = 1/2 and v(x) at y = 1/2 (N even: nodal lines) are interpolated linearly at the points
+// of U. Ghia, K.N. Ghia, C.T. Shin, J. Comput. Phys. 48 (1982) 387-411 (129^2 multigrid, stream
+// function-vorticity; validation/refdata/ ghia1982_cavity; of the typos its SOURCE.txt names, v(Re
+// 1000, x = 0.5) is checked to be the consensus 0.02526, Re 3200 is not used). Corner nodes belong
+// to the side walls (a stationary wall wins over the moving lid), as in Ghia's discretisation where
+// the lid velocity starts inside the corners. Metric: max over both lines of |u - u_Ghia| / U on
+// the finest level, the target 1 %; plus the h -> 0 Richardson estimate of the two finest
+// levels (order 2).
 //
 // Measured (`valsalva validate cavity`, 1 rank, machine shared with two other jobs; wall s):
 //   Re 100   N = 24: 2.63 %   48: 1.13 %   96: 0.98 % (pass)   h -> 0: 0.93 %   1.6 / 11.5 / 82 s
@@ -47,15 +48,11 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "flow/boundary_conditions.hpp"
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
-#include "flow/poisson_weights.hpp"
-#include "flow/projection_rk4.hpp"
-#include "flow/run_diagnostics.hpp"
-#include "io/box_generator.hpp"
 #include "io/numeric_table.hpp"
+#include "io/scene.hpp"
+#include "run/simulation.hpp"
 #include "validation/case.hpp"
+#include "validation/scene_run.hpp"  // case_scene
 
 namespace valsalva::validation {
 
@@ -114,76 +111,36 @@ struct LevelResult {
 // max |du/dt| < tolerance U^2/L or t = t_max.
 LevelResult run_level(const Context& ctx, int n, double re, double tolerance, double t_max,
                       const Profile& ghia_u, const Profile& ghia_v, const PlaneField* start) {
-  const double lid = 1.0, rho = 1.0, nu = lid * 1.0 / re;
-  io::BoxSpec spec;
-  spec.cells = {n, n, 3};
-  spec.length = Eigen::Vector3d(1, 1, 3.0 / n);
-  spec.periodic = {false, false, true};
-  const auto mesh = io::generate_box(spec);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, ctx.comm);
-
-  std::vector<flow::BoundarySpec> walls;
-  for (const char* patch : {"xmin", "xmax", "ymin", "ymax"}) {
-    flow::BoundarySpec w;
-    w.patch = patch;
-    w.type = flow::BoundaryType::wall;
-    if (w.patch == "ymax") w.wall_velocity = Eigen::Vector3d(lid, 0, 0);
-    walls.push_back(w);
-  }
-  flow::ProjectionOptions options;
-  options.density = rho;
-  options.viscosity = nu;
-  options.poisson.tolerance = 1e-8;
-  options.boundary = std::make_shared<flow::BoundaryConditions>(local, walls, nu);
-  // flow::poisson_weights = the two-point weights on hexahedra. (A 15 % weaker vortex seen while
-  // this case was written came from an intermediate version of the pressure damping without
-  // its boundary-face term, fixed in the same commit series.)
-  flow::ProjectionRK4 solver(local, options, flow::poisson_weights(mesh, metrics, local));
-
-  flow::FlowState state;
-  state.velocity.assign(local.num_local(), Eigen::Vector3d::Zero());
-  state.pressure.assign(local.num_local(), 0.0);
-  if (start)
-    for (int i = 0; i < local.num_local(); ++i) {
-      const auto uv = start->at(local.position[i].x(), local.position[i].y());
-      state.velocity[i] = Eigen::Vector3d(uv.x(), uv.y(), 0);
-    }
-  options.boundary->impose(state.velocity, 0.0);
-
-  const auto weights = flow::laplacian_weights(local);
-  std::vector<double> scratch;
+  const double lid = 1.0;
+  const auto tag = fmt::format("Re{:g}_N{}", re, n);
   LevelResult r;
   r.cells = n;
   const auto start_clock = std::chrono::steady_clock::now();
-  double dt = 0;
-  flow::VectorField previous;
-  const auto tag = fmt::format("Re{:g}_N{}", re, n);
-  std::ofstream history;
-  if (local.comm.root()) {
-    history.open(ctx.out_dir / fmt::format("history_{}.csv", tag));
-    history << "step,time,dt,max_change_rate\n";
-  }
-  while (true) {
-    if (r.steps % 20 == 0) {  // sigma = 0.8 of the RK4 stability limit, refreshed as u grows
-      const auto rates = flow::stability_rates(local, weights, nu, state.velocity, scratch);
-      dt = 0.8 / rates.stability;
-    }
-    previous = state.velocity;
-    solver.step(state, dt);
-    ++r.steps;
-    double change = 0;
-    for (int i = 0; i < local.num_owned; ++i)
-      change = std::max(change, (state.velocity[i] - previous[i]).cwiseAbs().maxCoeff());
-    r.change = local.comm.max(change) / dt;  // m/s^2: max |du/dt|
-    if (!std::isfinite(r.change))
-      throw std::runtime_error(
-          fmt::format("cavity Re {:g} N = {}: non-finite velocity at step {}", re, n, r.steps));
-    if (history.is_open() && r.steps % 50 == 0)
-      history << fmt::format("{},{:.6g},{:.6g},{:.6e}\n", r.steps, state.time, dt, r.change)
-              << std::flush;  // a long level can be followed while it runs
-    if (r.change < tolerance * lid * lid || state.time >= t_max) break;
-  }
+  // The scene's run (validation/cavity/cavity.toml), kept until the profiles are read from its
+  // final state; its log.csv is in runs/<tag>/.
+  const auto scene =
+      io::load_scene(case_scene("cavity", "cavity.toml"),
+                     {fmt::format("mesh.box.cells=[{}, {}, 3]", n, n),
+                      fmt::format("mesh.box.length=[1.0, 1.0, {:.17g}]", 3.0 / n),
+                      fmt::format("flow.viscosity={:.17g}", lid * 1.0 / re),
+                      fmt::format("time.steady_tolerance={:.17g}", tolerance * lid * lid),
+                      fmt::format("time.end={:.17g}", t_max)});
+  run::RunRequest request;
+  request.out = ctx.out_dir / "runs" / tag;
+  request.overwrite = true;
+  request.quiet = true;
+  request.print = false;
+  run::Simulation sim(scene, request, ctx.comm);
+  if (start)
+    sim.set_initial_velocity([&](const Eigen::Vector3d& x) {
+      const auto uv = start->at(x.x(), x.y());
+      return Eigen::Vector3d(uv.x(), uv.y(), 0);
+    });
+  const auto result = sim.run();
+  const auto& local = sim.local();
+  const auto& state = sim.state();
+  r.steps = static_cast<int>(result.summary.steps);
+  r.change = result.summary.change_rate;
   r.time = state.time;
   r.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_clock).count();
 

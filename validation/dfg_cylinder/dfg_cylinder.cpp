@@ -187,8 +187,11 @@
 #include "flow/run_diagnostics.hpp"
 #include "io/cylinder_channel_generator.hpp"
 #include "io/probes.hpp"
+#include "io/scene.hpp"
+#include "run/simulation.hpp"
 #include "validation/case.hpp"
 #include "validation/dfg_cylinder/cylinder_channel_flow.hpp"
+#include "validation/scene_run.hpp"  // case_scene
 
 namespace valsalva::validation {
 
@@ -371,85 +374,93 @@ EndDiagnostics end_diagnostics(const flow::Mesh& mesh, const flow::DualMetrics& 
 
 LevelRun run_level(const Context& ctx, const Level& level, const Benchmark& b) {
   const auto t0 = MPI_Wtime();
-  io::CylinderChannelSpec spec;
-  spec.size_near = level.size_near;
-  spec.size_far = level.size_far;
-  spec.thickness = spec.layers * (level.dz > 0 ? level.dz : level.size_far);
-  spec.centre_y = ctx.option_real("centre_y", spec.centre_y);  // 0.205: symmetric, c_L = 0 exactly
-  spec.split = ctx.option("cells") == "tetra";  // default prisms (measured in the header)
-  auto mesh = io::generate_cylinder_channel_mesh(spec);
-  mesh.periodic.push_back({"front", "back", Eigen::Vector3d(0, 0, spec.thickness)});
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, ctx.comm);
-
-  flow::Waveform inflow;
-  inflow.mean = b.u_mean * kHeight * spec.thickness;
-  auto channel = make_cylinder_channel_flow(mesh, metrics, local, kRho, kNu, inflow, true);
-  auto& solver = *channel.solver;
-
+  const double thickness = 3 * (level.dz > 0 ? level.dz : level.size_far);  // 3 layers
+  const double centre_y = ctx.option_real("centre_y", 0.2);  // 0.2: c_L = 0 by symmetry at Re 20
+  const double centre_x = 0.2;
+  // The level as overrides of validation/dfg_cylinder/dfg_cylinder.toml, run by run::Simulation
+  // (`valsalva run`'s path): dt = sigma of the RK4 stability limit, recomputed every step; the
+  // last step lands on time.end.
+  const auto scene = io::load_scene(
+      case_scene("dfg_cylinder", "dfg_cylinder.toml"),
+      {fmt::format("mesh.cylinder_channel.size_near={:.17g}", level.size_near),
+       fmt::format("mesh.cylinder_channel.size_far={:.17g}", level.size_far),
+       fmt::format("mesh.cylinder_channel.thickness={:.17g}", thickness),
+       fmt::format("mesh.cylinder_channel.centre_y={:.17g}", centre_y),
+       fmt::format("mesh.cylinder_channel.cells={}",
+                   ctx.option("cells") == "tetra" ? "tetra" : "prism"),
+       fmt::format("mesh.periodic.z.translation=[0.0, 0.0, {:.17g}]", thickness),
+       fmt::format("poisson.weights={}",
+                   ctx.option("cells") == "tetra" ? "standard" : "prism_slab"),
+       fmt::format("boundary.inlet.flow_rate={:.17g}", b.u_mean * kHeight * thickness),
+       fmt::format("time.stability_fraction={:.17g}", ctx.option_real("sigma", kSigma)),
+       fmt::format("time.end={:.17g}", b.t_end)});
+  run::RunRequest request;
+  request.out = ctx.out_dir / "runs" / fmt::format("{}_h{:g}", b.name, level.size_near);
+  request.overwrite = true;
+  request.quiet = true;
+  request.print = false;
+  run::Simulation sim(scene, request, ctx.comm);
+  const auto& mesh = sim.mesh();
+  const auto& local = sim.local();
   // Start: the inflow profile everywhere, plus (2D-2) a cross-flow bump behind the cylinder
   // that starts the shedding at once instead of waiting for round-off to grow.
-  flow::FlowState state;
-  state.velocity.resize(local.num_local());
-  for (int i = 0; i < local.num_local(); ++i) {
-    const Eigen::Vector3d& x = local.position[i];
+  sim.set_initial_velocity([&](const Eigen::Vector3d& x) {
     const double s = x.y() / kHeight;
-    state.velocity[i] = Eigen::Vector3d(6 * b.u_mean * s * (1 - s), 0, 0);
+    Eigen::Vector3d u(6 * b.u_mean * s * (1 - s), 0, 0);
     if (b.name == "2d2")
-      state.velocity[i].y() = 0.5 * b.u_mean *
-                              std::exp(-(std::pow(x.x() - 0.35, 2) + std::pow(x.y() - 0.2, 2)) /
-                                       (kDiameter * kDiameter));
-  }
-  state.pressure.assign(local.num_local(), 0.0);
-  impose_initial_boundary_values(*channel.bc, state);
+      u.y() = 0.5 * b.u_mean *
+              std::exp(-(std::pow(x.x() - 0.35, 2) + std::pow(x.y() - 0.2, 2)) /
+                       (kDiameter * kDiameter));
+    return u;
+  });
 
-  const double zc = spec.thickness / 2;
-  io::Probes probes(mesh, metrics, local,
-                    {{"front", Eigen::Vector3d(0.15, spec.centre_y, zc)},
-                     {"back", Eigen::Vector3d(0.25, spec.centre_y, zc)}});
-  const StagnationTraction stagnation(mesh, spec.centre_x, spec.centre_y, 0.5 * spec.diameter);
+  const double zc = thickness / 2;
+  io::Probes probes(mesh, sim.metrics(), local,
+                    {{"front", Eigen::Vector3d(0.15, centre_y, zc)},
+                     {"back", Eigen::Vector3d(0.25, centre_y, zc)}});
+  const StagnationTraction stagnation(mesh, centre_x, centre_y, 0.5 * kDiameter);
   flow::TensorField grad;
   auto sample = [&] {
-    const auto loads = flow::wall_loads(
-        local, "cylinder", cylinder_force_input(local, solver, state, kRho, kNu, grad));
+    const auto& state = sim.state();
+    const auto loads =
+        flow::wall_loads(local, "cylinder",
+                         cylinder_force_input(local, sim.loop().solver(), state, kRho, kNu, grad));
     Eigen::Vector3d f = Eigen::Vector3d::Zero();
     for (const auto& l : loads) f += l.force;
-    for (int c = 0; c < 3; ++c) f[c] = local.comm.sum(f[c]) / spec.thickness;
+    for (int c = 0; c < 3; ++c) f[c] = local.comm.sum(f[c]) / thickness;
     const double q = 0.5 * kRho * b.u_mean * b.u_mean * kDiameter;
     const auto [front, back] = stagnation.pressures(local, loads);
     const auto p = probes.sample(state);
     return Sample{state.time, f.x() / q, f.y() / q, front - back, p[3] - p[7]};
   };
 
-  const auto weights = flow::laplacian_weights(local);
-  std::vector<double> scratch;
-  const double sigma = ctx.option_real("sigma", kSigma);
   LevelRun r;
   r.history.push_back(sample());
-  double next_sample = b.sample_dt, next_check = b.t_min;
+  double next_sample = b.sample_dt, next_check = b.t_min, t_previous = 0;
   Sample checked = r.history.back();
-  // Full steps only (a shortened last step would kick the dt-dependent pressure damping).
-  while (state.time < b.t_end) {
-    if (r.steps % 10 == 0)
-      r.dt = sigma / flow::stability_rates(local, weights, kNu, state.velocity, scratch).stability;
-    solver.step(state, r.dt);
+  sim.observe([&](const run::Simulation& s, std::int64_t) {
+    const double t = s.state().time;
+    r.dt = t - t_previous, t_previous = t;
     ++r.steps;
-    if (state.time >= next_sample - 1e-12) {
+    if (t >= next_sample - 1e-12) {
       r.history.push_back(sample());
       next_sample += b.sample_dt;
     }
-    if (b.name == "2d1" && state.time >= next_check) {
+    if (b.name == "2d1" && t >= next_check) {
       const Sample now = r.history.back();
       if (std::abs(now.cd - checked.cd) < kSteadyChange &&
           std::abs(now.cl - checked.cl) < kSteadyChange)
-        break;
+        sim.request_stop();  // the same on every rank: c_D and c_L are global sums
       checked = now;
       next_check += 1.0;
     }
-  }
+  });
+  sim.run();
+  const auto& state = sim.state();
   if (b.name == "2d1")
-    r.end = end_diagnostics(mesh, metrics, local, solver, state, spec.centre_y, zc, level.size_near,
-                            0.5 * kRho * b.u_mean * b.u_mean * kDiameter * spec.thickness);
+    r.end =
+        end_diagnostics(mesh, sim.metrics(), local, sim.loop().solver(), state, centre_y, zc,
+                        level.size_near, 0.5 * kRho * b.u_mean * b.u_mean * kDiameter * thickness);
   for (int i = 0; i < local.num_owned; ++i)
     r.uz_max = std::max(r.uz_max, std::abs(state.velocity[i].z()) / b.u_mean);
   r.uz_max = local.comm.max(r.uz_max);
