@@ -34,11 +34,12 @@ int run_scene(const std::filesystem::path& scene_file, const std::vector<std::st
         result.last_checkpoint.string(), scene_file.string(), result.run_path.string());
     return 0;
   }
+  const auto& at = summary.max_divergence_position;
   fmt::print(
-      "finished: {} steps to t = {:.6g} s, max |div v| {:.3e} 1/s (|div v| h / max|v| {:.3e}), "
-      "max Poisson iterations {}\n",
-      summary.steps, summary.time, summary.max_divergence, summary.max_divergence_number,
-      summary.max_poisson_iterations);
+      "finished: {} steps to t = {:.6g} s, max |div v| {:.3e} 1/s (|div v| h / max|v| {:.3e} at "
+      "({:.4g}, {:.4g}, {:.4g}) m, t = {:.6g} s), max Poisson iterations {}\n",
+      summary.steps, summary.time, summary.max_divergence, summary.max_divergence_number, at.x(),
+      at.y(), at.z(), summary.max_divergence_time, summary.max_poisson_iterations);
   if (summary.steady)
     fmt::print("steady state: max |u^(n+1) - u^n| / dt {:.3e} m/s2 below time.steady_tolerance\n",
                summary.change_rate);

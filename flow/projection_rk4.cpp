@@ -285,15 +285,29 @@ StepReport ProjectionRK4::step(FlowState& state, double dt) {
   state.time += dt;
   flux_velocity_ = state.velocity;
   projection_divergence(state.velocity, div_);
-  double worst = 0, worst_h = 0, speed = 0;
+  double worst = 0, speed = 0;
+  struct {
+    double value;
+    int rank;
+  } worst_h{0.0, mesh_.comm.rank()};
+  int worst_node = -1;
   for (int i = 0; i < mesh_.num_owned; ++i) {
     worst = std::max(worst, std::abs(div_[i]));
-    worst_h = std::max(worst_h, std::abs(div_[i]) * std::cbrt(mesh_.volume[i]));
+    if (const double w = std::abs(div_[i]) * std::cbrt(mesh_.volume[i]); w > worst_h.value)
+      worst_h.value = w, worst_node = i;
     speed = std::max(speed, state.velocity[i].norm());
   }
   report.max_divergence = mesh_.comm.max(worst);
   const double max_speed = mesh_.comm.max(speed);
-  report.divergence_number = max_speed > 0 ? mesh_.comm.max(worst_h) / max_speed : 0.0;
+  // Where the divergence number peaks: the rank holding the maximum (the lowest on a tie) sends
+  // its node's position, so that a run can say where its projection is worst.
+  VALSALVA_MPI(
+      MPI_Allreduce(MPI_IN_PLACE, &worst_h, 1, MPI_DOUBLE_INT, MPI_MAXLOC, mesh_.comm.get()));
+  if (worst_h.rank == mesh_.comm.rank() && worst_node >= 0)
+    report.divergence_position = mesh_.position[worst_node];
+  VALSALVA_MPI(
+      MPI_Bcast(report.divergence_position.data(), 3, MPI_DOUBLE, worst_h.rank, mesh_.comm.get()));
+  report.divergence_number = max_speed > 0 ? worst_h.value / max_speed : 0.0;
   return report;
 }
 

@@ -107,6 +107,7 @@ struct StepReport {
   // divergence error as a fraction of the resolved velocity gradient, comparable between meshes
   // with graded cells (0 when the flow is at rest).
   double divergence_number = 0;
+  Eigen::Vector3d divergence_position = Eigen::Vector3d::Zero();  // m: the node of that maximum
 };
 
 // Body-force density f [N/m^3] at owned and ghost nodes (overwritten), evaluated once per RK

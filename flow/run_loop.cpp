@@ -316,8 +316,11 @@ RunSummary RunLoop::run() {
         !bad.empty())
       fail(bad);
     summary.max_divergence = std::max(summary.max_divergence, report.max_divergence);
-    summary.max_divergence_number =
-        std::max(summary.max_divergence_number, report.divergence_number);
+    if (report.divergence_number > summary.max_divergence_number) {
+      summary.max_divergence_number = report.divergence_number;
+      summary.max_divergence_position = report.divergence_position;
+      summary.max_divergence_time = state_.time;
+    }
     summary.max_poisson_iterations =
         std::max(summary.max_poisson_iterations, report.poisson.iterations);
     // Boundary fluxes (outward, m^3/s) and their sum, the global mass imbalance.

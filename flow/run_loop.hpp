@@ -137,6 +137,8 @@ struct RunSummary {
   double wall_seconds = 0;
   double max_divergence = 0;         // over all steps, 1/s
   double max_divergence_number = 0;  // StepReport::divergence_number, max over all steps
+  Eigen::Vector3d max_divergence_position = Eigen::Vector3d::Zero();  // m: where it was
+  double max_divergence_time = 0;                                     // s: when
   int max_poisson_iterations = 0;
   double max_mass_imbalance = 0;  // max over steps of |sum of all boundary fluxes|, m^3/s
   std::optional<TaylorGreenError> taylor_green;

@@ -96,6 +96,16 @@ TEST_CASE("Taylor-Green run: exact-solution error, output times, rank independen
   const double h = 2 * std::numbers::pi / 16;
   CHECK(summary.max_divergence_number >= summary.max_divergence * h * (1 - 1e-12));
   CHECK(summary.max_divergence_number <= summary.max_divergence * h / 0.99);
+  // Where and when: a node of the box, at one of the step times (0.1 .. 0.5).
+  const auto& at = summary.max_divergence_position;
+  for (int c = 0; c < 2; ++c) CHECK((at[c] >= 0 && at[c] <= 2 * std::numbers::pi));
+  CHECK((at.z() >= 0 && at.z() <= 3 * h));
+  CHECK(summary.max_divergence_time > 0);
+  CHECK(summary.max_divergence_time <= 0.5 + 1e-12);
+  double nearest = 1e300;
+  for (int i = 0; i < s.local.num_owned; ++i)
+    nearest = std::min(nearest, (s.local.position[i] - at).norm());
+  CHECK(s.local.comm.min(nearest) < 1e-12);
   // Fields at t = 0, 0.2, 0.4 and the end, with the three fields.
   REQUIRE(rec.writes.size() == 4);
   CHECK(rec.writes[1].second == doctest::Approx(0.2).epsilon(1e-14));

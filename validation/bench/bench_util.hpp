@@ -1,5 +1,5 @@
-// Small helpers shared by the benchmark executables: "--key value" options, process CPU time,
-// and the machine line every benchmark prints with its figures.
+// Small helpers shared by the benchmark executables: process CPU time and the machine line
+// every benchmark prints with its figures (their command lines: bench_cli.hpp).
 #pragma once
 
 #include <sched.h>
@@ -7,32 +7,9 @@
 
 #include <ctime>
 #include <fstream>
-#include <map>
-#include <stdexcept>
 #include <string>
-#include <vector>
 
 namespace valsalva::bench {
-
-// "--key value" pairs; throws naming an unknown key (and listing the accepted ones) or a key
-// without a value.
-inline std::map<std::string, std::string> parse_options(int argc, char** argv,
-                                                        const std::vector<std::string>& keys) {
-  std::map<std::string, std::string> options;
-  for (int i = 1; i < argc; ++i) {
-    const std::string key = argv[i];
-    if (i + 1 >= argc) throw std::invalid_argument("missing value after " + key);
-    bool known = false;
-    for (const auto& k : keys) known = known || "--" + k == key;
-    if (!known) {
-      std::string accepted;
-      for (const auto& k : keys) accepted += (accepted.empty() ? "--" : " --") + k;
-      throw std::invalid_argument("unknown option " + key + " (accepted: " + accepted + ")");
-    }
-    options[key.substr(2)] = argv[++i];
-  }
-  return options;
-}
 
 // CPU seconds of this process (all its threads): robust on a machine shared with others.
 inline double cpu_seconds() {

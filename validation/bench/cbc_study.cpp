@@ -4,40 +4,38 @@
 // sigma run misses the 171 station (the measured sensitivities are in cbc_decay.cpp's header).
 //   bench_cbc_study [--n 64] [--model sigma] [--scheme central2] [--spinup 0.25]
 //                   [--stability 0.7] [--update step] [--seed 1971] [--box 11] [--spectra 0]
+//                   [--start 42]   (--help lists them)
 #include <fmt/format.h>
 #include <mpi.h>
 
-#include <cstdlib>
 #include <string>
 #include <vector>
 
-#include "validation/bench/bench_util.hpp"
+#include "validation/bench/cbc_options.hpp"
 #include "validation/cbc_decay/cbc_run.hpp"
 
 int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
-  int rank = 0, status = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  try {
-    const auto o = valsalva::bench::parse_options(argc, argv,
-                                                  {"n", "model", "scheme", "spinup", "stability",
-                                                   "update", "seed", "box", "spectra", "start"});
-    const auto get = [&](const char* key, const char* def) {
-      return o.count(key) ? o.at(key) : std::string(def);
-    };
-    valsalva::validation::CbcSpec spec;
-    spec.n = std::stoi(get("n", "64"));
-    spec.model = get("model", "sigma");
-    spec.scheme = get("scheme", "central2");
-    spec.spinup_turnovers = std::stod(get("spinup", "0.25"));  // L11 / u' of the start
-    spec.stability = std::stod(get("stability", "0.7"));
-    spec.update = get("update", "step");
-    spec.seed = std::stoull(get("seed", "1971"));
-    spec.box_in_m = std::stod(get("box", "11"));
-    spec.start_station = std::stoi(get("start", "42"));
+  namespace bench = valsalva::bench;
+  valsalva::validation::CbcSpec spec;
+  spec.n = 64;
+  bool spectra = false;
+  bench::App app{"bench_cbc_study",
+                 "One Comte-Bellot & Corrsin decaying-turbulence run with every set-up choice "
+                 "open: resolved energy against the filtered measurement per station"};
+  bench::add_cbc_options(app, spec);
+  app.add_option("--spinup", spec.spinup_turnovers,
+                 "Rescaled spin-up before the start, in large-eddy turnovers L11 / u'")
+      ->check(bench::non_negative);
+  app.add_option("--stability", spec.stability, "dt = stability / (RK4 Gershgorin rate)")
+      ->check(bench::positive);
+  app.add_option("--seed", spec.seed, "Seed of the random initial field");
+  app.add_option("--box", spec.box_in_m, "Box side L / M")->check(bench::positive);
+  app.add_option("--spectra", spectra, "Also print E(k) per shell at each station");
+  app.add_option("--start", spec.start_station, "tU0/M of the initial spectrum")
+      ->check(CLI::IsMember({42, 98}));
+  return bench::mpi_main(app, argc, argv, [&](int rank, int) {
     std::erase_if(spec.stations, [&](int s) { return s <= spec.start_station; });
     spec.record_skewness = true;
-    const bool spectra = get("spectra", "0") != "0";
     spec.table = std::string(VALSALVA_SOURCE_DIR) +
                  "/validation/refdata/cbc_decaying_turbulence/PHiLiP_cbc_experiment_table3.txt";
     const auto r = valsalva::validation::run_cbc(spec, MPI_COMM_WORLD);
@@ -65,10 +63,5 @@ int main(int argc, char** argv) {
                        s.k[i] / 100, s.E[i] * 1e6, s.E_exp[i] * 1e6, s.E[i] / s.E_exp[i]);
       }
     }
-  } catch (const std::exception& e) {
-    if (rank == 0) fmt::print(stderr, "bench_cbc_study: {}\n", e.what());
-    status = 2;
-  }
-  MPI_Finalize();
-  return status;
+  });
 }

@@ -21,8 +21,9 @@
 #include <mpi.h>
 
 #include <random>
-#include <sstream>
+#include <vector>
 
+#include "validation/bench/bench_cli.hpp"
 #include "validation/bench/bench_util.hpp"
 #include "validation/ib_leakage/leakage_channel.hpp"
 
@@ -32,12 +33,13 @@ using valsalva::bench::cpu_seconds;
 namespace v = valsalva::validation;
 using Points = std::vector<Eigen::Vector3d>;
 
-std::vector<double> numbers(const std::string& list) {
-  std::vector<double> out;
-  std::stringstream in(list);
-  for (std::string item; std::getline(in, item, ',');) out.push_back(std::stod(item));
-  return out;
-}
+// The command line (defaults as in the header).
+struct Args {
+  double h = 2.5e-4, cloud_h = 5e-4;
+  int depth_cells = 48, steps = 10, repeat = 5;
+  std::vector<int> markers{1000, 4000, 16000};
+  std::vector<double> widths{3, 4, 6};
+};
 
 struct TransferCost {
   double locate = 0, spread = 0, interpolate = 0;  // CPU s per call
@@ -65,9 +67,9 @@ TransferCost time_transfer(valsalva::flow::LocalMesh& local,
   return c;
 }
 
-void marker_clouds(const std::map<std::string, std::string>& opt, int repeat, bool root) {
+void marker_clouds(const Args& args, bool root) {
   v::LeakageSetup s;
-  s.h = std::stod(opt.contains("cloud-h") ? opt.at("cloud-h") : "5e-4");
+  s.h = args.cloud_h;
   v::LeakageChannel c(s, MPI_COMM_WORLD);
   if (root)
     fmt::print(
@@ -76,15 +78,15 @@ void marker_clouds(const std::map<std::string, std::string>& opt, int repeat, bo
         s.h, c.local.global_nodes, "markers", "width", "locate", "spread", "interp", "stage",
         "ns/sup.node", "support");
   std::mt19937_64 rng(7);
-  for (double n : numbers(opt.contains("markers") ? opt.at("markers") : "1000,4000,16000")) {
+  for (const double n : args.markers) {
     Points markers(static_cast<std::size_t>(n));
     std::uniform_real_distribution<double> x(s.upstream - 4e-3, s.upstream + 4e-3), y(0, s.height),
         z(0, s.depth());
     for (auto& p : markers) p = {x(rng), y(rng), z(rng)};
-    for (double w : numbers(opt.contains("widths") ? opt.at("widths") : "3,4,6")) {
+    for (const double w : args.widths) {
       valsalva::ibm::TransferOptions o;
       o.kernel = {valsalva::ibm::KernelType::peskin4, w};
-      const auto t = time_transfer(c.local, o, markers, repeat);
+      const auto t = time_transfer(c.local, o, markers, args.repeat);
       const double us = 1e6 / n, stage = (t.locate + t.spread + t.interpolate) * us;
       if (root)
         fmt::print("  {:>7.0f} {:>5g} {:>8.3f} {:>8.3f} {:>8.3f} {:>8.3f} {:>12.4f} {:>9.1f}\n", n,
@@ -94,10 +96,11 @@ void marker_clouds(const std::map<std::string, std::string>& opt, int repeat, bo
   }
 }
 
-void coupled_step(const std::map<std::string, std::string>& opt, int steps, int repeat, bool root) {
+void coupled_step(const Args& args, bool root) {
+  const int steps = args.steps, repeat = args.repeat;
   v::LeakageSetup s;
-  s.h = std::stod(opt.contains("h") ? opt.at("h") : "2.5e-4");
-  s.depth_cells = std::stoi(opt.contains("depth-cells") ? opt.at("depth-cells") : "48");
+  s.h = args.h;
+  s.depth_cells = args.depth_cells;
   v::LeakageChannel c(s, MPI_COMM_WORLD);
   double t = cpu_seconds();
   const double dt = 0.5 * c.ib->stable_time_step();
@@ -162,23 +165,29 @@ void coupled_step(const std::map<std::string, std::string>& opt, int steps, int 
 }  // namespace
 
 int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
-  int status = 0, rank = 0, size = 1;
-  try {
-    const auto opt = valsalva::bench::parse_options(
-        argc, argv, {"h", "depth-cells", "steps", "repeat", "markers", "widths", "cloud-h"});
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &size);
-    const int steps = std::stoi(opt.contains("steps") ? opt.at("steps") : "10");
-    const int repeat = std::stoi(opt.contains("repeat") ? opt.at("repeat") : "5");
-    if (rank == 0)
-      fmt::print("bench_ibm_transfer_cost: {} rank(s), {}\n", size, valsalva::bench::machine());
-    marker_clouds(opt, repeat, rank == 0);
-    coupled_step(opt, steps, repeat, rank == 0);
-  } catch (const std::exception& e) {
-    if (rank == 0) fmt::print(stderr, "bench_ibm_transfer_cost: {}\n", e.what());
-    status = 1;
-  }
-  MPI_Finalize();
-  return status;
+  namespace bench = valsalva::bench;
+  Args args;
+  bench::App app{"bench_ibm_transfer_cost",
+                 "Cost of the immersed-boundary transfer per marker and call, and its share of "
+                 "a coupled time step of the leakage channel"};
+  app.add_option("--h", args.h, "Fluid mesh size of the coupled leakage channel [m]")
+      ->check(bench::positive);
+  app.add_option("--depth-cells", args.depth_cells, "Cells across the channel's periodic depth")
+      ->check(bench::positive);
+  app.add_option("--steps", args.steps, "Coupled time steps timed")->check(bench::positive);
+  app.add_option("--repeat", args.repeat, "Repetitions of each timed transfer call")
+      ->check(bench::positive);
+  app.add_option("--markers", args.markers, "Marker counts of the clouds (comma-separated)")
+      ->delimiter(',')
+      ->check(bench::positive);
+  app.add_option("--widths", args.widths, "Kernel widths in h (comma-separated)")
+      ->delimiter(',')
+      ->check(bench::positive);
+  app.add_option("--cloud-h", args.cloud_h, "Fluid mesh size of the marker-cloud channel [m]")
+      ->check(bench::positive);
+  return bench::mpi_main(app, argc, argv, [&](int rank, int size) {
+    if (rank == 0) fmt::print("bench_ibm_transfer_cost: {} rank(s), {}\n", size, bench::machine());
+    marker_clouds(args, rank == 0);
+    coupled_step(args, rank == 0);
+  });
 }

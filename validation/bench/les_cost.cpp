@@ -3,31 +3,28 @@
 // with a subgrid model and times, in the same run, the whole step (RK4 stages + Poisson) and
 // the subgrid hook alone (velocity gradient -> nu_sgs at owned and ghost nodes). Target
 // (issue 4): nu_sgs costs at most 10% of a step.
-//   bench_les_cost [n = 48] [model = sigma] [scheme = central2] [update = step|stage]
+//   bench_les_cost [--n 48] [--model sigma] [--scheme central2] [--update step|stage]
 #include <fmt/format.h>
 #include <mpi.h>
 
-#include <cstdlib>
 #include <string>
 #include <thread>
 
+#include "validation/bench/cbc_options.hpp"
 #include "validation/cbc_decay/cbc_run.hpp"
 
 int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
-  int rank = 0, size = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  namespace bench = valsalva::bench;
   valsalva::validation::CbcSpec spec;
-  spec.n = argc > 1 ? std::atoi(argv[1]) : 48;
-  spec.model = argc > 2 ? argv[2] : "sigma";
-  spec.scheme = argc > 3 ? argv[3] : "central2";
-  spec.update = argc > 4 ? argv[4] : "step";
-  spec.stations = {98};
-  spec.table = std::string(VALSALVA_SOURCE_DIR) +
-               "/validation/refdata/cbc_decaying_turbulence/PHiLiP_cbc_experiment_table3.txt";
-  int status = 0;
-  try {
+  spec.n = 48;
+  bench::App app{"bench_les_cost",
+                 "Share of a time step spent computing nu_sgs (CBC decaying turbulence to tU0/M "
+                 "= 98; target <= 10 %)"};
+  bench::add_cbc_options(app, spec);
+  return bench::mpi_main(app, argc, argv, [&](int rank, int size) {
+    spec.stations = {98};
+    spec.table = std::string(VALSALVA_SOURCE_DIR) +
+                 "/validation/refdata/cbc_decaying_turbulence/PHiLiP_cbc_experiment_table3.txt";
     const auto r = valsalva::validation::run_cbc(spec, MPI_COMM_WORLD);
     if (rank == 0) {
       const double ratio = r.sgs_seconds / r.step_seconds;
@@ -44,10 +41,5 @@ int main(int argc, char** argv) {
       const auto& s = r.stations.at(0);
       fmt::print("  E_res(98) / E_exp(98) = {:.5f} (no spin-up)\n", s.resolved / s.resolved_exp);
     }
-  } catch (const std::exception& e) {
-    if (rank == 0) fmt::print(stderr, "bench_les_cost: {}\n", e.what());
-    status = 1;
-  }
-  MPI_Finalize();
-  return status;
+  });
 }

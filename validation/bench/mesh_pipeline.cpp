@@ -1,6 +1,6 @@
 // Benchmark of the mesh pipeline on a Gmsh tetrahedral pipe of about 1 M cells (opt-in, not a
 // test): time to read the .msh file, compute the median-dual metrics and partition with METIS,
-// and peak memory per node. Run: bench_mesh_pipeline [target_size_m] [mesh_file]
+// and peak memory per node. Run: bench_mesh_pipeline [--target-size 0.00065] [--mesh FILE]
 //   mpiexec -n 2 build/bin/bench_mesh_pipeline
 #include <fmt/format.h>
 #include <gmsh.h>
@@ -14,6 +14,7 @@
 #include "flow/dual_metrics.hpp"
 #include "flow/local_mesh.hpp"
 #include "io/gmsh_reader.hpp"
+#include "validation/bench/bench_cli.hpp"
 
 namespace {
 
@@ -52,39 +53,55 @@ void write_pipe_mesh(const std::string& file, double size) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
-  int rank = 0, size = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
-  const double target = argc > 1 ? std::stod(argv[1]) : 0.00065;
-  const std::string file = argc > 2 ? argv[2] : fmt::format("bench_pipe_{:.6f}.msh", target);
-  if (rank == 0 && !std::filesystem::exists(file)) {
-    const auto t0 = std::chrono::steady_clock::now();
-    write_pipe_mesh(file, target);
-    fmt::print("gmsh meshing (not timed below): {:.1f} s -> {}\n", since(t0), file);
-  }
-  MPI_Barrier(MPI_COMM_WORLD);
-  const double rss0 = peak_rss_mb();
-  auto t0 = std::chrono::steady_clock::now();
-  const auto mesh = valsalva::io::read_gmsh(file);
-  const double t_read = since(t0);
-  t0 = std::chrono::steady_clock::now();
-  const auto metrics = valsalva::flow::compute_dual_metrics(mesh);
-  const double t_metrics = since(t0);
-  t0 = std::chrono::steady_clock::now();
-  const auto local = valsalva::flow::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
-  const double t_partition = since(t0);
-  double rss = peak_rss_mb(), rss_max = 0;
-  MPI_Reduce(&rss, &rss_max, 1, MPI_DOUBLE, MPI_MAX, 0, MPI_COMM_WORLD);
-  if (rank == 0) {
-    const double nodes = static_cast<double>(metrics.num_nodes());
-    fmt::print("ranks {} | cells {} | nodes {} | edges {}\n", size, mesh.num_cells(),
-               metrics.num_nodes(), metrics.edges.size());
-    fmt::print("read {:.2f} s | metrics {:.2f} s | partition+distribute {:.2f} s\n", t_read,
-               t_metrics, t_partition);
-    fmt::print("peak RSS per rank {:.0f} MB (before reading {:.0f} MB): {:.0f} bytes per node\n",
-               rss_max, rss0, (rss_max - rss0) * 1048576.0 / nodes);
-  }
-  MPI_Finalize();
-  return 0;
+  namespace bench = valsalva::bench;
+  double target = 0.00065;
+  std::string file;
+  bench::App app{"bench_mesh_pipeline",
+                 "Time to read a Gmsh tetrahedral pipe, compute the median-dual metrics and "
+                 "partition it, and peak memory per node"};
+  app.add_option("--target-size", target,
+                 "Gmsh mesh size of the 25 mm x 100 mm pipe [m] (0.00065: about 1 M cells)")
+      ->check(bench::positive);
+  app.add_option("--mesh", file,
+                 "Mesh file, written by Gmsh first if it does not exist (default: "
+                 "bench_pipe_<target-size>.msh)")
+      ->check(CLI::Validator(
+          [](std::string& name) -> std::string {  // read, or written into an existing folder
+            const auto folder = std::filesystem::path(name).parent_path();
+            if (std::filesystem::exists(name) || folder.empty() ||
+                std::filesystem::is_directory(folder))
+              return {};
+            return "folder " + folder.string() + " does not exist";
+          },
+          "FILE"));
+  return bench::mpi_main(app, argc, argv, [&](int rank, int size) {
+    if (file.empty()) file = fmt::format("bench_pipe_{:.6f}.msh", target);
+    if (rank == 0 && !std::filesystem::exists(file)) {
+      const auto t0 = std::chrono::steady_clock::now();
+      write_pipe_mesh(file, target);
+      fmt::print("gmsh meshing (not timed below): {:.1f} s -> {}\n", since(t0), file);
+    }
+    MPI_Barrier(MPI_COMM_WORLD);
+    const double rss0 = peak_rss_mb();
+    auto t0 = std::chrono::steady_clock::now();
+    const auto mesh = valsalva::io::read_gmsh(file);
+    const double t_read = since(t0);
+    t0 = std::chrono::steady_clock::now();
+    const auto metrics = valsalva::flow::compute_dual_metrics(mesh);
+    const double t_metrics = since(t0);
+    t0 = std::chrono::steady_clock::now();
+    const auto local = valsalva::flow::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+    const double t_partition = since(t0);
+    double rss = peak_rss_mb(), rss_max = 0;
+    MPI_Reduce(&rss, &rss_max, 1, MPI_DOUBLE, MPI_MAX, 0, MPI_COMM_WORLD);
+    if (rank == 0) {
+      const double nodes = static_cast<double>(metrics.num_nodes());
+      fmt::print("ranks {} | cells {} | nodes {} | edges {}\n", size, mesh.num_cells(),
+                 metrics.num_nodes(), metrics.edges.size());
+      fmt::print("read {:.2f} s | metrics {:.2f} s | partition+distribute {:.2f} s\n", t_read,
+                 t_metrics, t_partition);
+      fmt::print("peak RSS per rank {:.0f} MB (before reading {:.0f} MB): {:.0f} bytes per node\n",
+                 rss_max, rss0, (rss_max - rss0) * 1048576.0 / nodes);
+    }
+  });
 }

@@ -34,6 +34,7 @@
 #include "io/field_output.hpp"
 #include "io/phase_statistics.hpp"
 #include "io/probes.hpp"
+#include "validation/bench/bench_cli.hpp"
 #include "validation/bench/bench_util.hpp"
 
 using namespace valsalva;
@@ -45,18 +46,6 @@ struct Args {
   bool keep = false;
   std::filesystem::path out = "bench-results/output_cost";
 };
-
-Args parse(int argc, char** argv) {
-  Args a;
-  const auto o = bench::parse_options(argc, argv, {"n", "bins", "steps", "probes", "out", "keep"});
-  auto integer = [&](const char* key, int fallback) {
-    return o.contains(key) ? std::stoi(o.at(key)) : fallback;
-  };
-  a.n = integer("n", a.n), a.bins = integer("bins", a.bins), a.steps = integer("steps", a.steps);
-  a.probes = integer("probes", a.probes), a.keep = integer("keep", 0) != 0;
-  if (o.contains("out")) a.out = o.at("out");
-  return a;
-}
 
 struct Seconds {
   double cpu = 0, wall = 0;
@@ -106,12 +95,18 @@ std::vector<int> union_of(std::vector<int> a, const std::vector<int>& b) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
-  int rank = 0, size = 1, status = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
-  try {
-    const Args args = parse(argc, argv);
+  Args args;
+  bench::App app{"bench_output_cost",
+                 "Cost of statistics, probes, field and checkpoint output next to a flow step, "
+                 "and the statistics memory"};
+  app.add_option("--n", args.n, "Cells per side of the periodic box (100: 1 M nodes)")
+      ->check(bench::positive);
+  app.add_option("--bins", args.bins, "Phase bins of the statistics")->check(bench::positive);
+  app.add_option("--steps", args.steps, "Timed flow steps")->check(bench::positive);
+  app.add_option("--probes", args.probes, "Probe points")->check(bench::positive);
+  app.add_option("--out", args.out, "Folder of the files written");
+  app.add_option("--keep", args.keep, "Keep the files written (else removed at the end)");
+  return bench::mpi_main(app, argc, argv, [&](int rank, int size) {
     const double L = 2 * std::numbers::pi, h = L / args.n;
     io::BoxSpec spec;
     spec.cells = {args.n, args.n, args.n};
@@ -225,10 +220,5 @@ int main(int argc, char** argv) {
           args.keep ? "" : " (removed)");
       if (!args.keep) std::filesystem::remove_all(args.out);
     }
-  } catch (const std::exception& e) {
-    if (rank == 0) fmt::print(stderr, "bench_output_cost: {}\n", e.what());
-    status = 1;
-  }
-  MPI_Finalize();
-  return status;
+  });
 }

@@ -1,11 +1,11 @@
 // Benchmark (not a test): cost of one pointwise subgrid kernel call (les/sgs_kernels.hpp) on
 // Gaussian velocity gradients (entries N(0, 100^2) 1/s), without the array loop or the flow
 // solver around it. For instruction counts, run it under callgrind and subtract a 0-repeat run:
-//   valgrind --tool=callgrind bench_sgs_kernel sigma 20000 10   (minus ... sigma 20000 0)
-//   bench_sgs_kernel [model = sigma|wale|smagorinsky] [gradients = 100000] [repeats = 10]
+//   valgrind --tool=callgrind bench_sgs_kernel --model sigma --gradients 20000 --repeats 10
+//   (minus the same with --repeats 0)
+//   bench_sgs_kernel [--model sigma|wale|smagorinsky] [--gradients 100000] [--repeats 10]
 #include <fmt/format.h>
 
-#include <cstdlib>
 #include <ctime>
 #include <random>
 #include <string>
@@ -13,6 +13,7 @@
 
 #include "les/sgs_kernels.hpp"
 #include "les/sgs_model.hpp"
+#include "validation/bench/bench_cli.hpp"
 
 namespace {
 double thread_cpu() {
@@ -24,13 +25,18 @@ double thread_cpu() {
 
 int main(int argc, char** argv) {
   using namespace valsalva::les;
-  const std::string model = argc > 1 ? argv[1] : "sigma";
-  const int n = argc > 2 ? std::atoi(argv[2]) : 100000;
-  const int repeats = argc > 3 ? std::atoi(argv[3]) : 10;
-  if (model != "sigma" && model != "wale" && model != "smagorinsky") {
-    fmt::print(stderr, "bench_sgs_kernel: unknown model '{}' (sigma, wale, smagorinsky)\n", model);
-    return 1;
-  }
+  std::string model = "sigma";
+  int n = 100000, repeats = 10;
+  valsalva::bench::App app{"bench_sgs_kernel",
+                           "Cost of one pointwise subgrid kernel call on Gaussian velocity "
+                           "gradients (thread CPU time; or instructions under callgrind)"};
+  app.add_option("--model", model, "Subgrid kernel")
+      ->check(CLI::IsMember({"sigma", "wale", "smagorinsky"}));
+  app.add_option("--gradients", n, "Velocity gradients per repeat")
+      ->check(valsalva::bench::non_negative);
+  app.add_option("--repeats", repeats, "Passes over the gradients (0: set-up only)")
+      ->check(valsalva::bench::non_negative);
+  if (const auto code = valsalva::bench::parse(app, argc, argv)) return *code;
   std::mt19937_64 rng(1);
   std::normal_distribution<double> normal(0.0, 100.0);
   std::vector<Eigen::Matrix3d> grad(static_cast<std::size_t>(n));

@@ -3,24 +3,33 @@
 // and the 3x3x2 Gauss rules, and (with --static) the static solve time of the leaflet-closure case
 // on its fine 512-element mesh (one leaflet of the 1536-element valve).
 // CPU time of this thread is the metric (the machine may be shared); wall time is printed too.
-// Usage: bench_structure_forces [repetitions] [--static]
+// Usage: bench_structure_forces [--repetitions 200] [--static]
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <string>
 
 #include "structure/mesh_generators.hpp"
 #include "structure/solid_forces.hpp"
+#include "validation/bench/bench_cli.hpp"
 #include "validation/leaflet_closure/leaflet_closure.hpp"
 
 using namespace valsalva::structure;
 
 int main(int argc, char** argv) {
-  const int reps = argc > 1 ? std::atoi(argv[1]) : 200;
+  int reps = 200;
+  bool static_solve = false;
+  valsalva::bench::App app{"bench_structure_forces",
+                           "Time per explicit internal-force evaluation of the fine leaflet mesh "
+                           "(3x3x3 and 3x3x2 Gauss rules) and, with --static, the leaflet-closure "
+                           "static solve"};
+  app.add_option("--repetitions", reps, "Timed evaluations per Gauss rule")
+      ->check(valsalva::bench::positive);
+  app.add_flag("--static", static_solve, "Also time the leaflet-closure static solve (512 Q2)");
+  if (const auto code = valsalva::bench::parse(app, argc, argv)) return *code;
   ShellPatch p;  // leaflet: R 12.5 mm, 120 degrees, t 0.15 mm
   p.n_angle = 48;
   p.n_height = 32;
@@ -58,7 +67,7 @@ int main(int argc, char** argv) {
     fmt::print("  direct Gauss-point loop (reference): {:.3f} ms CPU ({:.3f} ms wall), {:.1f}x\n",
                1e3 * sd, 1e3 * walld, sd / s);
   }
-  if (argc > 2 && std::string(argv[2]) == "--static") {
+  if (static_solve) {
     timespec c0, c1;
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c0);
     const auto lc = valsalva::validation::close_leaflet(true, 300.0, false);

@@ -9,30 +9,37 @@
 
 #include <string>
 
-#include "validation/bench/bench_util.hpp"
+#include "flow/convection_scheme.hpp"
+#include "validation/bench/bench_cli.hpp"
 #include "validation/taylor_green/tgv_run.hpp"
 
 int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
-  int rank = 0, status = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  try {
-    const auto o = valsalva::bench::parse_options(
-        argc, argv,
-        {"cell", "perturbation", "n", "scheme", "order4", "cfl", "dt_max", "tol", "re"});
-    const auto get = [&](const char* key, const char* def) {
-      return o.count(key) ? o.at(key) : std::string(def);
-    };
-    valsalva::validation::TgvSpec spec;
-    spec.cell_type = get("cell", "hexa");
-    spec.perturbation = std::stod(get("perturbation", "0"));
-    spec.n = std::stoi(get("n", "32"));
-    spec.scheme = get("scheme", "central4");
-    spec.fourth_order_operators = get("order4", "1") != "0";
-    spec.cfl = std::stod(get("cfl", "0.1"));
-    spec.dt_max = std::stod(get("dt_max", "0"));
-    spec.poisson.tolerance = std::stod(get("tol", "1e-10"));
-    spec.reynolds = std::stod(get("re", "100"));
+  namespace bench = valsalva::bench;
+  valsalva::validation::TgvSpec spec;
+  spec.n = 32;
+  spec.scheme = "central4";
+  spec.fourth_order_operators = true;
+  spec.cfl = 0.1;
+  spec.poisson.tolerance = 1e-10;
+  bench::App app{"bench_taylor_green_study",
+                 "One 2D Taylor-Green run with the discretisation choices open: velocity and "
+                 "pressure errors, and the truncation error of each term on the exact fields"};
+  app.add_option("--cell", spec.cell_type, "Cell type of the box mesh")
+      ->check(CLI::IsMember({"hexa", "tetra", "prism", "pyramid", "mixed"}));
+  app.add_option("--perturbation", spec.perturbation, "Random node displacement, fraction of h")
+      ->check(CLI::Range(0.0, 0.4));
+  app.add_option("--n", spec.n, "Cells per side")->check(bench::positive);
+  app.add_option("--scheme", spec.scheme, "Convective scheme")
+      ->check(CLI::IsMember(valsalva::flow::convection_scheme_names()));
+  app.add_option("--order4", spec.fourth_order_operators,
+                 "4th-order gradient, divergence and viscous operators");
+  app.add_option("--cfl", spec.cfl, "dt = t_end / ceil(t_end / (cfl h / U))")
+      ->check(bench::positive);
+  app.add_option("--dt_max", spec.dt_max, "> 0: dt is also at most this")
+      ->check(bench::non_negative);
+  app.add_option("--tol", spec.poisson.tolerance, "Poisson tolerance")->check(bench::positive);
+  app.add_option("--re", spec.reynolds, "Reynolds number (inf: inviscid)")->check(bench::positive);
+  return bench::mpi_main(app, argc, argv, [&](int rank, int) {
     const auto t = valsalva::validation::taylor_green_term_errors(spec, MPI_COMM_WORLD);
     const auto r = valsalva::validation::run_taylor_green(spec, MPI_COMM_WORLD);
     if (rank == 0)
@@ -44,10 +51,5 @@ int main(int argc, char** argv) {
           r.steps, r.velocity_l2, r.velocity_linf, r.pressure_l2, r.max_divergence,
           r.max_poisson_iterations, r.wall_seconds, t.convection, t.viscous, t.pressure_gradient,
           t.divergence);
-  } catch (const std::exception& e) {
-    if (rank == 0) fmt::print(stderr, "bench_taylor_green_study: {}\n", e.what());
-    status = 1;
-  }
-  MPI_Finalize();
-  return status;
+  });
 }

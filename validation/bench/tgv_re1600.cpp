@@ -38,11 +38,13 @@
 #include <string>
 #include <vector>
 
+#include "flow/convection_scheme.hpp"
 #include "flow/dual_metrics.hpp"
 #include "flow/local_mesh.hpp"
 #include "flow/poisson_weights.hpp"
 #include "flow/projection_rk4.hpp"
 #include "io/box_generator.hpp"
+#include "validation/bench/bench_cli.hpp"
 #include "validation/bench/bench_util.hpp"
 #include "validation/tgv_les/tgv_les_run.hpp"
 
@@ -53,39 +55,30 @@ namespace {
 struct Args {
   int n = 32;
   std::string scheme = "central2";
-  bool fourth_order_operators = false;
+  std::string operators = "order2";  // order4: ProjectionOptions::fourth_order_operators
   double cfl = 0.5, t_end = 10;
   std::filesystem::path out = "bench-results/tgv_re1600";
 };
 
-Args parse(int argc, char** argv) {
-  Args a;
-  const auto o =
-      bench::parse_options(argc, argv, {"n", "scheme", "cfl", "t-end", "operators", "out"});
-  if (o.contains("n")) a.n = std::stoi(o.at("n"));
-  if (o.contains("scheme")) a.scheme = o.at("scheme");
-  if (o.contains("cfl")) a.cfl = std::stod(o.at("cfl"));
-  if (o.contains("t-end")) a.t_end = std::stod(o.at("t-end"));
-  if (o.contains("out")) a.out = o.at("out");
-  if (o.contains("operators")) {
-    if (o.at("operators") != "order2" && o.at("operators") != "order4")
-      throw std::invalid_argument("--operators " + o.at("operators") +
-                                  ": expected order2 or order4");
-    a.fourth_order_operators = o.at("operators") == "order4";
-  }
-  return a;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
-  int rank = 0, size = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
-  try {
-    const Args args = parse(argc, argv);
-    const std::string label = args.scheme + (args.fourth_order_operators ? "+op4" : "");
+  Args args;
+  bench::App app{"bench_tgv_re1600",
+                 "Taylor-Green vortex at Re 1600 (workshop case C3.5): cost and the error of "
+                 "-dE/dt against the 512^3 spectral reference"};
+  app.add_option("--n", args.n, "Cells per side of the periodic box")->check(bench::positive);
+  app.add_option("--scheme", args.scheme, "Convective scheme")
+      ->check(CLI::IsMember(flow::convection_scheme_names()));
+  app.add_option("--cfl", args.cfl, "Fixed dt from this CFL number")->check(bench::positive);
+  app.add_option("--t-end", args.t_end, "End time")->check(bench::positive);
+  app.add_option("--operators", args.operators,
+                 "Gradient, divergence and viscous operators (order4: \"+op4\" in the names)")
+      ->check(CLI::IsMember({"order2", "order4"}));
+  app.add_option("--out", args.out, "Folder of the CSV files");
+  return bench::mpi_main(app, argc, argv, [&](int rank, int size) {
+    const bool order4 = args.operators == "order4";
+    const std::string label = args.scheme + (order4 ? "+op4" : "");
     const double two_pi = 2 * std::numbers::pi, nu = 1.0 / 1600;
     io::BoxSpec spec;
     spec.cells = {args.n, args.n, args.n};
@@ -101,7 +94,7 @@ int main(int argc, char** argv) {
     options.density = 1;
     options.viscosity = nu;
     options.scheme = args.scheme;
-    options.fourth_order_operators = args.fourth_order_operators;
+    options.fourth_order_operators = order4;
     options.poisson.tolerance = 1e-8;
     flow::ProjectionRK4 solver(local, options, flow::poisson_weights(mesh, metrics, local));
 
@@ -177,10 +170,5 @@ int main(int argc, char** argv) {
           double(total_its) / steps, max_its, peak_kb / 1024, bytes_per_node, worst / ref_peak,
           ref_peak, peak, peak_t, csv.string());
     }
-  } catch (const std::exception& e) {
-    if (rank == 0) fmt::print(stderr, "bench_tgv_re1600: {}\n", e.what());
-    MPI_Abort(MPI_COMM_WORLD, 1);
-  }
-  MPI_Finalize();
-  return 0;
+  });
 }

@@ -25,39 +25,85 @@
 #include <stdexcept>
 #include <string>
 
-#include "validation/bench/bench_util.hpp"
+#include "validation/bench/bench_cli.hpp"
 #include "validation/womersley/womersley_run.hpp"
 #include "validation/womersley_periodic/periodic_run.hpp"
 
+namespace {
+
+namespace bench = valsalva::bench;
+
+// The command line (defaults as in the header).
+struct Args {
+  double wo = 17, npd = 10, cfl = 0.4, tol = 1e-10, length = 2, size_factor = 1;
+  double wall_size = 0, wall_distance = 0, dz = 1, bl_first = 0, bl_ratio = 1.2, bl_thickness = 0;
+  int period = 3, algorithm3d = 1;
+  bool damping = true, stiffness = false, unscaled = false, periodic = false, split = false;
+  bool mesh_stats = false, flux_driven = false, extruded = false;
+  std::string outlet = "pressure", csv;
+};
+
+void add_options(bench::App& app, Args& a) {
+  const auto& positive = bench::positive;
+  const auto& non_negative = bench::non_negative;
+  app.add_option("--wo", a.wo, "Womersley number")->check(positive);
+  app.add_option("--npd", a.npd, "Nodes per diameter (h = D / npd)")->check(positive);
+  app.add_option("--cfl", a.cfl, "CFL number of the time step")->check(positive);
+  app.add_option("--tol", a.tol, "Poisson tolerance")->check(positive);
+  app.add_option("--length", a.length, "Pipe length in diameters")->check(positive);
+  app.add_option("--damping", a.damping, "Pressure damping");
+  app.add_option("--stiffness", a.stiffness, "Stiffness (P1) viscous weights");
+  app.add_option("--outlet", a.outlet, "Outlet condition")
+      ->check(CLI::IsMember({"pressure", "convective"}));
+  app.add_option("--csv", a.csv, "Write every node's sample at the 8 phases to this file");
+  app.add_option("--period", a.period, "Sampled period, 0-based (3: the 4th)")->check(non_negative);
+  app.add_option("--unscaled", a.unscaled, "Inlet profile not rescaled to the discrete flow rate");
+  app.add_option("--periodic", a.periodic, "The streamwise-periodic pipe instead");
+  app.add_option("--split", a.split, "Periodic pipe: tetrahedra split from prisms");
+  app.add_option("--flux_driven", a.flux_driven, "Periodic pipe: flow-rate driven");
+  app.add_option("--mesh_stats", a.mesh_stats, "Node density and edge lengths of the mesh, no run");
+  app.add_option("--algorithm3d", a.algorithm3d,
+                 "Gmsh Mesh.Algorithm3D (1 Delaunay, 4 Frontal, 10 HXT)")
+      ->check(CLI::IsMember({1, 3, 4, 7, 9, 10}));
+  app.add_option("--size_factor", a.size_factor, "Factor on Gmsh's size D / npd")->check(positive);
+  app.add_option("--wall_size", a.wall_size, "Mesh size at the wall (scaled size; 0: uniform)")
+      ->check(non_negative);
+  app.add_option("--wall_distance", a.wall_distance, "Distance of the wall grading (scaled size)")
+      ->check(non_negative);
+  app.add_option("--extruded", a.extruded, "The disk extruded into split prism layers");
+  app.add_option("--dz", a.dz, "Extruded: layer height (scaled size)")->check(positive);
+  app.add_option("--bl_first", a.bl_first, "Extruded: first boundary-layer row (0: none)")
+      ->check(non_negative);
+  app.add_option("--bl_ratio", a.bl_ratio, "Extruded: boundary-layer growth ratio")
+      ->check(positive);
+  app.add_option("--bl_thickness", a.bl_thickness, "Extruded: boundary-layer thickness")
+      ->check(non_negative);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
-  int rank = 0, status = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  try {
-    const auto o = valsalva::bench::parse_options(
-        argc, argv, {"wo",          "npd",         "cfl",       "tol",           "length",
-                     "damping",     "stiffness",   "outlet",    "csv",           "period",
-                     "unscaled",    "periodic",    "split",     "mesh_stats",    "algorithm3d",
-                     "size_factor", "flux_driven", "wall_size", "wall_distance", "extruded",
-                     "dz",          "bl_first",    "bl_ratio",  "bl_thickness"});
-    const auto get = [&](const char* key, const char* def) {
-      return o.count(key) ? o.at(key) : std::string(def);
-    };
+  Args args;
+  bench::App app{"bench_womersley_study",
+                 "One inlet-driven (or periodic) Womersley pipe run with the set-up choices "
+                 "open, or the edge lengths of its mesh"};
+  add_options(app, args);
+  return bench::mpi_main(app, argc, argv, [&](int rank, int) {
     valsalva::validation::WomersleySetup s;
-    s.womersley = std::stod(get("wo", "17"));
-    s.nodes_per_diameter = std::stod(get("npd", "10"));
-    s.mesh_size_factor = std::stod(get("size_factor", "1"));
-    s.mesh.algorithm3d = std::stoi(get("algorithm3d", "1"));
-    s.mesh.wall_size = std::stod(get("wall_size", "0"));
-    s.mesh.wall_distance = std::stod(get("wall_distance", "0"));
-    s.extruded = get("extruded", "0") != "0";
-    s.layer_height = std::stod(get("dz", "1"));
+    s.womersley = args.wo;
+    s.nodes_per_diameter = args.npd;
+    s.mesh_size_factor = args.size_factor;
+    s.mesh.algorithm3d = args.algorithm3d;
+    s.mesh.wall_size = args.wall_size;
+    s.mesh.wall_distance = args.wall_distance;
+    s.extruded = args.extruded;
+    s.layer_height = args.dz;
     s.grading.wall_size = s.mesh.wall_size, s.grading.wall_distance = s.mesh.wall_distance;
-    s.grading.layer_first = std::stod(get("bl_first", "0"));
-    s.grading.layer_ratio = std::stod(get("bl_ratio", "1.2"));
-    s.grading.layer_thickness = std::stod(get("bl_thickness", "0"));
-    s.length_in_diameters = std::stod(get("length", "2"));
-    if (get("mesh_stats", "0") != "0") {
+    s.grading.layer_first = args.bl_first;
+    s.grading.layer_ratio = args.bl_ratio;
+    s.grading.layer_thickness = args.bl_thickness;
+    s.length_in_diameters = args.length;
+    if (args.mesh_stats) {
       // The run's mesh, no run: node density and edge lengths / h (h = D / npd), the nodes of
       // the sampled slab |z - L/2| <= h/2 and the nodes per diameter an equilateral section
       // triangulation with that many nodes would have (extruded: the slab is one layer).
@@ -92,17 +138,16 @@ int main(int argc, char** argv) {
             s.nodes_per_diameter / len[len.size() / 2],
             section.empty() ? 0.0 : section[section.size() / 2], slab,
             2 * R * std::sqrt(std::sqrt(3.0) / 2 * slab / area));
-      MPI_Finalize();
-      return 0;
+      return;
     }
-    if (get("periodic", "0") != "0") {
+    if (args.periodic) {
       // The streamwise-periodic pipe (validation/womersley_periodic), same resolution and cfl.
       valsalva::validation::PeriodicSetup p;
-      p.womersley = std::stod(get("wo", "17"));
-      p.nodes_per_diameter = std::stod(get("npd", "10"));
-      p.cfl = std::stod(get("cfl", "0.4"));
-      p.split = get("split", "0") != "0";
-      p.flux_driven = get("flux_driven", "0") != "0";
+      p.womersley = args.wo;
+      p.nodes_per_diameter = args.npd;
+      p.cfl = args.cfl;
+      p.split = args.split;
+      p.flux_driven = args.flux_driven;
       const auto r = valsalva::validation::run_periodic_womersley(p, MPI_COMM_WORLD);
       if (rank == 0) {
         fmt::print(
@@ -115,29 +160,25 @@ int main(int argc, char** argv) {
               "  phase {}: (Q - mean flux) / (pi R^2 u_peak): run {:+.4f}, exact nodal {:+.4f}\n",
               i, (r.flow_rate[i] - r.mean_flux[i]) / a,
               (r.flow_rate[i] - r.exact_mean_flux[i]) / a);
-        const std::string csv = get("csv", "");
-        std::ofstream f(csv.empty() ? "/dev/null" : csv);
+        std::ofstream f(args.csv.empty() ? "/dev/null" : args.csv);
         f << "time,x,y,z,r,u,u_exact,ux,uy,u_peak,radius,length,h\n";
         for (std::size_t i = 0; i + 3 < r.samples.size(); i += 4)
           f << fmt::format("{:.6f},0,0,0,{:.6e},{:.9e},{:.9e},0,0,{:.9e},{:.9e},0,{:.9e}\n",
                            r.samples[i], r.samples[i + 1], r.samples[i + 2], r.samples[i + 3],
                            r.u_peak, r.radius, r.h);
       }
-      MPI_Finalize();
-      return 0;
+      return;
     }
-    s.cfl = std::stod(get("cfl", "0.4"));
-    s.poisson_tolerance = std::stod(get("tol", "1e-10"));
-    s.pressure_damping = get("damping", "1") != "0";
-    s.stiffness_viscous = get("stiffness", "0") != "0";
-    s.sample_period = std::stoi(get("period", "3"));
-    s.unscaled_inlet = get("unscaled", "0") != "0";
-    const std::string outlet = get("outlet", "pressure");
-    if (outlet != "pressure" && outlet != "convective")
-      throw std::invalid_argument("--outlet " + outlet + ": expected pressure or convective");
+    s.cfl = args.cfl;
+    s.poisson_tolerance = args.tol;
+    s.pressure_damping = args.damping;
+    s.stiffness_viscous = args.stiffness;
+    s.sample_period = args.period;
+    s.unscaled_inlet = args.unscaled;
+    const std::string& outlet = args.outlet;
     s.outlet = outlet == "convective" ? valsalva::flow::BoundaryType::convective_outlet
                                       : valsalva::flow::BoundaryType::pressure_outlet;
-    const std::string csv = get("csv", "");
+    const std::string& csv = args.csv;
     s.sample_whole_pipe = !csv.empty();
     const auto r = valsalva::validation::run_womersley(s, MPI_COMM_WORLD);
     if (rank == 0) {
@@ -171,10 +212,5 @@ int main(int argc, char** argv) {
                 r.u_peak, r.radius, r.length, r.h);
       }
     }
-  } catch (const std::exception& e) {
-    if (rank == 0) fmt::print(stderr, "bench_womersley_study: {}\n", e.what());
-    status = 2;
-  }
-  MPI_Finalize();
-  return status;
+  });
 }
