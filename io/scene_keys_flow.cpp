@@ -137,7 +137,7 @@ void declare_flow_keys(Schema& s) {
       .doc(
           "Project every RK stage velocity, not only the end of the step (Sanderse & Koren, J. "
           "Comput. Phys. 231, 2012): three more Poisson solves per step; measured 0.61x the error "
-          "at 2.1x the CPU time at equal error (docs/validation.md, time_order)");
+          "at 2.3x the CPU time at equal error (docs/validation.md, time_order)");
   s.boolean("time.land_on_output")
       .def(true)
       .unit_of("-")

@@ -19,9 +19,9 @@
 // and its CPU time at equal error within 0.5 of it (timing noise); with project_stages, an error at
 // most rk4_jameson's and a CPU time at equal error at least rk4_jameson's (the reason the default
 // is rk4_jameson without stage projections: the check fails when that stops being true).
-// Measured 2026-12-03 (`valsalva validate time_order`, 1 rank, 983 s on the shared machine,
-// with the runs driven by flow::RunLoop directly; through run::Simulation the quick errors are
-// the same to 7 digits; velocity L2 error, dt = 0.1 ... 0.00625, reference dt 7.8e-4):
+// Measured 2026-12-03 (`valsalva validate time_order`, 1 rank, 1082 s on the shared machine;
+// an earlier run with flow::RunLoop driven directly gave the same errors to 7 digits; velocity
+// L2 error, dt = 0.1 ... 0.00625, reference dt 7.8e-4):
 //   rk4_jameson                 8.73e-4  2.33e-4  6.11e-5  1.55e-5  3.84e-6
 //   orders 1.90 1.93 1.98 2.01
 //   rk4_classic                 8.81e-4  2.35e-4  6.16e-5  1.56e-5  3.87e-6
