@@ -4,6 +4,11 @@
 //   u =  U0 sin(x/L) cos(y/L) F,   v = -U0 cos(x/L) sin(y/L) F,   w = 0,
 //   p = rho U0^2 / 4 (cos(2x/L) + cos(2y/L)) F^2,   F = exp(-2 nu t / L^2),
 // with x, y measured from the coordinate origin and Re = U0 L / nu.
+// The 3D Taylor-Green vortex (the same paper; case C3.5 of the International Workshop on
+// High-Order CFD Methods at Re = 1600) on a box periodic in x, y and z, at t = 0 only (it has
+// no closed-form solution after that; the pressure is the exact one of the initial velocity):
+//   u = U0 sin(x/L) cos(y/L) cos(z/L),  v = -U0 cos(x/L) sin(y/L) cos(z/L),  w = 0,
+//   p = rho U0^2 / 16 (cos(2x/L) + cos(2y/L)) (cos(2z/L) + 2).
 #pragma once
 
 #include <Eigen/Dense>
@@ -13,9 +18,9 @@
 namespace valsalva::flow {
 
 struct InitialCondition {
-  std::string type = "rest";  // rest | taylor_green | cyclic_sines
-  double velocity = 1.0;      // U0, m/s (taylor_green, cyclic_sines)
-  double length = 1.0;        // L, m: the period is 2 pi L (taylor_green, cyclic_sines)
+  std::string type = "rest";  // rest | taylor_green | taylor_green_3d | cyclic_sines
+  double velocity = 1.0;      // U0, m/s (taylor_green, taylor_green_3d, cyclic_sines)
+  double length = 1.0;        // L, m: the period is 2 pi L (the vortices, cyclic_sines)
 };
 
 // A divergence-free 3D field (each component varies only across itself), pressure 0: a start
@@ -37,6 +42,20 @@ struct TaylorGreen {
     const double f = decay(t);
     return rho * u0 * u0 / 4 * (std::cos(2 * x.x() / length) + std::cos(2 * x.y() / length)) * f *
            f;
+  }
+};
+
+struct TaylorGreen3d {
+  double u0, length, rho;
+  Eigen::Vector3d velocity(const Eigen::Vector3d& x) const {
+    const Eigen::Vector3d a = x / length;
+    const double cz = std::cos(a.z());
+    return {u0 * std::sin(a.x()) * std::cos(a.y()) * cz,
+            -u0 * std::cos(a.x()) * std::sin(a.y()) * cz, 0.0};
+  }
+  double pressure(const Eigen::Vector3d& x) const {
+    const Eigen::Vector3d a = 2 * x / length;
+    return rho * u0 * u0 / 16 * (std::cos(a.x()) + std::cos(a.y())) * (std::cos(a.z()) + 2);
   }
 };
 

@@ -22,7 +22,8 @@ ProjectionRK4::ProjectionRK4(const LocalMesh& mesh, ProjectionOptions options,
       convection_(make_convection_scheme(options.scheme, mesh)),
       old_convection_(options.scheme == "central4" && !options.fourth_order_operators),
       poisson_(mesh, poisson_weights_, options.poisson),
-      dp_(mesh.num_local(), 0.0) {
+      dp_(mesh.num_local(), 0.0),
+      rk_(tableau(options.time_scheme)) {
   if (!(options.density > 0) || !(options.viscosity >= 0))
     throw std::invalid_argument("flow::ProjectionRK4: density must be > 0 (got " +
                                 std::to_string(options.density) + ") and viscosity >= 0 (got " +
@@ -139,8 +140,8 @@ PoissonResult ProjectionRK4::correct(VectorField& u, EdgeField& flux, double dt_
   for (auto& d : div_) d /= dt_over_rho;
   const PoissonResult result = poisson_.solve(div_, dp);
   add_compact_gradient(mesh_, poisson_weights_, -dt_over_rho, dp, flux);
-  pressure_gradient(dp, grad_p_);
-  for (int i = 0; i < mesh_.num_local(); ++i) u[i] -= dt_over_rho * grad_p_[i];
+  pressure_gradient(dp, grad_dp_);  // grad_p_ (grad p^n) is still needed by later stages
+  for (int i = 0; i < mesh_.num_local(); ++i) u[i] -= dt_over_rho * grad_dp_[i];
   return result;
 }
 
@@ -175,6 +176,47 @@ void ProjectionRK4::set_subgrid_viscosity(const ScalarField& nu_sgs) {
   nu_sgs_ = nu_sgs;
 }
 
+void ProjectionRK4::predicted_flux(const VectorField& w, double dt, const ScalarField& p,
+                                   EdgeField& flux) {
+  projection_flux(w, flux);
+  if ((options_.boundary || options_.periodic_pressure_damping) && options_.pressure_damping) {
+    // Pressure damping (Rhie & Chow, AIAA J. 21, 1983, in its node-centred form): the face flux
+    // of v* takes the face-velocity correction dt/rho (avg(grad p^n) - grad p^n|_face), i.e.
+    // the divergence gains div(grad p^n) - lap(p^n) with the wide divergence of the wide
+    // gradient and the compact, linearly exact Laplacian of flow/operators.hpp (their boundary
+    // faces cancel). The odd-even pressure mode that inlets and wall corners excite is invisible
+    // to the wide operators and otherwise stays in the steady state; the term vanishes for
+    // linear pressure and is O(h^2) for smooth ones. The compact Laplacian here must be the
+    // Poisson matrix's own operator (P1 weights on tetrahedra): with the two-point Laplacian
+    // instead, the damping pumps energy into the flow on tetrahedral meshes and a DFG cylinder
+    // run blew up in 15 steps at any dt. grad_p_ holds grad p^n (step()).
+    const double rho = options_.density;
+    add_central_flux(mesh_, dt / rho, grad_p_, flux);
+    add_compact_gradient(mesh_, poisson_weights_, -dt / rho, p, flux);
+  }
+}
+
+int ProjectionRK4::project_stage(VectorField& w, double c, double dt, double t,
+                                 const ScalarField& p) {
+  // The incremental projection of step() over c dt: the stage's dp is about c (p^{n+1} - p^n),
+  // so c dp of the last step is the warm start (checkpointed with dp: bitwise restarts).
+  const double c_dt = c * dt;
+  stage_dp_.resize(dp_.size());
+  for (std::size_t i = 0; i < dp_.size(); ++i) stage_dp_[i] = c * dp_[i];
+  predicted_flux(w, c_dt, p, stage_flux_);
+  const int iterations = correct(w, stage_flux_, c_dt / options_.density, stage_dp_).iterations;
+  if (auto* bc = options_.boundary.get()) bc->hold_outlets(w), bc->impose(w, t);
+  // The stage's convective flux: the projected flux, with the scheme's face value in place of
+  // the projection's where they differ (as F_1 of convective_flux()).
+  if ((options_.scheme == "central4") != static_cast<bool>(order4_)) {
+    scheme_flux(w, flux_offset_);
+    for (std::size_t e = 0; e < stage_flux_.size(); ++e) stage_flux_[e] += flux_offset_[e];
+    projection_flux(w, flux_offset_);
+    for (std::size_t e = 0; e < stage_flux_.size(); ++e) stage_flux_[e] -= flux_offset_[e];
+  }
+  return iterations;
+}
+
 StepReport ProjectionRK4::step(FlowState& state, double dt) {
   if (!(dt > 0) || !std::isfinite(dt))
     throw std::invalid_argument("flow::ProjectionRK4::step: time step " + std::to_string(dt) +
@@ -196,44 +238,42 @@ StepReport ProjectionRK4::step(FlowState& state, double dt) {
   pressure_gradient(state.pressure, grad_p_);
   const EdgeField& first_flux = convective_flux(state.velocity);  // also sets flux_offset_
   stage_ = state.velocity;
-  double alpha_prev = 0;  // the stage velocity stands at t^n + alpha_prev dt
-  int stage = 0;
-  for (double alpha : std::array{1.0 / 4, 1.0 / 3, 1.0 / 2, 1.0}) {
-    if (bc) bc->advect_outlets(stage_, state.velocity, state.time + alpha * dt, alpha * dt);
-    if (stage > 0) {
+  StepReport report;
+  const bool accumulate = !rk_.last_stage_only();
+  for (int k = 0; k < 4; ++k) {
+    // R(w_k) at t^n + c_k dt starts the update to w_{k+1} (v* for k = 3) at t^n + c' dt.
+    const double c_next = rk_.update_coefficient(k), t_next = state.time + c_next * dt;
+    if (bc && accumulate) {
+      if (k == 0) stage_sum_.assign(static_cast<std::size_t>(n), Eigen::Vector3d::Zero());
+      for (int i = 0; i < n; ++i) stage_sum_[i] += rk_.b[k] * stage_[i];
+    }
+    if (bc)
+      bc->advect_outlets(k == 3 && accumulate ? stage_sum_ : stage_, state.velocity, t_next,
+                         c_next * dt);
+    if (k > 0 && !options_.project_stages) {
       scheme_flux(stage_, stage_flux_);
       for (std::size_t e = 0; e < stage_flux_.size(); ++e) stage_flux_[e] += flux_offset_[e];
     }
-    momentum_rhs(stage_, stage > 0 ? stage_flux_ : first_flux, rhs_, stage);
+    momentum_rhs(stage_, k > 0 ? stage_flux_ : first_flux, rhs_, k);
     if (body_force_) {
       force_.resize(static_cast<std::size_t>(n));
-      body_force_(stage, state.time + alpha_prev * dt, stage_, force_);
+      body_force_(k, state.time + rk_.c[k] * dt, stage_, force_);
       for (int i = 0; i < n; ++i) rhs_[i] += force_[i] / rho;
     }
-    alpha_prev = alpha;
-    ++stage;
+    if (accumulate) {
+      if (k == 0) rhs_sum_.assign(static_cast<std::size_t>(n), Eigen::Vector3d::Zero());
+      for (int i = 0; i < n; ++i) rhs_sum_[i] += rk_.b[k] * rhs_[i];
+    }
+    const VectorField& r = k == 3 && accumulate ? rhs_sum_ : rhs_;
     for (int i = 0; i < n; ++i)
-      stage_[i] = state.velocity[i] + alpha * dt * (rhs_[i] - grad_p_[i] / rho);
-    if (bc) bc->impose(stage_, state.time + alpha * dt);  // v* is mass-corrected too
+      stage_[i] = state.velocity[i] + c_next * dt * (r[i] - grad_p_[i] / rho);
+    if (bc) bc->impose(stage_, t_next);  // v* is mass-corrected too
+    if (options_.project_stages && k < 3)
+      report.stage_poisson_iterations += project_stage(stage_, c_next, dt, t_next, state.pressure);
   }
   // Projection: lap(dp) = rho div(v*) / dt, warm-started from the previous increment, with the
-  // divergence of the predicted face flux F* = P_p(v*) (+ the damping flux below).
-  projection_flux(stage_, flux_);
-  if ((bc || options_.periodic_pressure_damping) && options_.pressure_damping) {
-    // Pressure damping (Rhie & Chow, AIAA J. 21, 1983, in its node-centred form): the face flux
-    // of v* takes the face-velocity correction dt/rho (avg(grad p^n) - grad p^n|_face), i.e.
-    // the divergence gains div(grad p^n) - lap(p^n) with the wide divergence of the wide
-    // gradient and the compact, linearly exact Laplacian of flow/operators.hpp (their boundary
-    // faces cancel). The odd-even pressure mode that inlets and wall corners excite is invisible
-    // to the wide operators and otherwise stays in the steady state; the term vanishes for
-    // linear pressure and is O(h^2) for smooth ones. The compact Laplacian here must be the
-    // Poisson matrix's own operator (P1 weights on tetrahedra): with the two-point Laplacian
-    // instead, the damping pumps energy into the flow on tetrahedral meshes and a DFG cylinder
-    // run blew up in 15 steps at any dt.
-    add_central_flux(mesh_, dt / rho, grad_p_, flux_);
-    add_compact_gradient(mesh_, poisson_weights_, -dt / rho, state.pressure, flux_);
-  }
-  StepReport report;
+  // divergence of the predicted face flux F* = P_p(v*) (+ the damping flux, predicted_flux).
+  predicted_flux(stage_, dt, state.pressure, flux_);
   report.poisson = correct(stage_, flux_, dt / rho, dp_);
   for (int i = 0; i < n; ++i) {
     state.velocity[i] = stage_[i];

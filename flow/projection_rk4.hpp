@@ -1,14 +1,29 @@
-// Incremental-pressure projection with a low-storage RK4 predictor (Chorin, Math. Comp. 22,
-// 1968; stage form as in YALES2, Moureau, Domingo & Vervisch, C. R. Mécanique 339, 2011):
-//   w_0 = v^n;  w_i = v^n + alpha_i dt [ -div(w_{i-1} w_{i-1}) + nu lap(w_{i-1}) + f_b
-//                                        - grad(p^n)/rho ],   alpha = 1/4, 1/3, 1/2, 1
-//   v* = w_4;   lap(dp) = rho div(v*) / dt;   v^{n+1} = v* - dt grad(dp) / rho;
-//   p^{n+1} = p^n + dp.
-// The stage form is 4th order in time for linear autonomous right-hand sides and 2nd order for
-// the nonlinear momentum equation. Spatial operators: flow/operators.hpp (2nd-order centred),
+// Incremental-pressure projection with an explicit 4-stage Runge-Kutta predictor (Chorin, Math.
+// Comp. 22, 1968; stage form as in YALES2, Moureau, Domingo & Vervisch, C. R. Mécanique 339,
+// 2011), with the scheme of flow/time_scheme.hpp (ProjectionOptions::time_scheme):
+//   w_0 = v^n;  w_k = v^n + c_k dt [ R(w_{k-1}) - grad(p^n)/rho ],  k = 1..3,
+//   v* = v^n + dt [ sum_k b_k R(w_k) - grad(p^n)/rho ],  R(w) = -div(w w) + nu lap(w) + f_b/rho;
+//   lap(dp) = rho div(v*) / dt;   v^{n+1} = v* - dt grad(dp) / rho;   p^{n+1} = p^n + dp.
+// rk4_jameson (the default: c = 1/4, 1/3, 1/2, v* = w_4 with coefficient 1) is 4th order in
+// time for linear autonomous right-hand sides and 2nd order for the nonlinear momentum
+// equation; rk4_classic is the classic 4th-order scheme. Either way only v* is projected: the
+// stages w_1..w_3 carry the divergence that grad(p^n) leaves and see the old pressure. Measured
+// (validation/time_order, 3D Taylor-Green Re 1600): every variant, with project_stages too, is
+// 2nd order in time, rk4_classic with rk4_jameson's error; the limit is mainly the approximate
+// projection (the nodal velocity is not discretely divergence-free), see docs/validation.md.
+// ProjectionOptions::project_stages projects every stage velocity as well (Sanderse & Koren,
+// J. Comput. Phys. 231, 3041-3063, 2012, the "projection at every stage" of their explicit RK
+// methods for the index-2 DAE): w_k* as above, lap(dp_k) = rho div(w_k*) / (c_k dt), w_k =
+// w_k* - c_k dt grad(dp_k) / rho, and the stage's convective flux is the projected face flux
+// of w_k (plus P_c(w_k) - P_p(w_k), see below); three more Poisson solves per step, warm-started
+// from c_k dp of the previous step (so a restart repeats the run bit for bit). dp_k only
+// projects: the pressure gradient of every stage stays grad(p^n).
+// Spatial operators: flow/operators.hpp (2nd-order centred),
 // Poisson: flow/pressure_poisson.hpp. Boundary conditions (ProjectionOptions::boundary, see
-// flow/boundary_conditions.hpp): imposed on every stage at t + alpha_i dt and again after the
-// correction at t + dt; dp is Neumann at velocity boundaries and Dirichlet (dp = 0) at pressure
+// flow/boundary_conditions.hpp): imposed on every stage at t + c_k dt and again after the
+// correction at t + dt; convective outlets advance with the stage form (with rk4_classic the
+// last update uses the b-weighted stage velocities, the outlet equation being linear); dp is
+// Neumann at velocity boundaries and Dirichlet (dp = 0) at pressure
 // outlets (the caller puts BoundaryConditions::pressure_dirichlet() into poisson.dirichlet).
 // Periodic patches carry no boundary faces.
 // Face flux (flow/face_flux.hpp): the projection also corrects the dual-face volume flux F with
@@ -37,6 +52,7 @@
 #include "flow/operators.hpp"
 #include "flow/operators_order4.hpp"
 #include "flow/pressure_poisson.hpp"
+#include "flow/time_scheme.hpp"
 
 namespace valsalva::flow {
 
@@ -71,6 +87,8 @@ struct ProjectionOptions {
   // with a subgrid model the option is refused. Needs 2 ghost layers.
   bool fourth_order_operators = false;
   PoissonOptions poisson;
+  TimeScheme time_scheme = TimeScheme::rk4_jameson;  // time.scheme (flow/time_scheme.hpp)
+  bool project_stages = false;  // time.project_stages: project w_1..w_3 too (see above)
   // LES: fills nu_sgs [m^2/s] at owned and ghost nodes from the velocity gradient of RK stage
   // `stage` = 0..3 (owned + ghosts valid; nu_sgs is sized by the solver and holds the values of
   // the previous call, so a hook may leave it unchanged at stages 1-3 to freeze nu_sgs over the
@@ -82,8 +100,9 @@ struct ProjectionOptions {
 };
 
 struct StepReport {
-  PoissonResult poisson;
-  double max_divergence = 0;  // max |div v^{n+1}| over owned nodes, 1/s
+  PoissonResult poisson;             // the end-of-step projection
+  int stage_poisson_iterations = 0;  // summed over the stage projections (project_stages)
+  double max_divergence = 0;         // max |div v^{n+1}| over owned nodes, 1/s
   // max |div v^{n+1}| h / max |v^{n+1}| with h = (dual volume)^(1/3) per node: the projection's
   // divergence error as a fraction of the resolved velocity gradient, comparable between meshes
   // with graded cells (0 when the flow is at rest).
@@ -93,7 +112,8 @@ struct StepReport {
 
 // Body-force density f [N/m^3] at owned and ghost nodes (overwritten), evaluated once per RK
 // stage from that stage's velocity; f/rho enters the momentum right-hand side. Stage k = 0..3
-// uses the velocity at stage_time = t^n + {0, 1/4, 1/3, 1/2}[k] dt.
+// uses the velocity w_k at stage_time = t^n + c_k dt (flow/time_scheme.hpp: c = 0, 1/4, 1/3,
+// 1/2 for rk4_jameson, 0, 1/2, 1/2, 1 for rk4_classic).
 using BodyForce = std::function<void(
     int stage, double stage_time, const VectorField& stage_velocity, VectorField& force_density)>;
 
@@ -176,10 +196,19 @@ class ProjectionRK4 {
   // Solves lap(dp) = (rho/dt) div(F) (with the boundary flux of u) and corrects u and F; dp is
   // the warm start on entry.
   PoissonResult correct(VectorField& u, EdgeField& flux, double dt_over_rho, ScalarField& dp);
+  // F = P_p(w) plus the pressure damping term of a predictor over `dt` with the old pressure
+  // p (when there are boundary conditions or periodic_pressure_damping): the flux to project.
+  void predicted_flux(const VectorField& w, double dt, const ScalarField& p, EdgeField& flux);
+  // project_stages: projects stage velocity w (standing at t = t^n + c dt) and leaves its
+  // convective face flux in stage_flux_; returns the Poisson iterations.
+  int project_stage(VectorField& w, double c, double dt, double t, const ScalarField& p);
+  RungeKuttaTableau rk_;
   EdgeField flux_, stage_flux_, flux_offset_;
   VectorField flux_velocity_;  // the velocity flux_ belongs to (empty: none)
   TensorField grad_flux_;      // velocity gradient of the Hermite face value
-  VectorField grad_p_, rhs_, conv_, stage_;
+  VectorField grad_p_, grad_dp_, rhs_, conv_, stage_;
+  VectorField rhs_sum_, stage_sum_;  // rk4_classic: sum b_k R(w_k); sum b_k w_k (outlets)
+  ScalarField stage_dp_;             // project_stages: dp of the current stage
   TensorField grad_u_;
   ScalarField nu_sgs_, nu_eff_;  // LES only: subgrid and total viscosity
   BodyForce body_force_;

@@ -52,12 +52,18 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
       state_.velocity[j] = tg.velocity(local.position[j], 0.0);
       state_.pressure[j] = tg.pressure(local.position[j], 0.0);
     }
+  } else if (ic.type == "taylor_green_3d") {
+    const TaylorGreen3d tg{ic.velocity, ic.length, options_.projection.density};
+    for (int j = 0; j < n; ++j) {
+      state_.velocity[j] = tg.velocity(local.position[j]);
+      state_.pressure[j] = tg.pressure(local.position[j]);
+    }
   } else if (ic.type == "cyclic_sines") {
     for (int j = 0; j < n; ++j)
       state_.velocity[j] = cyclic_sines(local.position[j], ic.velocity, ic.length);
   } else if (ic.type != "rest") {
     throw RunError("flow run: unknown initial.type '" + ic.type +
-                   "' (accepted: rest, taylor_green, cyclic_sines)");
+                   "' (accepted: rest, taylor_green, taylor_green_3d, cyclic_sines)");
   }
   impose_initial_boundary_values();
   if (options_.forcing.type != ForcingSpec::Type::none) {

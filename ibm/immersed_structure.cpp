@@ -20,7 +20,10 @@ std::span<Eigen::Vector3d> as_points(Eigen::Matrix3Xd& m) {
 }  // namespace
 
 ImmersedStructure::ImmersedStructure(flow::LocalMesh& mesh, ImmersedOptions options)
-    : mesh_(mesh), options_(options), transfer_(mesh, options.transfer) {
+    : mesh_(mesh),
+      options_(options),
+      transfer_(mesh, options.transfer),
+      rk_(flow::tableau(options.time_scheme)) {
   if (!(options_.fluid_density > 0))
     throw std::invalid_argument(fmt::format(
         "ibm::ImmersedStructure: fluid density must be > 0 (got {})", options_.fluid_density));
@@ -118,7 +121,7 @@ void ImmersedStructure::stage_force(int stage, double stage_time,
     force_density = held_force_;
     return;
   }
-  // X_k = X^n + a_k dt U_{k-1}, a_k dt = t_k - t^n.
+  // X_k = X^n + c_k dt U_{k-1}, c_k dt = t_k - t^n.
   if (stage == 0)
     x_stage_ = x_n_;
   else
@@ -127,6 +130,10 @@ void ImmersedStructure::stage_force(int stage, double stage_time,
   compute_forces(x_stage_);
   spread(force_density);
   interpolate(stage_velocity);
+  if (!rk_.last_stage_only()) {
+    if (stage == 0) velocity_sum_.setZero(3, velocity_.cols());
+    velocity_sum_ += rk_.b[stage] * velocity_;
+  }
 }
 
 void ImmersedStructure::finish_step(const flow::FlowState& state) {
@@ -139,6 +146,8 @@ void ImmersedStructure::finish_step(const flow::FlowState& state) {
     // Transfer is still located at X^n: U(u^{n+1}, X^n).
     interpolate(state.velocity);
   }
+  // X^{n+1} = X^n + dt sum_k b_k U_k (per_step: U(u^{n+1}, X^n) alone).
+  if (options_.mode == CouplingMode::per_stage && !rk_.last_stage_only()) velocity_ = velocity_sum_;
   x_ = x_n_ + dt * velocity_;
 }
 

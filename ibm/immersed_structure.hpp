@@ -4,13 +4,16 @@
 // Solid inertia is neglected (the fluid fills the solid); each marker moves with the fluid:
 //   dX/dt = U(X) = sum_j u_j phi(x_j, X) V_j,     f_j = sum_a F_a(X) phi(x_j, X_a).
 //
-// Time integration is the flow's low-storage RK4 applied to the pair (u, X), through the
-// ProjectionRK4 body-force hook (mode per_stage):
-//   stage k = 0..3 at t_k = t^n + a_k dt (a = 0, 1/4, 1/3, 1/2):
-//     X_k = X^n + a_k dt U_{k-1}          (X_0 = X^n)
+// Time integration is the flow's RK4 (flow/time_scheme.hpp, ImmersedOptions::time_scheme: the
+// scene's time.scheme) applied to the pair (u, X), through the ProjectionRK4 body-force hook
+// (mode per_stage):
+//   stage k = 0..3 at t_k = t^n + c_k dt (c = 0, 1/4, 1/3, 1/2 for rk4_jameson; 0, 1/2, 1/2, 1
+//   for rk4_classic):
+//     X_k = X^n + c_k dt U_{k-1}          (X_0 = X^n)
 //     F_k = F(X_k) (internal + tether), spread to the fluid force density
 //     U_k = interpolation of the stage velocity u_k at X_k
-//   after the projection: X^{n+1} = X^n + dt U_3.
+//   after the projection: X^{n+1} = X^n + dt sum_k b_k U_k (b = 0, 0, 0, 1 for rk4_jameson,
+//   i.e. X^n + dt U_3; 1/6, 1/3, 1/3, 1/6 for rk4_classic).
 // Mode per_step (classic explicit IB): F(X^n) spread once and held over the four stages;
 // X^{n+1} = X^n + dt U(u^{n+1}, X^n) with the projected, divergence-free velocity.
 // Which to use and why: see ibm/ib_stability.hpp and the membrane_relaxation case.
@@ -28,6 +31,7 @@
 
 #include "flow/local_mesh.hpp"
 #include "flow/projection_rk4.hpp"
+#include "flow/time_scheme.hpp"
 #include "ibm/dirac_transfer.hpp"
 #include "ibm/immersed_body.hpp"
 
@@ -53,6 +57,8 @@ inline Eigen::Vector3d wrap_into(const PeriodicBox& box, Eigen::Vector3d x) {
 struct ImmersedOptions {
   TransferOptions transfer;
   CouplingMode mode = CouplingMode::per_stage;
+  // The flow's time scheme (ProjectionOptions::time_scheme): its stage weights move the markers.
+  flow::TimeScheme time_scheme = flow::TimeScheme::rk4_jameson;
   double fluid_density = 1.0;      // kg/m^3, for the stability bound
   std::optional<PeriodicBox> box;  // wrap markers across periodic directions
   double stability_safety = 1.0;   // dt is refused above safety * dt_max (ib_stability.hpp)
@@ -98,7 +104,8 @@ class ImmersedStructure {
   // All solid nodes (markers and fixed nodes); the coupled ones are the transfer's markers.
   int num_markers() const { return static_cast<int>(x_.cols()); }
   int num_coupled_markers() const { return static_cast<int>(coupled_.size()); }
-  // Current positions, last marker velocities and last forces (3 x markers, all bodies).
+  // Current positions, last marker velocities (after a step: the velocity that moved them) and
+  // last forces (3 x markers, all bodies).
   const Eigen::Matrix3Xd& positions() const { return x_; }
   const Eigen::Matrix3Xd& velocities() const { return velocity_; }
   const Eigen::Matrix3Xd& forces() const { return force_; }
@@ -129,7 +136,9 @@ class ImmersedStructure {
   std::vector<std::unique_ptr<ImmersedBody>> bodies_;
   std::vector<int> first_;
   Eigen::Matrix3Xd x_, x_n_, x_stage_, velocity_, force_;
-  std::vector<int> coupled_;  // markers of the coupling: every node but the fixed ones
+  flow::RungeKuttaTableau rk_;
+  Eigen::Matrix3Xd velocity_sum_;  // sum b_k U_k over the stages so far (rk4_classic only)
+  std::vector<int> coupled_;       // markers of the coupling: every node but the fixed ones
   Eigen::Matrix3Xd wrapped_, coupled_force_, coupled_velocity_;  // per coupled marker
   double t_n_ = 0;
   double min_det_ = 1;

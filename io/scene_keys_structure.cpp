@@ -370,6 +370,7 @@ ImmersedSetup read_immersed_setup(const Scene& scene, const flow::Mesh& mesh) {
   o.mode = scene.get<std::string>("immersed.coupling") == "per_step" ? ibm::CouplingMode::per_step
                                                                      : ibm::CouplingMode::per_stage;
   o.fluid_density = scene.get<double>("flow.density");
+  o.time_scheme = flow::parse_time_scheme(scene.get<std::string>("time.scheme"));
   o.box = periodic_box(scene, mesh);
   out.dt_safety = scene.get<double>("immersed.dt_safety");
   o.stability_safety = out.dt_safety;

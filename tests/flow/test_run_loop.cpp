@@ -1,7 +1,9 @@
 // The flow run loop: a small Taylor-Green run (error against the exact solution, np = 1 and 2
 // agree with a serial run to 1e-10), the refused time step beyond the RK4 stability limit, the
-// blow-up diagnosis with the last good state written, the boundary-condition requirement, and the
-// scene reader of the flow keys.
+// blow-up diagnosis with the last good state written, the boundary-condition requirement, the
+// scene reader of the flow keys (time.scheme, time.project_stages among them), and the 3D
+// Taylor-Green initial state (its pressure solves lap p = -rho du_i/dx_j du_j/dx_i, checked by
+// finite differences of the closed form; its first pressure increment is small).
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 
@@ -311,6 +313,98 @@ fields = ["vorticity"]
       "[mesh]\nsource = \"box\"\n[output]\ninterval = 2.5\ninterval_unit = \"steps\"\n", "f.toml");
   CHECK_THROWS_WITH_AS(io::flow_run_options(fractional, "dir"),
                        doctest::Contains("f.toml:4:1: key 'output.interval'"), io::SceneError);
+}
+
+TEST_CASE("time.scheme and time.project_stages become run options; unknown schemes are refused") {
+  const auto defaults =
+      io::flow_run_options(io::parse_scene("[mesh]\nsource = \"box\"\n", "d.toml"), "dir");
+  CHECK(defaults.projection.time_scheme == flow::TimeScheme::rk4_jameson);
+  CHECK_FALSE(defaults.projection.project_stages);
+  const auto classic = io::flow_run_options(
+      io::parse_scene("[mesh]\nsource = \"box\"\n[time]\nscheme = \"rk4_classic\"\n"
+                      "project_stages = true\n",
+                      "c.toml"),
+      "dir");
+  CHECK(classic.projection.time_scheme == flow::TimeScheme::rk4_classic);
+  CHECK(classic.projection.project_stages);
+  CHECK_THROWS_WITH_AS(
+      io::parse_scene("[mesh]\nsource = \"box\"\n[time]\nscheme = \"rk4\"\n", "u.toml"),
+      doctest::Contains("u.toml:4:10: key 'time.scheme': unknown value \"rk4\" (accepted: "
+                        "\"rk4_jameson\", \"rk4_classic\")"),
+      io::SceneError);
+}
+
+TEST_CASE("the 3D Taylor-Green initial state: closed-form pressure and a consistent start") {
+  const flow::TaylorGreen3d tg{0.7, 0.4, 1.3};
+  // lap p = -rho (du_i/dx_j)(du_j/dx_i) by central differences (h = 1e-3 L: error ~ 1e-7).
+  const double h = 1e-3 * tg.length;
+  for (const Eigen::Vector3d x : {Eigen::Vector3d(0.1, 0.2, 0.3), Eigen::Vector3d(-0.5, 0.9, 0.05),
+                                  Eigen::Vector3d(1.1, -0.7, 0.6)}) {
+    Eigen::Matrix3d grad;  // grad(i, j) = du_i/dx_j
+    double lap = 0;
+    for (int j = 0; j < 3; ++j) {
+      const Eigen::Vector3d e = h * Eigen::Vector3d::Unit(j);
+      grad.col(j) = (tg.velocity(x + e) - tg.velocity(x - e)) / (2 * h);
+      lap += (tg.pressure(x + e) - 2 * tg.pressure(x) + tg.pressure(x - e)) / (h * h);
+    }
+    const double source = -tg.rho * (grad.array() * grad.transpose().array()).sum();
+    const double scale = tg.rho * tg.u0 * tg.u0 / (tg.length * tg.length);
+    CHECK(std::abs(lap - source) < 1e-5 * scale);
+    CHECK(std::abs(grad.trace()) < 1e-6 * tg.u0 / tg.length);  // divergence-free
+  }
+  // On the periodic 16^3 box of side 2 pi: the run loop starts from the closed form, and its
+  // first pressure increment is a small fraction of the pressure (measured 0.035: the O(h^2)
+  // difference of the discrete pressure; at rest with p = 0 it would be 1).
+  auto box = test::periodic_box("hexa", 16);
+  box.length = Eigen::Vector3d::Constant(2 * std::numbers::pi);
+  const auto mesh = io::generate_box(box);
+  const auto metrics = flow::compute_dual_metrics(mesh);
+  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
+  flow::RunOptions o;
+  o.projection.viscosity = 1.0 / 1600;
+  o.initial = {"taylor_green_3d", 1.0, 1.0};
+  o.time.end = o.time.dt = 0.01;
+  o.output.print = false;
+  flow::RunLoop loop(mesh, metrics, local, o);
+  const flow::TaylorGreen3d exact{1.0, 1.0, 1.0};
+  double worst = 0, p_max = 0;
+  for (int j = 0; j < local.num_owned; ++j) {
+    worst = std::max(worst, (loop.state().velocity[j] - exact.velocity(local.position[j])).norm());
+    worst = std::max(worst, std::abs(loop.state().pressure[j] - exact.pressure(local.position[j])));
+    p_max = std::max(p_max, std::abs(loop.state().pressure[j]));
+  }
+  CHECK(local.comm.max(worst) == 0);
+  loop.run();
+  double dp = 0;
+  for (int j = 0; j < local.num_owned; ++j)
+    dp = std::max(dp, std::abs(loop.pressure_increment()[j]));
+  dp = local.comm.max(dp), p_max = local.comm.max(p_max);
+  MESSAGE("taylor_green_3d 16^3: max |dp| / max |p| after one step = " << dp / p_max);
+  CHECK(dp < 0.1 * p_max);
+}
+
+TEST_CASE("taylor_green_3d needs a mesh periodic in z too") {
+  const auto scene = io::parse_scene(R"([mesh]
+source = "box"
+[initial]
+type = "taylor_green_3d"
+[initial.taylor_green]
+velocity = 1.0
+length = 1.0
+)",
+                                     "tg3.toml");
+  io::BoxSpec box;
+  box.cells = {4, 4, 4};
+  box.length = Eigen::Vector3d::Constant(2 * std::numbers::pi);
+  box.periodic = {true, true, true};
+  CHECK_NOTHROW(io::check_initial_state(scene, io::generate_box(box)));
+  box.periodic = {true, true, false};
+  CHECK_THROWS_WITH_AS(
+      io::check_initial_state(scene, io::generate_box(box)),
+      doctest::Contains("the Taylor-Green vortex is periodic in z, the mesh is not "
+                        "(no periodic pair along z) (accepted: a mesh periodic in "
+                        "x, y and z)"),
+      io::SceneError);
 }
 
 TEST_CASE("[forcing], initial.cyclic_sines and time.stability_fraction from a scene") {

@@ -25,6 +25,7 @@ struct IbBoxSpec {
   int elements = 3;      // Q2 elements per block side
   double stretch = 1.2;  // initial isochoric stretch along x
   ibm::CouplingMode mode = ibm::CouplingMode::per_stage;
+  flow::TimeScheme time_scheme = flow::TimeScheme::rk4_jameson;  // fluid and markers
   // The skew-symmetric convection conserves momentum up to the divergence the Poisson solve
   // leaves (flow/projection_rk4.hpp); tests of momentum at round-off tighten it.
   double poisson_tolerance = 1e-8;
@@ -87,9 +88,11 @@ struct IbBox {
     fluid.density = s.density;
     fluid.viscosity = s.viscosity;
     fluid.poisson.tolerance = s.poisson_tolerance;
+    fluid.time_scheme = s.time_scheme;
     flow = std::make_unique<flow::ProjectionRK4>(local, fluid);
     ibm::ImmersedOptions options;
     options.mode = s.mode;
+    options.time_scheme = s.time_scheme;
     options.fluid_density = s.density;
     options.box = ibm::PeriodicBox{};
     options.box->periodic = {true, true, true};
