@@ -390,7 +390,7 @@ RunResult Simulation::run() {
   return result;
 }
 
-void Simulation::request_stop() {
+void Simulation::request_stop() const {
   parts_->stop_requested = true;
 }
 
