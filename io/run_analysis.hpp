@@ -55,6 +55,11 @@ class RunAnalysis {
 
   const std::vector<PhaseStatistics>& statistics() const { return statistics_; }
   const WallShearRecorder* wall_shear() const { return wall_shear_ ? &*wall_shear_ : nullptr; }
+  // The prescribed body-force density of the run, for the wall shear stress (see
+  // WallShearRecorder::set_body_force); must outlive the analysis.
+  void set_body_force(const flow::VectorField* force_density) {
+    if (wall_shear_) wall_shear_->set_body_force(force_density);
+  }
 
  private:
   void write_interim(std::size_t statistics, double time);

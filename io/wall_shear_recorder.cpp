@@ -72,6 +72,7 @@ void WallShearRecorder::sample(const flow::FlowState& state) {
   in.pressure = &state.pressure;
   in.velocity_gradient = &grad_;
   in.laplacian_weights = &weights_;
+  in.body_force = body_force_;
   const double t = state.time, t0 = options_.start_time;
   const double elapsed = sampled_ ? t - std::max(last_time_, t0) : 0.0;
   std::vector<double> mean;

@@ -31,6 +31,10 @@ class WallShearRecorder {
   // Collective: evaluates tau_w and, from start_time on, adds it with the time elapsed since the
   // previous sample.
   void sample(const flow::FlowState& state);
+  // A body-force density acting in the fluid (a prescribed [forcing]): the wall nodes' share of
+  // it belongs to the fluid's momentum balance, not to the wall (without it a uniform force F
+  // adds F h/2 per unit area to tau_w, h/H of a channel's wall shear). Must outlive the recorder.
+  void set_body_force(const flow::VectorField* force_density) { body_force_ = force_density; }
   std::vector<CheckpointArray> checkpoint_arrays() const;
   void restore(const CheckpointReader& reader);            // collective
   void write(const std::filesystem::path& run_dir) const;  // collective
@@ -44,6 +48,7 @@ class WallShearRecorder {
   const flow::LocalMesh* local_;
   WallShearOptions options_;
   double density_, mu_;
+  const flow::VectorField* body_force_ = nullptr;
   std::vector<double> weights_;  // the viscous edge weights of the momentum operator
   flow::TensorField grad_;
   std::vector<std::vector<int>> nodes_;  // local wall node per load, per patch

@@ -107,6 +107,7 @@ struct Simulation::Parts {
   Clock::time_point t0 = Clock::now(), last_write = Clock::now();
   StepObserver observer;
   bool stop_requested = false;  // by the observer
+  flow::VectorField forcing;    // the prescribed body-force density, for the wall shear
 
   void write_fields(const std::string& stream, double time, const flow::FieldSet& set);
   void write_checkpoint(const flow::FlowState& state, std::int64_t step, double dt, bool stopping);
@@ -274,9 +275,14 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
                             series, p.local.comm);
     }
   }
-  if (!analysis_options.empty())
+  if (!analysis_options.empty()) {
     p.analysis.emplace(p.mesh, p.metrics, p.local, analysis_options, rho,
                        rho * run_options.projection.viscosity, p.run_path, p.in_place);
+    if (run_options.forcing.type != flow::ForcingSpec::Type::none) {
+      p.forcing = flow::forcing_density(p.local, run_options.forcing);
+      p.analysis->set_body_force(&p.forcing);
+    }
+  }
 
   std::int64_t start_step = 0;
   flow::FlowState start;
@@ -384,7 +390,7 @@ RunResult Simulation::run() {
   return result;
 }
 
-void Simulation::request_stop() {
+void Simulation::request_stop() const {
   parts_->stop_requested = true;
 }
 

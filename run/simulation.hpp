@@ -61,7 +61,7 @@ class Simulation {
 
   // From an observer: end the run after this step (RunSummary::stopped), e.g. once a
   // validation case's quantity is steady.
-  void request_stop();
+  void request_stop() const;  // const: observers receive the simulation read-only
 
   const flow::Mesh& mesh() const;
   const flow::DualMetrics& metrics() const;

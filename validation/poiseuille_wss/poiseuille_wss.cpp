@@ -1,5 +1,6 @@
 // Wall shear stress and pressure drop of steady Poiseuille flow in a rigid pipe (Gmsh
-// tetrahedra) through the scene-level analysis (io::RunAnalysis: [wall_shear], [pressure_drop]),
+// tetrahedra): validation/poiseuille_wss/poiseuille_wss.toml through run::Simulation, its
+// [wall_shear] output (wall_shear.csv) and the final pressure,
 // against tau_w = 4 mu Q / (pi R^3) and dp = 8 mu L Q / (pi R^4) (Hagen-Poiseuille). The run
 // starts from the exact parabola (the steady discrete state differs from it only by the
 // discretisation error) with the Poiseuille inlet profile and a pressure outlet, and runs for
@@ -13,13 +14,12 @@
 #include <cmath>
 #include <fstream>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
-#include "flow/run_loop.hpp"
-#include "io/pipe_generator.hpp"
+#include "io/numeric_table.hpp"
 #include "io/pressure_drop.hpp"
-#include "io/run_analysis.hpp"
+#include "io/scene.hpp"
+#include "run/simulation.hpp"
 #include "validation/case.hpp"
+#include "validation/scene_run.hpp"  // case_scene
 
 namespace valsalva::validation {
 
@@ -34,78 +34,62 @@ struct Level {
 };
 
 void run_level(const Context& ctx, Level& level) {
-  const double nu = kMu / kRho;
-  const auto mesh = io::generate_pipe_mesh(kRadius, kLength, kRadius / level.resolution);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, ctx.comm);
-  const double viscous_time = kRadius * kRadius / (2.405 * 2.405 * nu);
-
-  flow::RunOptions o;
-  o.projection.density = kRho;
-  o.projection.viscosity = nu;
-  o.projection.poisson.tolerance = 1e-10;
-  o.time.end = 3 * viscous_time;
-  o.output.print = false;
-  auto inlet = flow::boundary_spec("inlet", flow::BoundaryType::inlet);
-  inlet.profile = flow::InletProfile::poiseuille;
-  inlet.flow_rate.mean = kQ;
-  o.boundary = {inlet, flow::boundary_spec("outlet", flow::BoundaryType::pressure_outlet),
-                flow::boundary_spec("wall", flow::BoundaryType::wall)};
-
-  io::AnalysisOptions a;
-  a.wall_shear.patches = {"wall"};
-  a.wall_shear.start_time = 1.5 * viscous_time;
   const double z_up = kLength / 4, z_down = 3 * kLength / 4;
-  a.pressure_drops = {
-      {"pipe", Eigen::Vector3d(0, 0, z_up), Eigen::Vector3d(0, 0, z_down), 0.5 * kRadius, 1}};
   const auto dir = ctx.out_dir / fmt::format("level_{:g}", level.resolution);
-  if (local.comm.root()) std::filesystem::create_directories(dir);
-  local.comm.barrier();
-  io::RunAnalysis analysis(mesh, metrics, local, a, kRho, kMu, dir, false);
-
-  flow::RunLoop loop(mesh, metrics, local, o);
-  flow::FlowState start;  // the exact parabola, mean velocity Q / (pi R^2)
   const double u_max = 2 * kQ / (M_PI * kRadius * kRadius);
-  for (int j = 0; j < local.num_local(); ++j) {
-    const auto& x = local.position[j];
+  // The scene (validation/poiseuille_wss/poiseuille_wss.toml) at this level, through
+  // run::Simulation; started from the exact parabola, mean velocity Q / (pi R^2).
+  const auto scene =
+      io::load_scene(case_scene("poiseuille_wss", "poiseuille_wss.toml"),
+                     {fmt::format("mesh.pipe.size={:.17g}", kRadius / level.resolution)});
+  run::RunRequest request;
+  request.out = dir;
+  request.overwrite = true;
+  request.quiet = true;
+  request.print = false;
+  run::Simulation sim(scene, request, ctx.comm);
+  sim.set_initial_velocity([&](const Eigen::Vector3d& x) {
     const double s = std::min(1.0, std::hypot(x.x(), x.y()) / kRadius);
-    start.velocity.emplace_back(0, 0, u_max * (1 - s * s));
-    start.pressure.push_back(0.0);
-  }
-  loop.resume(start, 0);
-  flow::RunHooks hooks;
-  hooks.after_step = [&](const flow::FlowState& state, std::int64_t step) {
-    analysis.sample(state, step);
-  };
-  loop.set_hooks(hooks);
-  const auto& state = loop.state();
-  loop.run();
-  analysis.finish();
-
-  // Mean tau_w over the wall nodes of the middle half, weighted like the scene's history.
-  const auto* wall = analysis.wall_shear();
-  const auto tawss = wall->statistics().front().tawss();
-  const auto osi = wall->statistics().front().osi();
-  double sum = 0, lo = INFINITY, hi = -INFINITY, osi_max = 0;
-  std::int64_t n = 0;
-  for (std::size_t i = 0; i < tawss.size(); ++i) {
-    const auto& x = local.position[wall->nodes().front()[i]];
-    if (std::abs(x.z() - kLength / 2) > kLength / 4) continue;
-    sum += tawss[i], ++n;
-    lo = std::min(lo, tawss[i]), hi = std::max(hi, tawss[i]);
-    osi_max = std::max(osi_max, osi[i]);
-  }
+    return Eigen::Vector3d(0, 0, u_max * (1 - s * s));
+  });
+  sim.run();
+  const auto& local = sim.local();
   const auto& comm = local.comm;
-  const double exact = 4 * kMu * kQ / (M_PI * std::pow(kRadius, 3));
-  level.nodes = metrics.num_nodes();
-  level.wss_error = comm.sum(sum) / double(comm.sum(n)) / exact - 1;
-  level.wss_min = -comm.max(-lo) / exact - 1;
-  level.wss_max = comm.max(hi) / exact - 1;
-  level.osi_max = comm.max(osi_max);
   const io::RegionMean up(local, Eigen::Vector3d(0, 0, z_up), 0.5 * kRadius, "upstream");
   const io::RegionMean down(local, Eigen::Vector3d(0, 0, z_down), 0.5 * kRadius, "downstream");
   const double dp_exact = 8 * kMu * (z_down - z_up) * kQ / (M_PI * std::pow(kRadius, 4));
-  level.dp_error = (up(state.pressure) - down(state.pressure)) / dp_exact - 1;
+  level.dp_error = (up(sim.state().pressure) - down(sim.state().pressure)) / dp_exact - 1;
+  level.nodes = sim.metrics().num_nodes();
+  // Mean TAWSS over the wall nodes of the middle half, from the run's wall_shear.csv.
+  if (comm.rank() == 0) {
+    // patch (a name), node, x, y, z, tawss, osi, tau_x, tau_y, tau_z: the numbers read strictly.
+    io::TableLines lines(dir / "wall_shear.csv", {});
+    std::vector<double> z, tawss, osi;
+    for (bool header = true; lines.next(); header = false) {
+      const auto fields = lines.fields();
+      if (header || fields.size() != 10) {
+        if (!header) throw lines.error(1, "expected 10 columns");
+        continue;
+      }
+      z.push_back(lines.number(fields[4], "z"));
+      tawss.push_back(lines.number(fields[5], "tawss"));
+      osi.push_back(lines.number(fields[6], "osi"));
+    }
+    const double exact = 4 * kMu * kQ / (M_PI * std::pow(kRadius, 3));
+    double sum = 0, lo = INFINITY, hi = -INFINITY;
+    int n = 0;
+    for (std::size_t i = 0; i < z.size(); ++i) {
+      if (std::abs(z[i] - kLength / 2) > kLength / 4) continue;
+      sum += tawss[i], ++n;
+      lo = std::min(lo, tawss[i]), hi = std::max(hi, tawss[i]);
+      level.osi_max = std::max(level.osi_max, osi[i]);
+    }
+    level.wss_error = sum / n / exact - 1;
+    level.wss_min = lo / exact - 1;
+    level.wss_max = hi / exact - 1;
+  }
+  for (double* x : {&level.wss_error, &level.wss_min, &level.wss_max, &level.osi_max})
+    MPI_Bcast(x, 1, MPI_DOUBLE, 0, ctx.comm);
 }
 
 }  // namespace

@@ -52,13 +52,14 @@ void run(const Context& ctx, Report& report) {
                              {"central2", "sigma", "step"},
                              {"central2", "none", "step"}});
   double peak_step = 0, peak_stage = 0, reference_peak = 0;
-  const TgvBox box(n, ctx.comm);
   for (const auto& run : runs) {
     TgvLesSpec spec;
     spec.scheme = run.scheme;
     spec.model = run.model;
     spec.update = run.update;
-    const auto r = run_tgv_les(spec, box);
+    const auto r =
+        run_tgv_les(spec, n, ctx.comm,
+                    ctx.out_dir / "runs" / (run.scheme + "_" + run.model + "_" + run.update));
     const auto d = tgv_dissipation(r, ref, spec.t_end);
     double max_ratio = 0;
     for (double v : r.max_nu_sgs_over_nu) max_ratio = std::max(max_ratio, v);

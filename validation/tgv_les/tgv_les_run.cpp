@@ -10,12 +10,10 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "flow/poisson_weights.hpp"
-#include "flow/projection_rk4.hpp"
 #include "flow/run_diagnostics.hpp"
-#include "io/box_generator.hpp"
 #include "io/numeric_table.hpp"
-#include "les/subgrid_viscosity.hpp"
+#include "run/simulation.hpp"
+#include "validation/scene_run.hpp"
 
 namespace valsalva::validation {
 
@@ -26,23 +24,6 @@ double cpu_seconds() {
   return c.tv_sec + 1e-9 * c.tv_nsec;
 }
 }  // namespace
-
-namespace {
-flow::Mesh periodic_box(int n) {
-  io::BoxSpec box;
-  box.cells = {n, n, n};
-  box.length = Eigen::Vector3d::Constant(2 * std::numbers::pi);
-  box.periodic = {true, true, true};
-  return io::generate_box(box);
-}
-}  // namespace
-
-TgvBox::TgvBox(int cells, MPI_Comm comm)
-    : n(cells),
-      mesh(periodic_box(cells)),
-      metrics(flow::compute_dual_metrics(mesh)),
-      local(flow::distribute(mesh, metrics, comm, {})),
-      poisson_weights(flow::poisson_weights(mesh, metrics, local)) {}
 
 flow::FlowState tgv_re1600_initial_state(const flow::LocalMesh& local) {
   flow::FlowState state;
@@ -61,59 +42,54 @@ double tgv_mean_energy(const flow::LocalMesh& local, const flow::VectorField& u)
   return local.comm.sum(e) / std::pow(2 * std::numbers::pi, 3);
 }
 
-TgvLesResult run_tgv_les(const TgvLesSpec& spec, const TgvBox& box) {
+TgvLesResult run_tgv_les(const TgvLesSpec& spec, int n, MPI_Comm comm,
+                         const std::filesystem::path& run_dir) {
   const auto wall0 = std::chrono::steady_clock::now();
   const double two_pi = 2 * std::numbers::pi, nu = 1.0 / 1600;
-  const auto& local = box.local;
-  flow::ProjectionOptions options;
-  options.density = 1;
-  options.viscosity = nu;
-  options.scheme = spec.scheme;
-  options.poisson.tolerance = 1e-8;
-  std::unique_ptr<les::SubgridViscosity> sgs;
-  if (spec.model != "none") {
-    sgs = std::make_unique<les::SubgridViscosity>(spec.model, spec.constant, local.h,
-                                                  les::parse_sgs_update(spec.update));
-    options.subgrid_viscosity = [&](int stage, const flow::TensorField& g, flow::ScalarField& s) {
-      (*sgs)(stage, g, s);
-    };
-  }
-  flow::ProjectionRK4 solver(local, options, box.poisson_weights);
-
-  auto state = tgv_re1600_initial_state(local);
-  auto energy = [&] { return tgv_mean_energy(local, state.velocity); };
   TgvLesResult r;
-  const double h = two_pi / box.n;
+  const double h = two_pi / n;
   r.steps = static_cast<int>(std::ceil(spec.t_end / (spec.cfl * h)));
   r.dt = spec.t_end / r.steps;
-  r.time.push_back(0);
-  r.energy.push_back(energy());
-  r.max_nu_sgs_over_nu.push_back(0);
-  long its = 0;
   std::vector<double> scratch;
-  const double cpu0 = cpu_seconds();
-  for (int s = 0; s < r.steps; ++s) {
-    const auto report = solver.step(state, r.dt);
-    its += report.poisson.iterations;
-    r.poisson_iterations_max = std::max(r.poisson_iterations_max, report.poisson.iterations);
+  double cpu0 = 0;
+  SceneRun measure;
+  measure.at_start = [&](const run::Simulation& sim) {
+    r.time.push_back(0);
+    r.energy.push_back(tgv_mean_energy(sim.local(), sim.state().velocity));
+    r.max_nu_sgs_over_nu.push_back(0);
+    cpu0 = cpu_seconds();
+  };
+  measure.observer = [&](const run::Simulation& sim, std::int64_t) {
+    const auto& solver = sim.loop().solver();
+    const auto& state = sim.state();
     r.time.push_back(state.time);
-    r.energy.push_back(energy());
+    r.energy.push_back(tgv_mean_energy(sim.local(), state.velocity));
     r.max_nu_sgs_over_nu.push_back(solver.max_subgrid_viscosity() / nu);
     // The run loop's RK4 stability number (derived for central2) of this fixed dt.
     const double nu_total = nu + solver.max_subgrid_viscosity();
-    r.max_stability_number = std::max(
-        r.max_stability_number, r.dt * flow::stability_rates(local, solver.laplacian_weights(),
-                                                             nu_total, state.velocity, scratch)
-                                           .stability);
+    r.max_stability_number =
+        std::max(r.max_stability_number,
+                 r.dt * flow::stability_rates(sim.local(), solver.laplacian_weights(), nu_total,
+                                              state.velocity, scratch)
+                            .stability);
     // Blown up: energy no longer finite, or above its initial value (viscous decay only).
     if (!(r.energy.back() <= r.energy.front())) {
       r.blow_up_time = state.time;
-      break;
+      sim.request_stop();  // the energy is a global sum: every rank stops here
     }
-  }
-  r.cpu_seconds = local.comm.sum(cpu_seconds() - cpu0);
-  r.poisson_iterations_mean = static_cast<double>(its) / static_cast<double>(r.time.size() - 1);
-  r.wall_seconds = local.comm.max(
+  };
+  measure.at_end = [&](const run::Simulation& sim) {
+    r.cpu_seconds = sim.local().comm.sum(cpu_seconds() - cpu0);
+  };
+  const auto result = run_scene_file(
+      case_scene("tgv_les", "tgv_les.toml"),
+      {fmt::format("mesh.box.cells=[{0}, {0}, {0}]", n), fmt::format("flow.scheme={}", spec.scheme),
+       fmt::format("les.model={}", spec.model), fmt::format("les.update={}", spec.update),
+       fmt::format("les.constant={:.17g}", spec.constant),
+       fmt::format("time.end={:.17g}", spec.t_end), fmt::format("time.dt={:.17g}", r.dt)},
+      run_dir, comm, measure);
+  r.poisson_iterations_max = result.summary.max_poisson_iterations;
+  r.wall_seconds = flow::Comm(comm).max(
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count());
   return r;
 }

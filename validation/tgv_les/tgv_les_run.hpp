@@ -20,17 +20,6 @@
 
 namespace valsalva::validation {
 
-// The periodic n^3 box of side 2 pi, its metrics, partition and Poisson weights: built once and
-// shared by the runs on one mesh (at 64^3 this set-up costs about as much as 30 steps).
-struct TgvBox {
-  TgvBox(int n, MPI_Comm comm);
-  int n;
-  flow::Mesh mesh;
-  flow::DualMetrics metrics;
-  flow::LocalMesh local;
-  std::vector<double> poisson_weights;
-};
-
 // The initial velocity and pressure above at every local node.
 flow::FlowState tgv_re1600_initial_state(const flow::LocalMesh& local);
 // Collective: mean kinetic energy sum V |u|^2 / 2 over owned nodes / (2 pi)^3.
@@ -56,14 +45,15 @@ struct TgvLesResult {
   // derived for central2; central4's convective spectral radius is ~1.37x larger).
   double max_stability_number = 0;
   int poisson_iterations_max = 0;
-  double poisson_iterations_mean = 0;
   // > 0: the run stopped at this time because the energy was no longer finite or exceeded its
   // initial value (it can only decay); time and energy end there.
   double blow_up_time = 0;
 };
 
-// Collective over box.local's communicator.
-TgvLesResult run_tgv_les(const TgvLesSpec& spec, const TgvBox& box);
+// validation/tgv_les/tgv_les.toml on the n^3 box with the spec as overrides, through
+// run::Simulation into `run_dir` (empty: a scratch folder). Collective over `comm`.
+TgvLesResult run_tgv_les(const TgvLesSpec& spec, int n, MPI_Comm comm,
+                         const std::filesystem::path& run_dir = {});
 
 // Rows (t, E, -dE/dt) of the spectral reference file (comment lines start with '#').
 std::vector<std::array<double, 3>> read_tgv_reference(const std::filesystem::path& file);
