@@ -153,16 +153,26 @@ void run(const Context& ctx, Report& report) {
       // to the timing noise of a shared machine (0.89 full; the quick runs of the two rank
       // counts in parallel under ctest -j2 move it by tens of %), so only within 0.5.
       report.add(name + ": error / rk4_jameson's at the finest dt", error_ratio, 1.0, 0.02);
-      report.add(name + ": CPU / rk4_jameson's at equal error", cpu_ratio, 1.0, 0.5);
+      if (!ctx.quick)
+        report.add(name + ": CPU / rk4_jameson's at equal error", cpu_ratio, 1.0, 0.5);
     } else {
       // Projecting the stages removes part of the splitting error, never adds to it; it costs
       // three Poisson solves more per step, more than the smaller error saves (the default
       // stays rk4_jameson without it while this ratio is above 1).
       report.add(name + ": error / rk4_jameson's at the finest dt", error_ratio, 1.0, 0.0,
                  Check::at_most);
-      report.add(name + ": CPU / rk4_jameson's at equal error", cpu_ratio, 1.0, 0.0,
-                 Check::at_least);
+      if (!ctx.quick)
+        report.add(name + ": CPU / rk4_jameson's at equal error", cpu_ratio, 1.0, 0.0,
+                   Check::at_least);
     }
+    // The quick version runs in `make test` beside other tests (and its np 2 twin): CPU times
+    // there are not a measurement (a classic/jameson ratio of 1.55 was seen under ctest -j2), so
+    // it prints the ratio and checks it only in the full version (speed claims belong to
+    // benchmark-like runs on a quiet machine).
+    if (ctx.quick && rank == 0)
+      fmt::print(
+          "time_order: {} CPU / rk4_jameson's at equal error {:.3g} (not checked in --quick)\n",
+          name, cpu_ratio);
   }
 }
 
