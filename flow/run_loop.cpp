@@ -67,17 +67,17 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
   }
   impose_initial_boundary_values();
   if (options_.forcing.type != ForcingSpec::Type::none) {
-    auto prescribed = forcing_density(local, options_.forcing);
-    solver_.set_body_force(
-        [prescribed = std::move(prescribed), coupled = options_.coupling.body_force](
-            int stage, double t, const VectorField& u, VectorField& f) {
-          if (!coupled) {
-            f = prescribed;
-            return;
-          }
-          coupled(stage, t, u, f);
-          for (std::size_t j = 0; j < f.size(); ++j) f[j] += prescribed[j];
-        });
+    prescribed_force_ =
+        std::make_shared<const VectorField>(forcing_density(local, options_.forcing));
+    solver_.set_body_force([prescribed = prescribed_force_, coupled = options_.coupling.body_force](
+                               int stage, double t, const VectorField& u, VectorField& f) {
+      if (!coupled) {
+        f = *prescribed;
+        return;
+      }
+      coupled(stage, t, u, f);
+      for (std::size_t j = 0; j < f.size(); ++j) f[j] += (*prescribed)[j];
+    });
   } else if (options_.coupling.body_force) {
     solver_.set_body_force(options_.coupling.body_force);
   }

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -176,6 +177,9 @@ class RunLoop {
   RunSummary run();
 
   const FlowState& state() const { return state_; }
+  // The prescribed body-force density ([forcing], RunOptions::forcing) at every local node;
+  // null without one. For the wall shear stress, whose wall nodes carry a share of it.
+  const VectorField* prescribed_force() const { return prescribed_force_.get(); }
   // The solver, read-only: its weights for wall forces (flow/wall_force.hpp).
   const ProjectionRK4& solver() const { return solver_; }
   // The boundary conditions, or null when every patch is periodic.
@@ -205,6 +209,7 @@ class RunLoop {
   RunHooks hooks_;
   TensorField grad_;
   VectorField omega_;
+  std::shared_ptr<const VectorField> prescribed_force_;  // shared with the solver's body force
   ScalarField q_;
   std::vector<double> scratch_, fluxes_;
   StabilityRates rates_;

@@ -107,7 +107,6 @@ struct Simulation::Parts {
   Clock::time_point t0 = Clock::now(), last_write = Clock::now();
   StepObserver observer;
   bool stop_requested = false;  // by the observer
-  flow::VectorField forcing;    // the prescribed body-force density, for the wall shear
 
   void write_fields(const std::string& stream, double time, const flow::FieldSet& set);
   void write_checkpoint(const flow::FlowState& state, std::int64_t step, double dt, bool stopping);
@@ -275,14 +274,9 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
                             series, p.local.comm);
     }
   }
-  if (!analysis_options.empty()) {
+  if (!analysis_options.empty())
     p.analysis.emplace(p.mesh, p.metrics, p.local, analysis_options, rho,
                        rho * run_options.projection.viscosity, p.run_path, p.in_place);
-    if (run_options.forcing.type != flow::ForcingSpec::Type::none) {
-      p.forcing = flow::forcing_density(p.local, run_options.forcing);
-      p.analysis->set_body_force(&p.forcing);
-    }
-  }
 
   std::int64_t start_step = 0;
   flow::FlowState start;
@@ -324,6 +318,8 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
     p.write_fields(stream, time, set);
   };
   p.loop.emplace(p.mesh, p.metrics, p.local, run_options, sink);
+  if (p.analysis && p.loop->prescribed_force())
+    p.analysis->set_body_force(p.loop->prescribed_force());
   if (p.checkpoint) {
     p.loop->resume(std::move(start), start_step, start_dp, start_nu_sgs, start_flux);
     p.les.resume(p.loop->subgrid_viscosity());

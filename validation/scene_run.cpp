@@ -56,6 +56,15 @@ std::filesystem::path case_scene(const std::string& case_name, const std::string
   return run::data_dir() / "validation" / case_name / file;
 }
 
+run::RunRequest level_request(const std::filesystem::path& run_dir) {
+  run::RunRequest request;
+  request.out = run_dir;
+  request.overwrite = true;
+  request.quiet = true;
+  request.print = false;
+  return request;
+}
+
 run::RunResult run_scene_file(const std::filesystem::path& scene_file,
                               const std::vector<std::string>& overrides,
                               const std::filesystem::path& run_dir, MPI_Comm comm,
@@ -63,12 +72,7 @@ run::RunResult run_scene_file(const std::filesystem::path& scene_file,
   std::optional<ScratchDir> scratch;
   if (run_dir.empty()) scratch.emplace(comm);
   const auto scene = io::load_scene(scene_file, overrides);
-  run::RunRequest request;
-  request.out = scratch ? scratch->path() : run_dir;
-  request.overwrite = true;
-  request.quiet = true;
-  request.print = false;
-  run::Simulation simulation(scene, request, comm);
+  run::Simulation simulation(scene, level_request(scratch ? scratch->path() : run_dir), comm);
   if (measure.at_start) measure.at_start(simulation);
   if (measure.observer) simulation.observe(measure.observer);
   auto result = simulation.run();

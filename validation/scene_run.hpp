@@ -17,6 +17,10 @@ namespace valsalva::validation {
 // validation/<case>/<file> in the source tree (the scenes ship with their cases).
 std::filesystem::path case_scene(const std::string& case_name, const std::string& file);
 
+// How a validation level runs: into `run_dir`, replacing an earlier level's results there,
+// nothing on stdout. For cases that keep the Simulation (run_scene_file does this for them).
+run::RunRequest level_request(const std::filesystem::path& run_dir);
+
 struct SceneRun {
   // What the case measures: called on every rank before the first step, ...
   std::function<void(const run::Simulation&)> at_start;

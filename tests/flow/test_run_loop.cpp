@@ -338,8 +338,8 @@ TEST_CASE("the 3D Taylor-Green initial state: closed-form pressure and a consist
   const flow::TaylorGreen3d tg{0.7, 0.4, 1.3};
   // lap p = -rho (du_i/dx_j)(du_j/dx_i) by central differences (h = 1e-3 L: error ~ 1e-7).
   const double h = 1e-3 * tg.length;
-  for (const Eigen::Vector3d x : {Eigen::Vector3d(0.1, 0.2, 0.3), Eigen::Vector3d(-0.5, 0.9, 0.05),
-                                  Eigen::Vector3d(1.1, -0.7, 0.6)}) {
+  for (const Eigen::Vector3d& x : {Eigen::Vector3d(0.1, 0.2, 0.3), Eigen::Vector3d(-0.5, 0.9, 0.05),
+                                   Eigen::Vector3d(1.1, -0.7, 0.6)}) {
     Eigen::Matrix3d grad;  // grad(i, j) = du_i/dx_j
     double lap = 0;
     for (int j = 0; j < 3; ++j) {

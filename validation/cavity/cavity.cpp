@@ -52,7 +52,7 @@
 #include "io/scene.hpp"
 #include "run/simulation.hpp"
 #include "validation/case.hpp"
-#include "validation/scene_run.hpp"  // case_scene
+#include "validation/scene_run.hpp"
 
 namespace valsalva::validation {
 
@@ -125,12 +125,7 @@ LevelResult run_level(const Context& ctx, int n, double re, double tolerance, do
                       fmt::format("flow.viscosity={:.17g}", lid * 1.0 / re),
                       fmt::format("time.steady_tolerance={:.17g}", tolerance * lid * lid),
                       fmt::format("time.end={:.17g}", t_max)});
-  run::RunRequest request;
-  request.out = ctx.out_dir / "runs" / tag;
-  request.overwrite = true;
-  request.quiet = true;
-  request.print = false;
-  run::Simulation sim(scene, request, ctx.comm);
+  run::Simulation sim(scene, level_request(ctx.out_dir / "runs" / tag), ctx.comm);
   if (start)
     sim.set_initial_velocity([&](const Eigen::Vector3d& x) {
       const auto uv = start->at(x.x(), x.y());

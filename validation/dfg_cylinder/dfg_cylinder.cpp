@@ -192,7 +192,7 @@
 #include "validation/case.hpp"
 #include "validation/dfg_cylinder/cylinder_channel_flow.hpp"
 #include "validation/dfg_cylinder/wall_diagnostics.hpp"
-#include "validation/scene_run.hpp"  // case_scene
+#include "validation/scene_run.hpp"
 
 namespace valsalva::validation {
 
@@ -282,12 +282,9 @@ LevelRun run_level(const Context& ctx, const Level& level, const Benchmark& b) {
        fmt::format("boundary.inlet.flow_rate={:.17g}", b.u_mean * kHeight * thickness),
        fmt::format("time.stability_fraction={:.17g}", ctx.option_real("sigma", kSigma)),
        fmt::format("time.end={:.17g}", b.t_end)});
-  run::RunRequest request;
-  request.out = ctx.out_dir / "runs" / fmt::format("{}_h{:g}", b.name, level.size_near);
-  request.overwrite = true;
-  request.quiet = true;
-  request.print = false;
-  run::Simulation sim(scene, request, ctx.comm);
+  run::Simulation sim(
+      scene, level_request(ctx.out_dir / "runs" / fmt::format("{}_h{:g}", b.name, level.size_near)),
+      ctx.comm);
   const auto& mesh = sim.mesh();
   const auto& local = sim.local();
   // Start: the inflow profile everywhere, plus (2D-2) a cross-flow bump behind the cylinder

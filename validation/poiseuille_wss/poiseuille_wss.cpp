@@ -19,7 +19,7 @@
 #include "io/scene.hpp"
 #include "run/simulation.hpp"
 #include "validation/case.hpp"
-#include "validation/scene_run.hpp"  // case_scene
+#include "validation/scene_run.hpp"
 
 namespace valsalva::validation {
 
@@ -42,12 +42,7 @@ void run_level(const Context& ctx, Level& level) {
   const auto scene =
       io::load_scene(case_scene("poiseuille_wss", "poiseuille_wss.toml"),
                      {fmt::format("mesh.pipe.size={:.17g}", kRadius / level.resolution)});
-  run::RunRequest request;
-  request.out = dir;
-  request.overwrite = true;
-  request.quiet = true;
-  request.print = false;
-  run::Simulation sim(scene, request, ctx.comm);
+  run::Simulation sim(scene, level_request(dir), ctx.comm);
   sim.set_initial_velocity([&](const Eigen::Vector3d& x) {
     const double s = std::min(1.0, std::hypot(x.x(), x.y()) / kRadius);
     return Eigen::Vector3d(0, 0, u_max * (1 - s * s));

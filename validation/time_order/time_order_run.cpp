@@ -29,12 +29,7 @@ TimeOrderRun run_time_order(const TimeOrderRunSpec& spec, const std::filesystem:
        fmt::format("time.scheme=\"{}\"", flow::time_scheme_name(spec.variant.scheme)),
        fmt::format("time.project_stages={}", spec.variant.project_stages ? "true" : "false"),
        fmt::format("initial.taylor_green.velocity={:.17g}", spec.velocity)});
-  run::RunRequest request;
-  request.out = run_dir;
-  request.overwrite = true;
-  request.quiet = true;
-  request.print = false;
-  run::Simulation sim(scene, request, comm);
+  run::Simulation sim(scene, level_request(run_dir), comm);
   const double cpu0 = bench::cpu_seconds();
   const auto result = sim.run();
   const auto& local = sim.local();
