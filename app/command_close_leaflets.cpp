@@ -202,6 +202,10 @@ CLI::App* add_close_leaflets(CLI::App& cli, std::function<int()>& action) {
   c->add_flag("!--no-contact", o->closing.contact, "Let the leaflets pass through each other");
   c->add_option("--penalty-factor", o->closing.contact_options.penalty_factor,
                 "Contact penalty eps = factor * E / h (default 100)");
+  c->add_option("--contact-smoothing", o->closing.contact_options.smoothing,
+                "Width of the penalty's C1 smoothing near zero gap, as a fraction of the face size "
+                "(default 0: none)")
+      ->check(CLI::Range(0.0, 0.999));
   c->add_flag("--overwrite", o->overwrite, "Replace CLOSED.msh and its report");
   c->add_flag("--verbose", o->closing.verbose, "Print the Newton iterations");
   action = [o] { return run(*o); };

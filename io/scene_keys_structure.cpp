@@ -189,6 +189,16 @@ void declare_structure_keys(Schema& s) {
       .above(0)
       .unit_of("h")
       .doc("Only closest points within this distance (above or below a face) are in contact");
+  s.real(k + ".contact_smoothing")
+      .def(0.0)
+      .at_least(0)
+      .below(1)
+      .unit_of("h")
+      .doc(
+          "Width of the C1 smoothing of the penalty near zero gap (a quadratic branch, "
+          "Wriggers 2006 sect. 10.3), so that Newton and the coupling see a differentiable "
+          "force where points enter contact; adds at most half this width of penetration; 0: "
+          "the plain penalty");
   s.real(k + ".contact_wall_radius")
       .def(0.0)
       .at_least(0)
@@ -329,6 +339,7 @@ void read_contact(const Scene& scene, const std::string& k, const structure::Sol
   }
   body.contact_options.penalty_factor = scene.get<double>(k + ".contact_penalty");
   body.contact_options.search_factor = scene.get<double>(k + ".contact_search");
+  body.contact_options.smoothing = scene.get<double>(k + ".contact_smoothing");
   body.contact_options.formulation =
       scene.get<std::string>(k + ".contact_formulation") == "two_half_pass"
           ? structure::ContactOptions::Formulation::two_half_pass

@@ -122,6 +122,10 @@ Contact::Contact(const SolidMesh& mesh, const Material& material, std::vector<Co
   if (!(options_.search_factor > 0))
     throw std::invalid_argument(
         fmt::format("contact: search_factor {} must be > 0", options_.search_factor));
+  if (!(options_.smoothing >= 0 && options_.smoothing < 1))
+    throw std::invalid_argument(
+        fmt::format("contact: smoothing {} must be in [0, 1) (a fraction of the face size)",
+                    options_.smoothing));
   if (options_.quadrature < 0 || options_.quadrature > 4)
     throw std::invalid_argument(
         fmt::format("contact: quadrature {} must be 0 (automatic) or 1..4 points per direction",
@@ -220,8 +224,8 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
 
   // Half pass: the slave faces S against the master faces M.
   auto half_pass = [&](const std::vector<FaceRef>& S, const std::vector<FaceRef>& M, double eps,
-                       double search, ContactSurfaceSummary& s, HalfTotals& half, int surface,
-                       int h) {
+                       double width, double search, ContactSurfaceSummary& s, HalfTotals& half,
+                       int surface, int h) {
     std::vector<Eigen::Vector3d> centres(M.size()), lo(M.size()), hi(M.size());
     std::vector<std::array<V3<double>, NF>> PM(M.size());
     std::vector<std::array<int, NF>> NM(M.size());
@@ -272,12 +276,12 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
         double pressure = 0;
         if (pr.gap < 0 && f) {
           if (K) {
-            const auto pf =
-                face_point_force<AD, NF>(fs, sp, seed(PS, 0), fm, seed(PM[best], 3 * NF), pr, eps);
+            const auto pf = face_point_force<AD, NF>(fs, sp, seed(PS, 0), fm,
+                                                     seed(PM[best], 3 * NF), pr, eps, width);
             scatter_ad(pf, ns, &NM[best]);
             pressure = pf.pressure.value();
           } else {
-            const auto pf = face_point_force<double, NF>(fs, sp, PS, fm, PM[best], pr, eps);
+            const auto pf = face_point_force<double, NF>(fs, sp, PS, fm, PM[best], pr, eps, width);
             const double w = two_pass ? 0.5 : 1.0;
             for (int a = 0; a < NF; ++a)
               for (int i = 0; i < 3; ++i) {
@@ -287,7 +291,7 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
             pressure = pf.pressure;
           }
         } else if (pr.gap < 0) {
-          pressure = -eps * pr.gap;
+          pressure = penalty_pressure(pr.gap, eps, width);
         }
         record(s, half, surface, h, fr, ns, xs, M[best], pr.gap, pressure, da);
       }
@@ -301,9 +305,10 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
     s.h = h_[p];
     s.penalty = options_.penalty_factor * E / s.h;
     const double search = options_.search_factor * s.h;
+    const double width = options_.smoothing * s.h;
     HalfTotals h0, h1;
-    half_pass(pairs_[p].a, pairs_[p].b, s.penalty, search, s, h0, static_cast<int>(p), 0);
-    half_pass(pairs_[p].b, pairs_[p].a, s.penalty, search, s, h1, static_cast<int>(p), 1);
+    half_pass(pairs_[p].a, pairs_[p].b, s.penalty, width, search, s, h0, static_cast<int>(p), 0);
+    half_pass(pairs_[p].b, pairs_[p].a, s.penalty, width, search, s, h1, static_cast<int>(p), 1);
     s.force = 0.5 * (h0.force + h1.force);
     s.area = 0.5 * (h0.area + h1.area);
     summary.surfaces.push_back(s);
@@ -333,13 +338,15 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
         slave_geometry<double, NF>(fs, sp, PS, xs, da);
         const double gap = obstacle_gap(shape, xs, n);
         if (std::abs(gap) > search && gap > 0) continue;
-        double pressure = gap < 0 ? -s.penalty * gap : 0;
+        const double width = options_.smoothing * s.h;
+        double pressure = penalty_pressure(gap, s.penalty, width);
         if (gap < 0 && f) {
           if (K) {
-            const auto pf = obstacle_point_force<AD, NF>(fs, sp, seed(PS, 0), shape, s.penalty);
+            const auto pf =
+                obstacle_point_force<AD, NF>(fs, sp, seed(PS, 0), shape, s.penalty, width);
             scatter_ad(pf, ns, nullptr);
           } else {
-            const auto pf = obstacle_point_force<double, NF>(fs, sp, PS, shape, s.penalty);
+            const auto pf = obstacle_point_force<double, NF>(fs, sp, PS, shape, s.penalty, width);
             for (int a = 0; a < NF; ++a)
               for (int i = 0; i < 3; ++i) (*f)(i, ns[a]) += pf.f[a][i];
           }

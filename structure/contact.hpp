@@ -65,6 +65,10 @@ struct ContactOptions {
   // Only closest points within search_factor * h (above or below the surface) count; deeper
   // penetration is not detected (keep load steps small enough).
   double search_factor = 1.0;
+  // Width of the C1 smoothing of the penalty near g = 0, as a fraction of the face size h
+  // (contact_kernel.hpp penalty_pressure); 0: the plain penalty eps <-g>. Smoothing lets Newton
+  // converge where points keep entering and leaving contact (coapting leaflets).
+  double smoothing = 0;
   // Gauss points per direction on each slave face; 0: order + 2 (as pressure loads).
   int quadrature = 0;
   // two_half_pass (the header): passes the patch test; the two bodies' forces are equal and

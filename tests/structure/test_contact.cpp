@@ -10,6 +10,7 @@
 #include <string>
 
 #include "structure/contact.hpp"
+#include "structure/contact_kernel.hpp"
 #include "structure/mesh_generators.hpp"
 
 using namespace valsalva::structure;
@@ -173,6 +174,52 @@ TEST_CASE("contact tangent equals minus the derivative of the force (central dif
       CHECK(err < 1e-8);
     }
   }
+}
+
+TEST_CASE("smoothed penalty: C1 law, the plain law shifted by w / 2 below -w, exact tangent") {
+  using contact_detail::penalty_pressure;
+  const double eps = 7.0, w = 0.01;
+  CHECK(penalty_pressure(0.001, eps, w) == 0.0);
+  CHECK(penalty_pressure(0.0, eps, w) == 0.0);
+  // Value and slope continuous at g = 0 and g = -w (one-sided differences, step 1e-9 of w).
+  const double d = 1e-11;
+  for (double g0 : {0.0, -w}) {
+    CAPTURE(g0);
+    const double below = penalty_pressure(g0 - d, eps, w), above = penalty_pressure(g0 + d, eps, w);
+    // A slope of at most eps changes p by 2 eps d over the interval; a jump would be ~eps w.
+    CHECK(std::abs(above - below) <= 2.000001 * eps * d);
+    const double slope_below =
+        (penalty_pressure(g0 - d, eps, w) - penalty_pressure(g0 - 2 * d, eps, w)) / d;
+    const double slope_above =
+        (penalty_pressure(g0 + 2 * d, eps, w) - penalty_pressure(g0 + d, eps, w)) / d;
+    CHECK(std::abs(slope_above - slope_below) < 1e-3 * eps);
+  }
+  CHECK(penalty_pressure(-3 * w, eps, w) == doctest::Approx(eps * 2.5 * w).epsilon(1e-14));
+  CHECK(penalty_pressure(-3 * w, eps, 0.0) == doctest::Approx(eps * 3 * w).epsilon(1e-14));
+
+  // Through Contact: penetrations of 0.01-0.03 against a band of 0.05 h (~0.02) put points on
+  // both branches; the automatic-differentiation tangent stays exact.
+  const SolidMesh m = two_blocks(HexOrder::q2, 0.0);
+  ContactOptions opt;
+  opt.smoothing = 0.05;
+  const Contact c(m, *kMaterial, {blocks_pair(m)}, {}, opt);
+  const Eigen::Matrix3Xd x = perturbed(m, 3);
+  const double width = opt.smoothing * c.summary(x).surfaces[0].h;
+  int in_band = 0, deep = 0;
+  for (const auto& p : c.points(x)) {
+    if (p.gap < 0 && p.gap > -width) ++in_band;
+    if (p.gap <= -width) ++deep;
+  }
+  MESSAGE("points in the band " << in_band << ", deeper " << deep);
+  REQUIRE(in_band > 0);
+  REQUIRE(deep > 0);
+  const double err = tangent_error(c, x, 1e-6);
+  MESSAGE("smoothed pair tangent relative error " << err);
+  CHECK(err < 1e-8);
+  ContactOptions bad;
+  bad.smoothing = -0.1;
+  CHECK_THROWS_WITH_AS(Contact(m, *kMaterial, {blocks_pair(m)}, {}, bad),
+                       doctest::Contains("smoothing"), std::invalid_argument);
 }
 
 TEST_CASE("obstacle force is minus the gradient of the penalty energy along translations") {
