@@ -104,9 +104,6 @@ ClosingResult close_leaflets(const structure::SolidMesh& mesh, const structure::
     // Positive pressure pushes into the solid: on the aortic face, towards the ventricle side.
     problem.pressures.push_back({mesh.surface_set(l.aortic_face), options.pressure});
   }
-  // The free-edge strip closes each leaflet's contact surface: without it a point of one leaflet
-  // sliding past another's free edge leaves the face it was pressed into, and its penalty force
-  // drops to zero in one step (a jump of the residual that stalls Newton).
   if (options.contact)
     for (std::size_t a = 0; a < r.leaflets.size(); ++a)
       for (std::size_t b = a + 1; b < r.leaflets.size(); ++b) {
@@ -114,9 +111,8 @@ ClosingResult close_leaflets(const structure::SolidMesh& mesh, const structure::
         const auto& lb = r.leaflets[b];
         problem.contact.push_back(
             {la.name + "-" + lb.name,
-             structure::contact_surface(mesh, {la.aortic_face, la.ventricular_face, la.free_edge}),
-             structure::contact_surface(mesh,
-                                        {lb.aortic_face, lb.ventricular_face, lb.free_edge})});
+             structure::contact_surface(mesh, {la.aortic_face, la.ventricular_face}),
+             structure::contact_surface(mesh, {lb.aortic_face, lb.ventricular_face})});
       }
   problem.contact_options = options.contact_options;
   structure::NewtonOptions newton;
