@@ -1,6 +1,7 @@
 // Lumped outlets and their implicit coupling to the projection; see lumped_outlets.hpp.
 #include "flow/lumped_outlets.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -79,6 +80,7 @@ LumpedOutlets::LumpedOutlets(const LocalMesh& mesh, BoundaryConditions& bc, cons
   system_.setZero(n, n);
   rhs_.setZero(n);
   delta_.setZero(n);
+  used_.assign(n, 0.0);
 }
 
 void LumpedOutlets::start(const VectorField& velocity, ScalarField& pressure) {
@@ -145,6 +147,7 @@ void LumpedOutlets::couple(VectorField& u, EdgeField& flux, ScalarField& dp,
     system_(j, j) += 1;
   }
   delta_ = system_.partialPivLu().solve(rhs_);
+  for (int j = 0; j < n; ++j) used_[j] = states_[j].pressure + states_[j].increment + delta_(j);
   for (int k = 0; k < n; ++k) {
     const double d = delta_(k);
     const auto& phi = phi_[k];
@@ -159,10 +162,12 @@ void LumpedOutlets::couple(VectorField& u, EdgeField& flux, ScalarField& dp,
 
 void LumpedOutlets::finish(const VectorField& velocity, ScalarField& pressure, double dt) {
   const auto q = bc_.patch_fluxes(velocity);
+  mismatch_ = 0;
   for (int k = 0; k < count(); ++k) {
     auto& s = states_[k];
     const double q_next = q[patches_[k]];
     const double p_next = steps_[k].offset + steps_[k].slope * q_next;
+    mismatch_ = std::max(mismatch_, std::abs(p_next - used_[k]));
     s.distal = distal_after(spec(k), s, q_next, dt);
     s.increment = p_next - s.pressure;
     s.pressure = p_next;

@@ -103,6 +103,9 @@ class LumpedOutlets {
   // diag(slope) M (studies).
   const Eigen::MatrixXd& response() const { return response_; }
   const std::vector<OutletStep>& steps() const { return steps_; }
+  // max_j |P_j the projection used - P_j of the law at the end-of-step flux| of the last step,
+  // Pa: zero to round-off when flux_response() predicts impose() exactly (tests).
+  double last_mismatch() const { return mismatch_; }
 
  private:
   const LocalMesh& mesh_;
@@ -114,6 +117,8 @@ class LumpedOutlets {
   std::vector<OutletStep> steps_;
   Eigen::MatrixXd response_, system_;
   Eigen::VectorXd rhs_, delta_;
+  std::vector<double> used_;  // P^n + guess + delta of the last step
+  double mismatch_ = 0;
 };
 
 }  // namespace valsalva::flow

@@ -27,11 +27,11 @@
 // outlets (the caller puts BoundaryConditions::pressure_dirichlet() into poisson.dirichlet).
 // Periodic patches carry no boundary faces. Lumped outlets (resistance, RCR) are Dirichlet
 // patches whose pressure is solved with their flux at the end of each step
-// (flow/lumped_outlets.hpp). Face flux (flow/face_flux.hpp): the projection also corrects the
-// dual-face volume flux F with the Poisson matrix's own compact gradient, so that sum_k F_jk + B_j
-// = 0 at every node to the Poisson tolerance; F is part of the state (face_flux(), saved in
-// checkpoints). The convective term of stage i is the skew-symmetric form
-// (flow/convection_scheme.hpp) carried by
+// (flow/lumped_outlets.hpp).
+// Face flux (flow/face_flux.hpp): the projection also corrects the dual-face volume flux F with
+// the Poisson matrix's own compact gradient, so that sum_k F_jk + B_j = 0 at every node to the
+// Poisson tolerance; F is part of the state (face_flux(), saved in checkpoints). The convective
+// term of stage i is the skew-symmetric form (flow/convection_scheme.hpp) carried by
 //   F_i = P_c(w_{i-1}) + [F^n - P_p(v^n)],
 // P_p the projection divergence's face value, P_c the scheme's ((u_j + u_k)/2 for central2,
 // the Hermite value for central4): F^n at the first stage when P_c = P_p, following the stage

@@ -101,14 +101,17 @@ void declare_boundary_keys(Schema& s) {
       .above(0)
       .unit_of("Pa s/m3")
       .doc(
-          "resistance_outlet: R of p = p0 + R Q; rcr_outlet: the proximal (characteristic) "
-          "resistance R_p (systemic arteries: about 1e8 Pa s/m3 = 0.75 mmHg s/mL in total)");
+          "resistance_outlet: R of p = p0 + R Q (the whole systemic circulation: about 1.3e8 "
+          "Pa s/m3 = 1 mmHg s/mL); rcr_outlet: the proximal (characteristic) resistance R_p, "
+          "typically 5-10 % of R_p + R_d");
   s.when(b + ".resistance", b + ".type", {"resistance_outlet", "rcr_outlet"});
   s.real(b + ".distal_resistance")
       .required()
       .above(0)
       .unit_of("Pa s/m3")
-      .doc("rcr_outlet: distal (peripheral) resistance R_d");
+      .doc(
+          "rcr_outlet: distal (peripheral) resistance R_d; R_p + R_d is the outlet's steady "
+          "resistance");
   s.when(b + ".distal_resistance", b + ".type", {"rcr_outlet"});
   s.real(b + ".capacitance")
       .required()
