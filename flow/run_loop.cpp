@@ -10,6 +10,7 @@
 #include <limits>
 #include <utility>
 
+#include "flow/outlet_log.hpp"
 #include "flow/poisson_weights.hpp"
 
 namespace valsalva::flow {
@@ -290,6 +291,11 @@ RunSummary RunLoop::run() {
       }
     csv << "\n";
   }
+  std::optional<OutletLog> outlet_log;
+  if (const auto* lumped = solver_.lumped_outlets()) {
+    outlet_log.emplace(out.dir, *lumped, local_.patch_names, root, resumed_);
+    if (!resumed_) outlet_log->write(step_, state_.time);
+  }
   const bool fields = out.interval > 0;
   if (fields) write_fields("fields", state_);
   const double eps = 1e-12 * std::max(t.end, std::numeric_limits<double>::min());
@@ -346,6 +352,7 @@ RunSummary RunLoop::run() {
       summary.max_mass_imbalance = std::max(summary.max_mass_imbalance, std::abs(imbalance));
     }
 
+    if (outlet_log) outlet_log->write(step_, state_.time);
     if (t.steady_tolerance > 0) {
       double change = 0;
       for (int j = 0; j < local_.num_owned; ++j)

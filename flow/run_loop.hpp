@@ -6,7 +6,8 @@
 // io::FieldOutput). Every non-periodic boundary patch needs a condition (RunOptions::boundary,
 // flow/boundary_conditions.hpp); the log gains the flux through each such patch and the global
 // mass imbalance (the sum of all boundary fluxes), and for each lumped outlet its pressure
-// (pressure_<patch>) and, for an RCR, its distal pressure (distal_pressure_<patch>).
+// (pressure_<patch>) and, for an RCR, its distal pressure (distal_pressure_<patch>); the same
+// with the flux go into outlets.csv every step (flow/outlet_log.hpp).
 #pragma once
 
 #include <cstdint>

@@ -31,8 +31,8 @@ void declare_boundary_keys(Schema& s) {
           "p = pressure + resistance Q; rcr_outlet: three-element Windkessel p = p_d + "
           "resistance Q, capacitance dp_d/dt = Q - p_d / distal_resistance (Q the outward patch "
           "flux; both lumped outlets are pressure outlets coupled implicitly through the "
-          "pressure equation, flow/lumped_outlets.hpp, and log pressure_<patch> and "
-          "distal_pressure_<patch> in log.csv)");
+          "pressure equation, flow/lumped_outlets.hpp; flux, pressure and distal pressure in "
+          "outlets.csv every step and in log.csv)");
   s.real3(b + ".velocity")
       .def(std::array{0.0, 0.0, 0.0})
       .unit_of("m/s")

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -273,6 +274,9 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
       if (!analysis_options.wall_shear.patches.empty()) series.push_back("wall_shear_history.csv");
       if (!immersed_setup.empty()) series.push_back("structures.csv");
       if (valve_options) series.push_back("valve.csv");
+      if (std::any_of(boundary.begin(), boundary.end(),
+                      [](const flow::BoundarySpec& b) { return flow::lumped_type(b.type); }))
+        series.push_back("outlets.csv");
       io::continue_in_place(p.run_path, scene, in->info().step, in->info().time, in->info().dt,
                             series, p.local.comm);
     }

@@ -1,7 +1,8 @@
 #!/bin/bash
 # Lumped outlets across a restart: restart_rcr.toml (two RCR outlets) in one go at NP_FULL ranks
 # vs restart_rcr_half.toml (8 steps, checkpoint) at NP_HALF + `--restart latest` at NP_FULL: the
-# outlet pressures, distal pressures and fluxes of log.csv and the final fields agree to TOL
+# outlet pressures, distal pressures and fluxes of log.csv and outlets.csv and the final fields
+# agree to TOL
 # (0 = identical text and bitwise fields). Usage: restart_rcr_test.sh APP MPIEXEC NP_HALF NP_FULL TOL
 set -euo pipefail
 app=$1 mpiexec=$2 np_half=$3 np_full=$4 tol=$5
@@ -29,4 +30,6 @@ for c in cols:
 print(f"log.csv: {len(a)} rows, {len(cols)} lumped-outlet columns, max relative diff {worst:.3e}")
 assert worst <= tol
 PY
+# outlets.csv (every step, 17 digits) was cut back to the checkpoint and continued.
+/usr/bin/python3 "$here/compare_csv.py" full/outlets.csv part/outlets.csv "$tol"
 /usr/bin/python3 "$here/compare_fields.py" full/fields_000002.h5 part/fields_restart_000000008_000001.h5 "$tol" velocity pressure

@@ -22,7 +22,7 @@ for ax, f in zip(axes, freqs):
     wt = float(f["omega_tau"])
     w = wt / TAU
     z = RP + RD / complex(1, wt)
-    rows = list(csv.DictReader(open(out / "runs" / f"pipe_wtau_{f['omega_tau']}" / "log.csv")))
+    rows = list(csv.DictReader(open(out / "runs" / f"pipe_wtau_{f['omega_tau']}" / "outlets.csv")))[1:]
     t = [float(r["time"]) for r in rows]
     p = [float(r["pressure_outlet"]) for r in rows]
     exact = [(RP + RD) * Q0 + QA * abs(z) * math.sin(w * s + cmath.phase(z)) for s in t]
