@@ -160,6 +160,47 @@ TEST_CASE("two RCR outlets: the projection uses the law's end-of-step pressure, 
   CHECK(flux[box.patch("xmax")] > 0);
 }
 
+TEST_CASE("a resistance outlet next to a fixed pressure outlet: shared nodes keep the fixed one") {
+  Box box(false);
+  auto o = options(0.2);
+  auto outlet = flow::boundary_spec("ymax", flow::BoundaryType::resistance_outlet);
+  outlet.pressure = 5, outlet.resistance = 20;
+  auto fixed = flow::boundary_spec("xmax", flow::BoundaryType::pressure_outlet);
+  fixed.pressure = -3;
+  o.boundary = {inlet(0.6, 0.4),
+                fixed,
+                outlet,
+                flow::boundary_spec("ymin", flow::BoundaryType::wall),
+                flow::boundary_spec("zmin", flow::BoundaryType::wall),
+                flow::boundary_spec("zmax", flow::BoundaryType::wall)};
+  flow::RunLoop loop(box.mesh, box.metrics, box.local, o);
+  double worst = 0;
+  flow::RunHooks hooks;
+  hooks.after_step = [&](const flow::FlowState&, std::int64_t) {
+    worst = std::max(worst, loop.solver().lumped_outlets()->last_mismatch());
+  };
+  loop.set_hooks(hooks);
+  loop.run();
+  const auto& s = loop.state();
+  const auto& lumped = loop.solver().lumped_outlets()->state(0);
+  const auto flux = loop.boundary()->patch_fluxes(s.velocity);
+  // Nodes on both patches (the edge x = 3, y = 1) hold -3 Pa, the rest of ymax P = 5 + 20 Q.
+  int shared = 0, own = 0, wrong = 0;
+  for (int j = 0; j < box.local.num_owned; ++j) {
+    const auto& x = box.local.position[j];
+    if (std::abs(x.y() - 1) > 1e-12) continue;
+    const bool corner = std::abs(x.x() - 3) < 1e-12;
+    (corner ? shared : own) += 1;
+    wrong += s.pressure[j] != (corner ? -3.0 : lumped.pressure);
+  }
+  MESSAGE("P " << lumped.pressure << " Q " << flux[box.patch("ymax")] << " fixed outlet Q "
+               << flux[box.patch("xmax")] << ", mismatch " << worst);
+  CHECK(box.local.comm.sum(static_cast<std::int64_t>(shared)) == 4 * 1);  // 4 nodes along z
+  CHECK(box.local.comm.sum(static_cast<std::int64_t>(wrong)) == 0);
+  CHECK(lumped.pressure == doctest::Approx(5 + 20 * flux[box.patch("ymax")]).epsilon(1e-14));
+  CHECK(worst < 1e-10 * std::abs(lumped.pressure));
+}
+
 TEST_CASE("lumped outlets refuse non-positive resistance and capacitance") {
   Box box(true);
   for (int bad = 0; bad < 3; ++bad) {
