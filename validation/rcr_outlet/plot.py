@@ -35,7 +35,7 @@ for ax, f in zip(axes, freqs):
 sweep = list(csv.DictReader(open(out / "stability.csv")))
 ax = axes[-1]
 for c in sorted({float(s["capacitance"]) for s in sweep}):
-    pts = [s for s in sweep if float(s["capacitance"]) == c]
+    pts = [s for s in sweep if float(s["capacitance"]) == c and s["cells"] == "hexa"]
     ax.loglog([float(s["distal_resistance"]) for s in pts],
               [max(float(s["roughness"]), 1e-12) for s in pts], "o-", label=f"C = {c:.0e}")
 ax.axhline(1e-2, color="k", ls=":", label="tolerance")
