@@ -7,6 +7,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 #include <numeric>
 #include <stdexcept>
@@ -97,8 +98,18 @@ BoundaryConditions::BoundaryConditions(const LocalMesh& mesh, std::vector<Bounda
     P.radius = radius[p];
     if (P.spec < 0) continue;
     const auto& spec = specs_[P.spec];
-    has_pressure_ |= spec.type == BoundaryType::pressure_outlet;
+    has_pressure_ |= pressure_type(spec.type);
     has_convective_ |= spec.type == BoundaryType::convective_outlet;
+    if (lumped_type(spec.type)) {
+      const bool rcr = spec.type == BoundaryType::rcr_outlet;
+      for (const auto& [name, value] :
+           {std::pair{"resistance", spec.resistance},
+            std::pair{"distal_resistance", rcr ? spec.distal_resistance : 1.0},
+            std::pair{"capacitance", rcr ? spec.capacitance : 1.0}})
+        if (!(value > 0) || !std::isfinite(value))
+          throw std::invalid_argument(fmt::format(
+              "outlet '{}': {} = {} must be a positive finite number", spec.patch, name, value));
+    }
     if (spec.type != BoundaryType::inlet) continue;
     if (spec.profile == InletProfile::womersley) {
       if (spec.flow_rate.kind != Waveform::Kind::sine)
@@ -170,6 +181,22 @@ BoundaryConditions::BoundaryConditions(const LocalMesh& mesh, std::vector<Bounda
   slip_.assign(nodes_.size(), 0);
   outlet_area_.assign(nodes_.size(), Eigen::Vector3d::Zero());
   held_.assign(nodes_.size(), Eigen::Vector3d::Zero());
+  response_.assign(nodes_.size(), Eigen::Vector3d::Zero());
+  outlet_pressure_.assign(patches_.size(), 0.0);
+  // The pressure outlet each Dirichlet node takes its value from: fixed before lumped, then the
+  // lowest patch index (the same on every rank: ghosts carry their boundary entries).
+  pressure_owner_.assign(mesh.num_local(), -1);
+  auto precedence = [&](int patch) {
+    return specs_[patches_[patch].spec].type == BoundaryType::pressure_outlet ? 2 : 1;
+  };
+  for (const auto& b : mesh.boundary) {
+    const auto& P = patches_[b.patch];
+    if (P.spec < 0 || !pressure_type(specs_[P.spec].type)) continue;
+    int& owner = pressure_owner_[b.node];
+    if (owner < 0 || precedence(b.patch) > precedence(owner) ||
+        (precedence(b.patch) == precedence(owner) && b.patch < owner))
+      owner = b.patch;
+  }
   update_roles(0.0);
 }
 
@@ -200,6 +227,8 @@ void BoundaryConditions::update_roles(double t) {
         P.role = Role::slip;
         break;
       case BoundaryType::pressure_outlet:
+      case BoundaryType::resistance_outlet:
+      case BoundaryType::rcr_outlet:
         P.role = Role::pressure;
         break;
       case BoundaryType::inlet:
@@ -280,10 +309,7 @@ double BoundaryConditions::profile(const Patch& P, int patch, const Eigen::Vecto
 
 std::vector<char> BoundaryConditions::pressure_dirichlet() const {
   std::vector<char> fixed(mesh_.num_local(), 0);
-  for (const auto& b : mesh_.boundary) {
-    const auto& P = patches_[b.patch];
-    if (P.spec >= 0 && specs_[P.spec].type == BoundaryType::pressure_outlet) fixed[b.node] = 1;
-  }
+  for (int j = 0; j < mesh_.num_local(); ++j) fixed[j] = pressure_owner_[j] >= 0;
   return fixed;
 }
 
@@ -292,6 +318,11 @@ void BoundaryConditions::impose_pressure(ScalarField& p) const {
     const auto& P = patches_[b.patch];
     if (P.spec >= 0 && specs_[P.spec].type == BoundaryType::pressure_outlet)
       p[b.node] = specs_[P.spec].pressure;
+  }
+  for (int j = 0; j < mesh_.num_local(); ++j) {
+    const int owner = pressure_owner_[j];
+    if (owner >= 0 && lumped_type(specs_[patches_[owner].spec].type))
+      p[j] = outlet_pressure_[owner];
   }
 }
 
@@ -373,20 +404,7 @@ void BoundaryConditions::impose(VectorField& u, double t) {
       case Role::none:
         break;
     }
-    if (slip_[k]) {
-      // Remove the normal of every slip patch at the node (Gram-Schmidt).
-      Eigen::Vector3d basis[3];
-      int m = 0;
-      for (int i = entry_offsets_[k]; i < entry_offsets_[k + 1] && m < 3; ++i) {
-        const auto& b = mesh_.boundary[entries_[i]];
-        if (patches_[b.patch].role != Role::slip) continue;
-        Eigen::Vector3d n = b.area;
-        for (int q = 0; q < m; ++q) n -= n.dot(basis[q]) * basis[q];
-        if (n.norm() <= 1e-12 * b.area.norm()) continue;
-        basis[m++] = n.normalized();
-      }
-      for (int q = 0; q < m; ++q) u[j] -= u[j].dot(basis[q]) * basis[q];
-    }
+    if (slip_[k]) remove_slip_normals(k, u[j]);
   }
   // Mass correction on the free outflow nodes.
   double flux = 0, weight = 0;
@@ -405,11 +423,26 @@ void BoundaryConditions::impose(VectorField& u, double t) {
     if (free_outflow(k)) u[nodes_[k]] += c * outlet_area_[k];
 }
 
+void BoundaryConditions::remove_slip_normals(std::size_t k, Eigen::Vector3d& u) const {
+  // Remove the normal of every slip patch at the node (Gram-Schmidt).
+  Eigen::Vector3d basis[3];
+  int m = 0;
+  for (int i = entry_offsets_[k]; i < entry_offsets_[k + 1] && m < 3; ++i) {
+    const auto& b = mesh_.boundary[entries_[i]];
+    if (patches_[b.patch].role != Role::slip) continue;
+    Eigen::Vector3d n = b.area;
+    for (int q = 0; q < m; ++q) n -= n.dot(basis[q]) * basis[q];
+    if (n.norm() <= 1e-12 * b.area.norm()) continue;
+    basis[m++] = n.normalized();
+  }
+  for (int q = 0; q < m; ++q) u -= u.dot(basis[q]) * basis[q];
+}
+
 void BoundaryConditions::stabilize_backflow(const VectorField& u, VectorField& rhs) const {
   if (!has_pressure_) return;
   for (const auto& b : mesh_.boundary) {
     const auto& P = patches_[b.patch];
-    if (P.spec < 0 || specs_[P.spec].type != BoundaryType::pressure_outlet) continue;
+    if (P.spec < 0 || !pressure_type(specs_[P.spec].type)) continue;
     const double flux = u[b.node].dot(b.area);
     if (flux < 0) rhs[b.node] += flux / mesh_.volume[b.node] * u[b.node];
   }
@@ -421,7 +454,7 @@ void BoundaryConditions::drop_outlet_viscous_flux(const TensorField& grad, doubl
   if (!has_pressure_) return;
   for (const auto& b : mesh_.boundary) {
     const auto& P = patches_[b.patch];
-    if (P.spec < 0 || specs_[P.spec].type != BoundaryType::pressure_outlet) continue;
+    if (P.spec < 0 || !pressure_type(specs_[P.spec].type)) continue;
     const auto& g = grad[b.node];
     const Eigen::Vector3d flux =
         nu_sgs.empty() ? Eigen::Vector3d(nu * (g * b.area))

@@ -11,6 +11,11 @@
 //   pressure_outlet    p = p_out (Dirichlet rows dp = 0 in the Poisson matrix); u from the
 //                      momentum equation (free), with backflow stabilisation where u . n < 0
 //                      (stabilize_backflow)
+//   resistance_outlet  p = p0 + R Q, Q the patch's outward flux (a lumped outlet)
+//   rcr_outlet         three-element Windkessel p = p_d + R_p Q, C dp_d/dt = Q - p_d / R_d
+//                      (a lumped outlet). Lumped outlets are pressure outlets whose uniform
+//                      pressure is coupled implicitly to their flux at the end of each step
+//                      (flow/lumped_outlets.hpp); set_outlet_pressure() holds their value.
 // Role exchange (pulse-duplicator inflow, see ../shared/design/architecture.md): an inlet with a
 // partner (swap_with, a convective outlet) imposes Q(t) while Q >= 0; while Q < 0 the partner
 // imposes |Q| inward with a flat profile and the inlet becomes a convective outlet.
@@ -42,11 +47,27 @@
 
 namespace valsalva::flow {
 
-enum class BoundaryType { wall, slip, inlet, convective_outlet, pressure_outlet };
+enum class BoundaryType {
+  wall,
+  slip,
+  inlet,
+  convective_outlet,
+  pressure_outlet,
+  resistance_outlet,
+  rcr_outlet
+};
+// Outlets whose pressure is a Dirichlet value of the Poisson equation: fixed or lumped.
+inline bool pressure_type(BoundaryType t) {
+  return t == BoundaryType::pressure_outlet || t == BoundaryType::resistance_outlet ||
+         t == BoundaryType::rcr_outlet;
+}
+inline bool lumped_type(BoundaryType t) {
+  return t == BoundaryType::resistance_outlet || t == BoundaryType::rcr_outlet;
+}
 enum class InletProfile { flat, poiseuille, womersley, plane_poiseuille };
 
 inline constexpr const char* boundary_type_names =
-    "wall, slip, inlet, convective_outlet, pressure_outlet";
+    "wall, slip, inlet, convective_outlet, pressure_outlet, resistance_outlet, rcr_outlet";
 
 struct BoundarySpec {
   std::string patch;
@@ -61,8 +82,13 @@ struct BoundarySpec {
   // inlet: impose the profile's nodal values as they are, without scaling the discrete flux to
   // Q(t) (studies: the nodal interpolant of an exact solution as Dirichlet data).
   bool unscaled_profile = false;
-  double pressure = 0;          // pressure_outlet, Pa
-  double convection_speed = 0;  // convective_outlet, m/s; 0 = inflow / outflow area
+  double pressure = 0;  // pressure_outlet: p_out; resistance_outlet: p0, Pa
+  // resistance_outlet: R; rcr_outlet: the proximal R_p, Pa s/m^3
+  double resistance = 0;
+  double distal_resistance = 0;  // rcr_outlet: R_d, Pa s/m^3
+  double capacitance = 0;        // rcr_outlet: C, m^3/Pa
+  double distal_pressure = 0;    // rcr_outlet: p_d at the start of a run, Pa
+  double convection_speed = 0;   // convective_outlet, m/s; 0 = inflow / outflow area
 };
 
 // A condition of `type` on `patch` with every other setting at its default (for code that
@@ -82,11 +108,18 @@ class BoundaryConditions {
   // partner, or a Womersley profile without a sine waveform.
   BoundaryConditions(const LocalMesh& mesh, std::vector<BoundarySpec> specs, double nu);
 
-  // Per local node: 1 where the pressure is fixed (pressure outlets).
+  // Per local node: 1 where the pressure is fixed (pressure and lumped outlets).
   std::vector<char> pressure_dirichlet() const;
   bool has_pressure_outlet() const { return has_pressure_; }
-  // p = p_out at the pressure-outlet nodes (owned and ghosts).
+  // p = p_out at the pressure-outlet nodes, the held value at lumped-outlet nodes (owned and
+  // ghosts).
   void impose_pressure(ScalarField& p) const;
+  // The pressure outlet whose value a Dirichlet node takes (patch index; -1 = none): a node on
+  // several such patches belongs to a fixed pressure outlet before a lumped one, then to the
+  // lowest patch index, so that every lumped outlet's nodes carry one uniform pressure.
+  const std::vector<int>& pressure_owner() const { return pressure_owner_; }
+  // Lumped outlets: the pressure impose_pressure() gives the nodes of `patch`, Pa.
+  void set_outlet_pressure(int patch, double p) { outlet_pressure_[patch] = p; }
 
   // Collective. Predicted convective-outlet values u^n - dt_stage U_c (grad w) n at time t,
   // held for the next impose().
@@ -120,6 +153,12 @@ class BoundaryConditions {
   // Collective. Outward flux sum u . A through every patch of the mesh (index = patch index
   // of LocalMesh::patch_names), m^3/s; periodic patches get 0.
   std::vector<double> patch_fluxes(const VectorField& u) const;
+  // Collective. The patch fluxes that a velocity change du makes after impose() at the time of
+  // the last impose(): impose() is affine in u, and this is its linear part (held walls and
+  // inflows take nothing, slip nodes lose their normal part, outlets pass du, then the mass
+  // correction). Exact to round-off, so that the lumped outlets' implicit coupling
+  // (flow/lumped_outlets.hpp) knows how their flux answers their pressure.
+  std::vector<double> flux_response(const VectorField& du);
   const std::vector<BoundarySpec>& specs() const { return specs_; }
   // Patch index of each spec.
   const std::vector<int>& spec_patches() const { return spec_patch_; }
@@ -141,6 +180,7 @@ class BoundaryConditions {
     Role role = Role::none;  // at the current time
   };
   void update_roles(double t);
+  void remove_slip_normals(std::size_t k, Eigen::Vector3d& u) const;
   double profile(const Patch& p, int patch, const Eigen::Vector3d& x, double q, double t,
                  double& shape) const;
 
@@ -159,7 +199,10 @@ class BoundaryConditions {
     return !slip_[k] && (role_[k] == Role::convective || role_[k] == Role::pressure);
   }
   std::vector<Eigen::Vector3d> outlet_area_;
-  VectorField held_;  // per boundary node: convective-outlet value
+  std::vector<int> pressure_owner_;      // per local node, see pressure_owner()
+  std::vector<double> outlet_pressure_;  // per patch: lumped outlets' held pressure
+  VectorField response_;                 // per boundary node: flux_response() scratch
+  VectorField held_;                     // per boundary node: convective-outlet value
   TensorField grad_;
   std::vector<double> sums_;
 };

@@ -35,6 +35,12 @@ ProjectionRK4::ProjectionRK4(const LocalMesh& mesh, ProjectionOptions options,
           "run an LES without fourth_order_operators");
     order4_ = std::make_unique<Order4Operators>(mesh, poisson_weights_);
   }
+  auto* bc = options_.boundary.get();
+  if (bc && std::any_of(bc->specs().begin(), bc->specs().end(),
+                        [](const BoundarySpec& s) { return lumped_type(s.type); }))
+    lumped_ = std::make_unique<LumpedOutlets>(
+        mesh, *bc, [this](const ScalarField& f, ScalarField& x) { poisson_.solve(f, x); },
+        [this](const ScalarField& p, VectorField& g) { pressure_gradient(p, g); });
 }
 
 void ProjectionRK4::pressure_gradient(const ScalarField& p, VectorField& grad) {
@@ -274,7 +280,9 @@ StepReport ProjectionRK4::step(FlowState& state, double dt) {
   // Projection: lap(dp) = rho div(v*) / dt, warm-started from the previous increment, with the
   // divergence of the predicted face flux F* = P_p(v*) (+ the damping flux, predicted_flux).
   predicted_flux(stage_, dt, state.pressure, flux_);
+  if (lumped_) lumped_->guess_increment(dp_);
   report.poisson = correct(stage_, flux_, dt / rho, dp_);
+  if (lumped_) lumped_->couple(stage_, flux_, dp_, poisson_weights_, dt, dt / rho, state.time + dt);
   for (int i = 0; i < n; ++i) {
     state.velocity[i] = stage_[i];
     state.pressure[i] += dp_[i];
@@ -282,6 +290,7 @@ StepReport ProjectionRK4::step(FlowState& state, double dt) {
   // Outlet nodes keep their corrected values (Neumann dp: the correction is part of the
   // projection there); Dirichlet values are restored and the mass is corrected again.
   if (bc) bc->hold_outlets(state.velocity), bc->impose(state.velocity, state.time + dt);
+  if (lumped_) lumped_->finish(state.velocity, state.pressure, dt);
   state.time += dt;
   flux_velocity_ = state.velocity;
   projection_divergence(state.velocity, div_);

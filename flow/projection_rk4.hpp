@@ -25,7 +25,9 @@
 // last update uses the b-weighted stage velocities, the outlet equation being linear); dp is
 // Neumann at velocity boundaries and Dirichlet (dp = 0) at pressure
 // outlets (the caller puts BoundaryConditions::pressure_dirichlet() into poisson.dirichlet).
-// Periodic patches carry no boundary faces.
+// Periodic patches carry no boundary faces. Lumped outlets (resistance, RCR) are Dirichlet
+// patches whose pressure is solved with their flux at the end of each step
+// (flow/lumped_outlets.hpp).
 // Face flux (flow/face_flux.hpp): the projection also corrects the dual-face volume flux F with
 // the Poisson matrix's own compact gradient, so that sum_k F_jk + B_j = 0 at every node to the
 // Poisson tolerance; F is part of the state (face_flux(), saved in checkpoints). The convective
@@ -49,6 +51,7 @@
 #include "flow/boundary_conditions.hpp"
 #include "flow/convection_scheme.hpp"
 #include "flow/local_mesh.hpp"
+#include "flow/lumped_outlets.hpp"
 #include "flow/operators.hpp"
 #include "flow/operators_order4.hpp"
 #include "flow/pressure_poisson.hpp"
@@ -176,6 +179,11 @@ class ProjectionRK4 {
   // array is allocated or touched.
   void set_body_force(BodyForce force) { body_force_ = std::move(force); }
 
+  // The lumped outlets of the boundary conditions (null without any): their states for the
+  // log and checkpoints; a new run calls start(), a restart restore().
+  LumpedOutlets* lumped_outlets() { return lumped_.get(); }
+  const LumpedOutlets* lumped_outlets() const { return lumped_.get(); }
+
  private:
   const LocalMesh& mesh_;
   ProjectionOptions options_;
@@ -213,6 +221,7 @@ class ProjectionRK4 {
   ScalarField nu_sgs_, nu_eff_;  // LES only: subgrid and total viscosity
   BodyForce body_force_;
   VectorField force_;  // body-force density of the current stage (only with a hook)
+  std::unique_ptr<LumpedOutlets> lumped_;
 };
 
 }  // namespace valsalva::flow

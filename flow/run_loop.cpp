@@ -10,6 +10,7 @@
 #include <limits>
 #include <utility>
 
+#include "flow/outlet_log.hpp"
 #include "flow/poisson_weights.hpp"
 
 namespace valsalva::flow {
@@ -88,6 +89,7 @@ void RunLoop::impose_initial_boundary_values() {
     boundary_->impose_pressure(state_.pressure);
     boundary_->hold_outlets(state_.velocity);
     boundary_->impose(state_.velocity, state_.time);
+    if (auto* lumped = solver_.lumped_outlets()) lumped->start(state_.velocity, state_.pressure);
   }
   last_good_ = state_;
 }
@@ -101,7 +103,8 @@ void RunLoop::set_initial_velocity(VectorField velocity) {
 }
 
 void RunLoop::resume(FlowState state, std::int64_t step, const ScalarField& pressure_increment,
-                     const ScalarField& subgrid_viscosity, const EdgeField& face_flux) {
+                     const ScalarField& subgrid_viscosity, const EdgeField& face_flux,
+                     const std::vector<double>& lumped_outlets) {
   const auto n = static_cast<std::size_t>(local_.num_local());
   if (state.velocity.size() != n || state.pressure.size() != n)
     throw RunError(
@@ -114,6 +117,12 @@ void RunLoop::resume(FlowState state, std::int64_t step, const ScalarField& pres
   if (!pressure_increment.empty()) solver_.set_pressure_increment(pressure_increment);
   if (!subgrid_viscosity.empty()) solver_.set_subgrid_viscosity(subgrid_viscosity);
   if (!face_flux.empty()) solver_.set_face_flux(face_flux, state_.velocity);
+  if (auto* lumped = solver_.lumped_outlets()) {
+    if (lumped_outlets.empty())
+      throw RunError("flow run: the checkpoint has no lumped-outlet states for the scene's " +
+                     std::to_string(lumped->count()) + " resistance/RCR outlets");
+    lumped->restore(lumped_outlets);
+  }
   resumed_ = true;
 }
 
@@ -273,7 +282,19 @@ RunSummary RunLoop::run() {
            "poisson_residual,wall_per_step,eta";
     if (boundary_)
       for (int p : boundary_->spec_patches()) csv << ",flux_" << local_.patch_names[p];
-    csv << ",mass_imbalance,div_h_over_u\n";
+    csv << ",mass_imbalance,div_h_over_u";
+    if (const auto* lumped = solver_.lumped_outlets())
+      for (int k = 0; k < lumped->count(); ++k) {
+        const auto& name = local_.patch_names[lumped->patch(k)];
+        csv << ",pressure_" << name;
+        if (lumped->spec(k).type == BoundaryType::rcr_outlet) csv << ",distal_pressure_" << name;
+      }
+    csv << "\n";
+  }
+  std::optional<OutletLog> outlet_log;
+  if (const auto* lumped = solver_.lumped_outlets()) {
+    outlet_log.emplace(out.dir, *lumped, local_.patch_names, root, resumed_);
+    if (!resumed_) outlet_log->write(step_, state_.time);
   }
   const bool fields = out.interval > 0;
   if (fields) write_fields("fields", state_);
@@ -331,6 +352,7 @@ RunSummary RunLoop::run() {
       summary.max_mass_imbalance = std::max(summary.max_mass_imbalance, std::abs(imbalance));
     }
 
+    if (outlet_log) outlet_log->write(step_, state_.time);
     if (t.steady_tolerance > 0) {
       double change = 0;
       for (int j = 0; j < local_.num_owned; ++j)
@@ -357,14 +379,24 @@ RunSummary RunLoop::run() {
         }
         flux_text = " flux" + flux_text + fmt::format(" imbalance {:.1e} m3/s", imbalance);
       }
+      std::string lumped_csv;
+      if (const auto* lumped = solver_.lumped_outlets())
+        for (int k = 0; k < lumped->count(); ++k) {
+          const auto& s = lumped->state(k);
+          flux_text +=
+              fmt::format(" p_{} {:.6g} Pa", local_.patch_names[lumped->patch(k)], s.pressure);
+          lumped_csv += fmt::format(",{:.17g}", s.pressure);
+          if (lumped->spec(k).type == BoundaryType::rcr_outlet)
+            lumped_csv += fmt::format(",{:.17g}", s.distal);
+        }
       if (root && out.print) print_progress(report, dt, energy, per_step, eta, flux_text);
       if (csv.is_open())
         csv << fmt::format(
                    "{},{:.17g},{:.17g},{:.9g},{:.9g},{:.9g},{:.17g},{},{:.6g},{:.6g},{:.6g}{},{:."
-                   "6e},{:.6e}\n",
+                   "6e},{:.6e}{}\n",
                    step_, state_.time, dt, cfl, fourier, report.max_divergence, energy,
                    report.poisson.iterations, report.poisson.relative_residual, per_step, eta,
-                   flux_csv, imbalance, report.divergence_number)
+                   flux_csv, imbalance, report.divergence_number, lumped_csv)
             << std::flush;
     }
     if (fields) {

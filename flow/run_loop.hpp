@@ -5,7 +5,9 @@
 // Fields go through a FieldSink so that flow/ stays independent of io/ (app/ plugs in
 // io::FieldOutput). Every non-periodic boundary patch needs a condition (RunOptions::boundary,
 // flow/boundary_conditions.hpp); the log gains the flux through each such patch and the global
-// mass imbalance (the sum of all boundary fluxes).
+// mass imbalance (the sum of all boundary fluxes), and for each lumped outlet its pressure
+// (pressure_<patch>) and, for an RCR, its distal pressure (distal_pressure_<patch>); the same
+// with the flux go into outlets.csv every step (flow/outlet_log.hpp).
 #pragma once
 
 #include <cstdint>
@@ -165,8 +167,10 @@ class RunLoop {
   // with the boundary values imposed on it as on the initial condition's (e.g. the steady field
   // of a coarser level, interpolated).
   void set_initial_velocity(VectorField velocity);
+  // `lumped_outlets` (LumpedOutlets::saved(); empty = none) the lumped outlets' states.
   void resume(FlowState state, std::int64_t step, const ScalarField& pressure_increment = {},
-              const ScalarField& subgrid_viscosity = {}, const EdgeField& face_flux = {});
+              const ScalarField& subgrid_viscosity = {}, const EdgeField& face_flux = {},
+              const std::vector<double>& lumped_outlets = {});
   // The last pressure increment and nu_sgs (for checkpoints; nu_sgs is empty without a model).
   const ScalarField& pressure_increment() const { return solver_.pressure_increment(); }
   const ScalarField& subgrid_viscosity() const { return solver_.subgrid_viscosity(); }

@@ -207,6 +207,22 @@ flow::ScalarField read_nodal_array(const CheckpointReader& reader, const flow::L
   return reader.read_array(name, rows);
 }
 
+CheckpointArray replicated_checkpoint_array(const std::string& name, const flow::LocalMesh& local,
+                                            const std::vector<double>& values) {
+  CheckpointArray a{name, static_cast<std::int64_t>(values.size()), 0, {}, {}};
+  if (local.comm.root())
+    for (std::size_t r = 0; r < values.size(); ++r)
+      a.rows.push_back(static_cast<std::int64_t>(r)), a.data.push_back(values[r]);
+  return a;
+}
+
+std::vector<double> read_replicated_array(const CheckpointReader& reader, const std::string& name) {
+  const auto rows = reader.shape(name).first;
+  std::vector<std::int64_t> all(static_cast<std::size_t>(rows));
+  for (std::int64_t r = 0; r < rows; ++r) all[static_cast<std::size_t>(r)] = r;
+  return reader.read_array(name, all);
+}
+
 CheckpointArray edge_checkpoint_array(const std::string& name, const flow::LocalMesh& local,
                                       const std::vector<double>& field) {
   if (field.size() != local.edges.size())

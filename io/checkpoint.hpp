@@ -99,6 +99,12 @@ CheckpointArray edge_checkpoint_array(const std::string& name, const flow::Local
 std::vector<double> read_edge_array(const CheckpointReader& reader, const flow::LocalMesh& local,
                                     const std::string& name);
 
+// A small array that every rank holds alike (e.g. the lumped outlets' states), written by rank 0
+// as one 1-D row per value, and its inverse (every rank reads all of it).
+CheckpointArray replicated_checkpoint_array(const std::string& name, const flow::LocalMesh& local,
+                                            const std::vector<double>& values);
+std::vector<double> read_replicated_array(const CheckpointReader& reader, const std::string& name);
+
 // Newest complete checkpoint <basename>_<step>.h5 in `dir` (highest step), or nullopt.
 std::optional<std::filesystem::path> latest_checkpoint(const std::filesystem::path& dir,
                                                        const std::string& basename = "checkpoint");

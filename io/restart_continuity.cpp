@@ -21,7 +21,8 @@ const std::vector<AppendedSeries>& appended_series() {
                                                   {"probes.csv", false},
                                                   {"pressure_drop.csv", false},
                                                   {"wall_shear_history.csv", false},
-                                                  {"structures.csv", true}};
+                                                  {"structures.csv", true},
+                                                  {"outlets.csv", true}};
   return series;
 }
 

@@ -26,7 +26,7 @@ struct AppendedSeries {
 };
 
 // The appended series of a run directory: log.csv, probes.csv, pressure_drop.csv,
-// wall_shear_history.csv, structures.csv.
+// wall_shear_history.csv, structures.csv, outlets.csv.
 const std::vector<AppendedSeries>& appended_series();
 
 // Keeps the header line and the rows written up to the checkpoint: first column <= `step` (step

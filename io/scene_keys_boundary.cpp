@@ -20,13 +20,19 @@ void declare_boundary_keys(Schema& s) {
   s.section(b,
             "Boundary condition of one mesh patch (the table name is the patch name, e.g. "
             "[boundary.inlet]); every non-periodic patch needs one, periodic patches take none.");
-  s.choice(b + ".type", {"wall", "slip", "inlet", "convective_outlet", "pressure_outlet"})
+  s.choice(b + ".type", {"wall", "slip", "inlet", "convective_outlet", "pressure_outlet",
+                         "resistance_outlet", "rcr_outlet"})
       .required()
       .unit_of("-")
       .doc(
           "wall: no-slip (u = velocity); slip: zero normal velocity; inlet: flow rate Q(t) with a "
           "profile; convective_outlet: du/dt + U_c du/dn = 0, outflow = inflow; pressure_outlet: "
-          "fixed pressure, backflow-stabilised where the flow re-enters");
+          "fixed pressure, backflow-stabilised where the flow re-enters; resistance_outlet: "
+          "p = pressure + resistance Q; rcr_outlet: three-element Windkessel p = p_d + "
+          "resistance Q, capacitance dp_d/dt = Q - p_d / distal_resistance (Q the outward patch "
+          "flux; both lumped outlets are pressure outlets coupled implicitly through the "
+          "pressure equation, flow/lumped_outlets.hpp; flux, pressure and distal pressure in "
+          "outlets.csv every step and in log.csv)");
   s.real3(b + ".velocity")
       .def(std::array{0.0, 0.0, 0.0})
       .unit_of("m/s")
@@ -85,8 +91,39 @@ void declare_boundary_keys(Schema& s) {
           "A convective_outlet patch that imposes |Q| inward (flat profile) while Q(t) < 0, this "
           "inlet becoming a convective outlet; empty = no exchange");
   s.when(b + ".swap_with", b + ".type", {"inlet"});
-  s.real(b + ".pressure").def(0.0).unit_of("Pa").doc("Fixed pressure of the outlet");
-  s.when(b + ".pressure", b + ".type", {"pressure_outlet"});
+  s.real(b + ".pressure")
+      .def(0.0)
+      .unit_of("Pa")
+      .doc("Fixed pressure of the outlet; resistance_outlet: the pressure p0 at zero flux");
+  s.when(b + ".pressure", b + ".type", {"pressure_outlet", "resistance_outlet"});
+  s.real(b + ".resistance")
+      .required()
+      .above(0)
+      .unit_of("Pa s/m3")
+      .doc(
+          "resistance_outlet: R of p = p0 + R Q (the whole systemic circulation: about 1.3e8 "
+          "Pa s/m3 = 1 mmHg s/mL); rcr_outlet: the proximal (characteristic) resistance R_p, "
+          "typically 5-10 % of R_p + R_d");
+  s.when(b + ".resistance", b + ".type", {"resistance_outlet", "rcr_outlet"});
+  s.real(b + ".distal_resistance")
+      .required()
+      .above(0)
+      .unit_of("Pa s/m3")
+      .doc(
+          "rcr_outlet: distal (peripheral) resistance R_d; R_p + R_d is the outlet's steady "
+          "resistance");
+  s.when(b + ".distal_resistance", b + ".type", {"rcr_outlet"});
+  s.real(b + ".capacitance")
+      .required()
+      .above(0)
+      .unit_of("m3/Pa")
+      .doc("rcr_outlet: compliance C (systemic arteries: about 1e-8 m3/Pa = 1.3 mL/mmHg)");
+  s.when(b + ".capacitance", b + ".type", {"rcr_outlet"});
+  s.real(b + ".distal_pressure")
+      .def(0.0)
+      .unit_of("Pa")
+      .doc("rcr_outlet: distal pressure p_d at the start of the run (a restart continues its own)");
+  s.when(b + ".distal_pressure", b + ".type", {"rcr_outlet"});
   s.real(b + ".convection_speed")
       .def(0.0)
       .at_least(0)
@@ -181,9 +218,19 @@ std::vector<flow::BoundarySpec> read_boundary_conditions(const Scene& scene,
     } else if (type == "convective_outlet") {
       spec.type = flow::BoundaryType::convective_outlet;
       spec.convection_speed = scene.get<double>(key + ".convection_speed");
-    } else {
+    } else if (type == "pressure_outlet") {
       spec.type = flow::BoundaryType::pressure_outlet;
       spec.pressure = scene.get<double>(key + ".pressure");
+    } else if (type == "resistance_outlet") {
+      spec.type = flow::BoundaryType::resistance_outlet;
+      spec.pressure = scene.get<double>(key + ".pressure");
+      spec.resistance = scene.get<double>(key + ".resistance");
+    } else {
+      spec.type = flow::BoundaryType::rcr_outlet;
+      spec.resistance = scene.get<double>(key + ".resistance");
+      spec.distal_resistance = scene.get<double>(key + ".distal_resistance");
+      spec.capacitance = scene.get<double>(key + ".capacitance");
+      spec.distal_pressure = scene.get<double>(key + ".distal_pressure");
     }
     specs.push_back(std::move(spec));
   }

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -135,7 +136,8 @@ void Simulation::Parts::write_fields(const std::string& stream, double time,
 
 // Checkpoints every N steps, every M wall-clock minutes (rank 0's clock decides, so that all
 // ranks agree) and on SIGINT/SIGTERM; the newest output.checkpoint_keep are kept. They carry the
-// Poisson warm start, the face flux, nu_sgs and the analysis accumulators.
+// Poisson warm start, the face flux, nu_sgs, the lumped outlets' states and the analysis
+// accumulators.
 void Simulation::Parts::write_checkpoint(const flow::FlowState& state, std::int64_t step, double dt,
                                          bool stopping) {
   const auto every_steps =
@@ -161,6 +163,8 @@ void Simulation::Parts::write_checkpoint(const flow::FlowState& state, std::int6
   if (!loop->subgrid_viscosity().empty())
     extras.push_back(
         io::nodal_checkpoint_array("subgrid_viscosity", local, loop->subgrid_viscosity()));
+  if (const auto* lumped = loop->solver().lumped_outlets())
+    extras.push_back(io::replicated_checkpoint_array("lumped_outlets", local, lumped->saved()));
   last_checkpoint = writer->write(state, step, dt, extras);
   last_write = Clock::now();
 }
@@ -270,6 +274,9 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
       if (!analysis_options.wall_shear.patches.empty()) series.push_back("wall_shear_history.csv");
       if (!immersed_setup.empty()) series.push_back("structures.csv");
       if (valve_options) series.push_back("valve.csv");
+      if (std::any_of(boundary.begin(), boundary.end(),
+                      [](const flow::BoundarySpec& b) { return flow::lumped_type(b.type); }))
+        series.push_back("outlets.csv");
       io::continue_in_place(p.run_path, scene, in->info().step, in->info().time, in->info().dt,
                             series, p.local.comm);
     }
@@ -282,6 +289,7 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
   flow::FlowState start;
   flow::ScalarField start_dp, start_nu_sgs;
   flow::EdgeField start_flux;
+  std::vector<double> start_lumped;
   if (in) {
     in->read_state(start);
     start_step = in->info().step;
@@ -296,6 +304,8 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
       start_flux = io::read_edge_array(*in, p.local, "face_flux");
     if (p.les.subgrid_viscosity && in->has("subgrid_viscosity"))  // the first dt of an LES
       start_nu_sgs = io::read_nodal_array(*in, p.local, "subgrid_viscosity");
+    if (in->has("lumped_outlets"))  // resistance/RCR states (flux, pressure, p_d, increment)
+      start_lumped = io::read_replicated_array(*in, "lumped_outlets");
     if (p.analysis) p.analysis->restore(*in);
     if (p.rank == 0 && p.print)
       fmt::print("restart: {} (step {}, t = {:.9g} s)\n", p.checkpoint->string(), start_step,
@@ -321,7 +331,7 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
   if (p.analysis && p.loop->prescribed_force())
     p.analysis->set_body_force(p.loop->prescribed_force());
   if (p.checkpoint) {
-    p.loop->resume(std::move(start), start_step, start_dp, start_nu_sgs, start_flux);
+    p.loop->resume(std::move(start), start_step, start_dp, start_nu_sgs, start_flux, start_lumped);
     p.les.resume(p.loop->subgrid_viscosity());
   }
   if (p.mesh_hash != 0 && checkpoints)
