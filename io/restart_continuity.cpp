@@ -22,7 +22,9 @@ const std::vector<AppendedSeries>& appended_series() {
                                                   {"pressure_drop.csv", false},
                                                   {"wall_shear_history.csv", false},
                                                   {"structures.csv", true},
-                                                  {"outlets.csv", true}};
+                                                  {"outlets.csv", true},
+                                                  {"sections.csv", false},
+                                                  {"valve.csv", true}};
   return series;
 }
 
@@ -173,6 +175,13 @@ void continue_in_place(const fs::path& dir, const Scene& scene, std::int64_t ste
   std::string error;
   if (comm.root()) {
     try {
+      // A name the table does not know would be continued uncut (its rows after the checkpoint
+      // repeated): a programming error, refused rather than skipped.
+      for (const auto& name : series)
+        if (std::none_of(appended_series().begin(), appended_series().end(),
+                         [&](const AppendedSeries& s) { return s.file == name; }))
+          throw std::logic_error(fmt::format(
+              "restart: '{}' is not among the appended series that a restart cuts back", name));
       for (const auto& s : appended_series()) {
         if (std::find(series.begin(), series.end(), s.file) == series.end()) continue;
         const fs::path file = dir / s.file;

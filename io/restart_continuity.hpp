@@ -26,7 +26,8 @@ struct AppendedSeries {
 };
 
 // The appended series of a run directory: log.csv, probes.csv, pressure_drop.csv,
-// wall_shear_history.csv, structures.csv, outlets.csv.
+// wall_shear_history.csv, structures.csv, outlets.csv, sections.csv, valve.csv
+// (valve_cycles.csv is cut by the valve monitor, which knows the cycle open at the checkpoint).
 const std::vector<AppendedSeries>& appended_series();
 
 // Keeps the header line and the rows written up to the checkpoint: first column <= `step` (step
@@ -52,10 +53,10 @@ std::vector<std::filesystem::path> superseded_restart_outputs(const std::filesys
                                                               std::int64_t step);
 
 // Collective. Prepares run directory `dir` for a restart from the checkpoint at `step` (time,
-// dt): every series in `series` (names from appended_series() the scene writes) must exist and
-// is truncated, the superseded restart outputs are removed, and the scene is recorded as
-// resolved_scene_restart_<step>.toml. Rank 0 does the work and prints what it cut; an error
-// is thrown on every rank.
+// dt): every series in `series` (names from appended_series() the scene writes; another name
+// throws std::logic_error) must exist and is truncated, the superseded restart outputs are removed,
+// and the scene is recorded as resolved_scene_restart_<step>.toml. Rank 0 does the work and prints
+// what it cut; an error is thrown on every rank.
 void continue_in_place(const std::filesystem::path& dir, const Scene& scene, std::int64_t step,
                        double time, double dt, const std::vector<std::string>& series,
                        const flow::Comm& comm);

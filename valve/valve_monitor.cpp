@@ -6,6 +6,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "io/hdf5_file.hpp"
+#include "io/restart_continuity.hpp"
 #include "structure/contact.hpp"
 #include "structure/orifice_area.hpp"
 #include "structure/stress_recovery.hpp"
@@ -52,7 +54,9 @@ ValveMonitor::ValveMonitor(const flow::LocalMesh& local, const ibm::ImmersedStru
       options_(std::move(options)),
       upstream_(region(local, options_.tpg_upstream, options_.tpg_radius, "tpg_upstream")),
       downstream_(region(local, options_.tpg_downstream, options_.tpg_radius, "tpg_downstream")),
-      cycles_({options_.period, options_.start_time, options_.open_fraction, 0.9}) {
+      cycles_({options_.period, options_.start_time, options_.open_fraction, 0.9}),
+      cycles_path_(run_dir / "valve_cycles.csv"),
+      append_(append) {
   const structure::SolidMesh& all = structure.body(body).mesh();
   for (int i = 1; i <= 3; ++i) {
     const std::string prefix = fmt::format("leaflet{}", i);
@@ -181,7 +185,29 @@ void ValveMonitor::restore(const io::CheckpointReader& reader) {
   if (cols != analysis::valve_sample_fields || data.empty() ||
       static_cast<std::int64_t>(data[0]) != rows - 1)
     throw std::runtime_error("restart: the checkpoint's valve cycle samples are malformed");
-  if (local_->comm.root()) cycles_.restore(std::span(data).subspan(analysis::valve_sample_fields));
+  std::string error;
+  if (local_->comm.root()) {
+    try {
+      cycles_.restore(std::span(data).subspan(analysis::valve_sample_fields));
+      if (append_) cut_cycles_csv();
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  }
+  io::h5::settle(local_->comm.get(), error);
+}
+
+void ValveMonitor::cut_cycles_csv() {
+  // Rows of cycles completed after the checkpoint would be written again: keep those before the
+  // open cycle (none when no cycle has begun). The cycle is an integer first column, cut as a
+  // step column is.
+  const auto& open = cycles_.open_samples();
+  const int keep_below = open.empty() ? 0 : cycles_.cycle_of(open.front().time);
+  cycles_csv_.close();
+  if (const auto cut = io::truncate_series(cycles_path_, true, keep_below - 1, 0, 0); cut > 0)
+    fmt::print("restart: {} rows of valve_cycles.csv after the checkpoint removed\n", cut);
+  cycles_csv_.open(cycles_path_, std::ios::app);
+  if (!cycles_csv_) throw std::runtime_error("valve: cannot write " + cycles_path_.string());
 }
 
 }  // namespace valsalva::valve

@@ -10,7 +10,9 @@
 //                     smallest signed gap between contact surfaces (m) and the contact area (m^2)
 //   valve_cycles.csv  one row per completed cycle (analysis/valve_cycles.hpp), with the valve's
 //                     flow taken at the inlet
-// The open cycle's samples are saved in checkpoints, so a restarted run completes it.
+// The open cycle's samples are saved in checkpoints, so a restarted run completes it; a restart
+// in place cuts valve_cycles.csv back to the cycles completed before that open cycle (valve.csv
+// is cut by io::continue_in_place).
 #pragma once
 
 #include <filesystem>
@@ -39,6 +41,7 @@ class ValveMonitor {
   // Collective: the row due after step `step` (step 0 = the initial state).
   void sample(const flow::FlowState& state, std::int64_t step);
   std::vector<io::CheckpointArray> checkpoint_arrays() const;
+  // Collective. Throws on every rank when valve_cycles.csv cannot be cut back.
   void restore(const io::CheckpointReader& reader);
 
  private:
@@ -48,6 +51,7 @@ class ValveMonitor {
     int tip = -1;               // structure node at the free-edge midpoint
   };
   double patch_flux(const flow::VectorField& u, int patch) const;
+  void cut_cycles_csv();  // rank 0, restart in place
 
   const flow::LocalMesh* local_;
   const ibm::ImmersedStructure* structure_;
@@ -58,6 +62,8 @@ class ValveMonitor {
   int inlet_ = -1, outlet_ = -1;
   analysis::CycleTracker cycles_;
   std::ofstream csv_, cycles_csv_;
+  std::filesystem::path cycles_path_;
+  bool append_ = false;
 };
 
 }  // namespace valsalva::valve

@@ -43,7 +43,7 @@ run_and_kill $second --restart latest
 grep -q '^restart: .*checkpoint_' last.out
 ls part/resolved_scene_restart_*.toml > /dev/null
 
-for csv in probes.csv pressure_drop.csv statistics/phase_phases.csv; do
+for csv in probes.csv pressure_drop.csv sections.csv statistics/phase_phases.csv; do
   cmp "full/$csv" "part/$csv"
   echo "$csv: identical ($(wc -l < "full/$csv") lines)"
 done

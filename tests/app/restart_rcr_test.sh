@@ -3,7 +3,8 @@
 # vs restart_rcr_half.toml (8 steps, checkpoint) at NP_HALF + `--restart latest` at NP_FULL: the
 # outlet pressures, distal pressures and fluxes of log.csv and outlets.csv and the final fields
 # agree to TOL
-# (0 = identical text and bitwise fields). Usage: restart_rcr_test.sh APP MPIEXEC NP_HALF NP_FULL TOL
+# (0 = identical text and bitwise fields); a copy of a run continued from its middle checkpoint
+# writes outlets.csv as the run did. Usage: restart_rcr_test.sh APP MPIEXEC NP_HALF NP_FULL TOL
 set -euo pipefail
 app=$1 mpiexec=$2 np_half=$3 np_full=$4 tol=$5
 here=$(cd "$(dirname "$0")" && pwd)
@@ -35,3 +36,10 @@ PY
 /usr/bin/python3 "$here/compare_fields.py" full/fields_000002.h5 part/fields_restart_000000008_000001.h5 "$tol" velocity pressure
 # --overwrite knows outlets.csv as valsalva's own output.
 $mpiexec --oversubscribe -n "$np_full" "$app" run "$here/scenes/restart_rcr_half.toml" --out full --overwrite --quiet > overwrite.out
+# A crash past the checkpoint: a copy of a 16-step run with checkpoints at 8 and 16 continued in
+# place from step 8 (outlets.csv holds rows 9..16 already): cut back and continued, no row twice.
+$mpiexec --oversubscribe -n "$np_full" "$app" run "$here/scenes/restart_rcr.toml" --out crashed --set output.checkpoint_every_steps=8 --quiet > crashed.out
+cp -r crashed again
+$mpiexec --oversubscribe -n "$np_full" "$app" run "$here/scenes/restart_rcr.toml" --out again --restart again/checkpoints/checkpoint_000000008.h5 --set output.checkpoint_every_steps=8 > again.out
+grep -q "restart: 8 rows of outlets.csv after the checkpoint removed" again.out
+cmp crashed/outlets.csv again/outlets.csv

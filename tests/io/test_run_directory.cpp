@@ -74,8 +74,9 @@ TEST_CASE("prepare creates the directory, writes the resolved scene, and guards 
   CHECK(marker.find("directory = \"" + fs::weakly_canonical(fs::absolute(dir)).string() + "\"") !=
         std::string::npos);
   if (rank == 0) {
-    std::ofstream(dir / "log.csv") << "old";
-    std::ofstream(dir / "fields_000003.h5") << "old";
+    for (const char* name : {"log.csv", "fields_000003.h5", "sections.csv", "valve.csv",
+                             "valve_cycles.csv", "outlets.csv"})
+      std::ofstream(dir / name) << "old";
     fs::create_directories(dir / "checkpoints");
     std::ofstream(dir / "checkpoints" / "checkpoint_000000008.h5") << "old";
   }
@@ -83,6 +84,8 @@ TEST_CASE("prepare creates the directory, writes the resolved scene, and guards 
   RunDirectory::prepare(dir, true, scene, MPI_COMM_WORLD);
   CHECK_FALSE(fs::exists(dir / "log.csv"));
   CHECK_FALSE(fs::exists(dir / "fields_000003.h5"));
+  for (const char* name : {"sections.csv", "valve.csv", "valve_cycles.csv", "outlets.csv"})
+    CHECK_FALSE(fs::exists(dir / name));
   CHECK_FALSE(fs::exists(dir / "checkpoints"));
   CHECK(fs::exists(dir / "resolved_scene.toml"));
   // A new run, a new identity.

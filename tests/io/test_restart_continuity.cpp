@@ -1,0 +1,53 @@
+// A restart in place cuts every appended series back to the checkpoint: the section fluxes
+// (sections.csv, by time) and the valve indices (valve.csv, by step) as the others; a series the
+// table does not know is refused rather than continued uncut. Runs at 1 rank.
+#include <doctest/doctest.h>
+#include <mpi.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "io/restart_continuity.hpp"
+
+namespace fs = std::filesystem;
+using namespace valsalva;
+
+namespace {
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+TEST_CASE("continue_in_place cuts sections.csv by time and valve.csv by step") {
+  const fs::path dir =
+      fs::temp_directory_path() / ("valsalva_restart_continuity_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const flow::Comm comm(MPI_COMM_WORLD);
+  const io::Scene scene = io::parse_scene("[mesh]\nsource = \"box\"\n", "cube.toml");
+  // Steps 0..4 at dt = 0.1 written by the interrupted run; the checkpoint is at step 2, t = 0.2
+  // (printed as 0.20000000000000001: the half-step margin keeps it).
+  std::ofstream(dir / "sections.csv")
+      << "time,mid_flux\n0,1\n0.1,2\n0.20000000000000001,3\n0.30000000000000004,4\n0.4,5\n";
+  std::ofstream(dir / "valve.csv")
+      << "step,time,cycle\n0,0,0\n1,0.1,0\n2,0.2,0\n3,0.3,0\n4,0.4,0\n";
+  std::ofstream(dir / "valve_cycles.csv") << "cycle,start\n0,0\n";
+  io::continue_in_place(dir, scene, 2, 0.2, 0.1, {"sections.csv", "valve.csv"}, comm);
+  CHECK(read(dir / "sections.csv") == "time,mid_flux\n0,1\n0.1,2\n0.20000000000000001,3\n");
+  CHECK(read(dir / "valve.csv") == "step,time,cycle\n0,0,0\n1,0.1,0\n2,0.2,0\n");
+  // Not in the list: untouched (the valve monitor cuts valve_cycles.csv itself).
+  CHECK(read(dir / "valve_cycles.csv") == "cycle,start\n0,0\n");
+  CHECK(fs::exists(dir / "resolved_scene_restart_000000002.toml"));
+
+  // An unknown name would be continued uncut: refused, naming it.
+  CHECK_THROWS_WITH(io::continue_in_place(dir, scene, 2, 0.2, 0.1, {"valve_cycles.csv"}, comm),
+                    doctest::Contains("'valve_cycles.csv' is not among the appended series"));
+  fs::remove_all(dir);
+}
