@@ -4,10 +4,12 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 #include <span>
 #include <stdexcept>
 
 #include "ibm/ib_stability.hpp"
+#include "ibm/implicit_markers.hpp"
 
 namespace valsalva::ibm {
 
@@ -39,10 +41,11 @@ int ImmersedStructure::add_body(const structure::SolidMesh& mesh,
   for (int a = 0; a < n; ++a)
     if (!fixed[a]) coupled_.push_back(first + a);
   auto grow = [&](Eigen::Matrix3Xd& m) { m.conservativeResize(3, first + n); };
-  for (auto* m : {&x_, &x_n_, &x_stage_, &velocity_, &force_}) grow(*m);
+  for (auto* m : {&x_, &x_n_, &x_stage_, &velocity_, &force_, &last_displacement_}) grow(*m);
   x_.middleCols(first, n) = mesh.X;
   velocity_.middleCols(first, n).setZero();
   force_.middleCols(first, n).setZero();
+  last_displacement_.middleCols(first, n).setZero();
   dt_max_ = -1;
   return static_cast<int>(bodies_.size()) - 1;
 }
@@ -53,6 +56,14 @@ void ImmersedStructure::set_positions(const Eigen::Matrix3Xd& x) {
         "ibm::ImmersedStructure::set_positions: {} positions for {} markers", x.cols(), x_.cols()));
   x_ = x;
   dt_max_ = -1;
+}
+
+void ImmersedStructure::set_last_displacement(const Eigen::Matrix3Xd& d) {
+  if (d.cols() != x_.cols())
+    throw std::invalid_argument(
+        fmt::format("ibm::ImmersedStructure::set_last_displacement: {} columns for {} markers",
+                    d.cols(), x_.cols()));
+  last_displacement_ = d;
 }
 
 flow::BodyForce ImmersedStructure::body_force() {
@@ -112,6 +123,23 @@ void ImmersedStructure::stage_force(int stage, double stage_time,
     t_n_ = stage_time;
     x_n_ = x_;
   }
+  if (options_.mode == CouplingMode::implicit) {
+    if (stage == 0) {
+      // F(X^n) - K dX^{n-1}: the force linearly extrapolated to t^{n+1} (implicit_markers.hpp).
+      locate(x_n_);
+      compute_forces(x_n_);
+      assemble_stiffness(x_n_);
+      for (int b = 0; b < num_bodies(); ++b) {
+        const int n = count(b);
+        Eigen::Map<const Eigen::VectorXd> d(last_displacement_.data() + 3 * first_[b], 3 * n);
+        Eigen::Map<Eigen::VectorXd> f(force_.data() + 3 * first_[b], 3 * n);
+        f -= stiffness_[b] * d;
+      }
+      spread(held_force_);
+    }
+    force_density = held_force_;
+    return;
+  }
   if (options_.mode == CouplingMode::per_step) {
     if (stage == 0) {
       locate(x_n_);
@@ -142,6 +170,11 @@ void ImmersedStructure::finish_step(const flow::FlowState& state) {
     throw std::logic_error(
         "ibm::ImmersedStructure::finish_step: called without a flow step through the body-force "
         "hook (time did not advance)");
+  if (options_.mode == CouplingMode::implicit) {
+    interpolate(state.velocity);  // the transfer is still located at X^n
+    implicit_finish(dt);
+    return;
+  }
   if (options_.mode == CouplingMode::per_step) {
     // Transfer is still located at X^n: U(u^{n+1}, X^n).
     interpolate(state.velocity);
@@ -157,22 +190,49 @@ void ImmersedStructure::current_force_density(flow::VectorField& density) {
   spread(density);
 }
 
-double ImmersedStructure::stable_time_step() {
-  locate(x_);
-  std::vector<Eigen::SparseMatrix<double>> K(bodies_.size());
+void ImmersedStructure::assemble_stiffness(const Eigen::Matrix3Xd& x) {
+  stiffness_.resize(bodies_.size());
   for (int b = 0; b < num_bodies(); ++b)
-    bodies_[b]->stiffness(Eigen::Matrix3Xd(x_.middleCols(first_[b], count(b))), K[b]);
-  // On the coupled markers only: fixed nodes are Dirichlet (their rows and columns drop out).
-  Eigen::Matrix3Xd v_all = Eigen::Matrix3Xd::Zero(3, num_markers()), kv_all(3, num_markers());
-  auto apply = [&](const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd& kv) {
-    for (std::size_t m = 0; m < coupled_.size(); ++m) v_all.col(coupled_[m]) = v.col(long(m));
-    for (int b = 0; b < num_bodies(); ++b) {
-      const int n = count(b);
-      Eigen::Map<const Eigen::VectorXd> vb(v_all.data() + 3 * first_[b], 3 * n);
-      Eigen::Map<Eigen::VectorXd> kb(kv_all.data() + 3 * first_[b], 3 * n);
-      kb = K[b] * vb;
-    }
-    gather(kv_all, kv);
+    bodies_[b]->stiffness(Eigen::Matrix3Xd(x.middleCols(first_[b], count(b))), stiffness_[b]);
+  stiffness_in_ = Eigen::Matrix3Xd::Zero(3, num_markers());
+  stiffness_out_.resize(3, num_markers());
+}
+
+void ImmersedStructure::apply_coupled_stiffness(const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd& kv) {
+  for (std::size_t m = 0; m < coupled_.size(); ++m) stiffness_in_.col(coupled_[m]) = v.col(long(m));
+  for (int b = 0; b < num_bodies(); ++b) {
+    const int n = count(b);
+    Eigen::Map<const Eigen::VectorXd> vb(stiffness_in_.data() + 3 * first_[b], 3 * n);
+    Eigen::Map<Eigen::VectorXd> kb(stiffness_out_.data() + 3 * first_[b], 3 * n);
+    kb = stiffness_[b] * vb;
+  }
+  gather(stiffness_out_, kv);
+}
+
+void ImmersedStructure::implicit_finish(double dt) {
+  // (I + dt^2/rho A K) dX = dt U(u^{n+1}, X^n) on the coupled markers, with A and K at X^n.
+  const auto apply = [this](const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd& kv) {
+    apply_coupled_stiffness(v, kv);
+  };
+  const auto solve = implicit_marker_displacement(transfer_, apply, dt * coupled_velocity_,
+                                                  dt * dt / options_.fluid_density);
+  implicit_iterations_ = solve.iterations;
+  last_displacement_.setZero();
+  for (std::size_t m = 0; m < coupled_.size(); ++m)
+    last_displacement_.col(coupled_[m]) = solve.displacement.col(long(m));
+  x_ = x_n_ + last_displacement_;
+  velocity_ = last_displacement_ / dt;
+}
+
+double ImmersedStructure::stable_time_step() {
+  if (options_.mode == CouplingMode::implicit) {
+    dt_max_ = std::numeric_limits<double>::infinity();  // no bound of its own
+    return dt_max_;
+  }
+  locate(x_);
+  assemble_stiffness(x_);
+  const auto apply = [this](const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd& kv) {
+    apply_coupled_stiffness(v, kv);
   };
   const auto eig = kernel_mapped_stiffness_eigenvalue(transfer_, apply);
   dt_max_ = coupling_time_step_bound(eig.lambda, options_.fluid_density,

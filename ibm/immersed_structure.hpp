@@ -16,6 +16,9 @@
 //   i.e. X^n + dt U_3; 1/6, 1/3, 1/3, 1/6 for rk4_classic).
 // Mode per_step (classic explicit IB): F(X^n) spread once and held over the four stages;
 // X^{n+1} = X^n + dt U(u^{n+1}, X^n) with the projected, divergence-free velocity.
+// Mode implicit: F(X^n) - K dX^{n-1} held over the four stages, then the markers' displacement
+// from the linearly implicit solve of ibm/implicit_markers.hpp with the velocity u^{n+1} at X^n;
+// no time-step bound of its own (the flow's CFL and Fourier targets set dt).
 // Which to use and why: see ibm/ib_stability.hpp and the membrane_relaxation case.
 //
 // Parallel: markers and solid forces are replicated on every rank (solids have thousands of
@@ -23,6 +26,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -37,7 +41,19 @@
 
 namespace valsalva::ibm {
 
-enum class CouplingMode { per_stage, per_step };
+enum class CouplingMode { per_stage, per_step, implicit };
+
+// The scene's name of a mode (immersed.coupling).
+inline const char* coupling_name(CouplingMode mode) {
+  switch (mode) {
+    case CouplingMode::per_step:
+      return "per_step";
+    case CouplingMode::implicit:
+      return "implicit";
+    default:
+      return "per_stage";
+  }
+}
 
 // A periodic fluid box: markers are wrapped into it for location (the solid keeps unwrapped
 // positions for its forces).
@@ -118,6 +134,11 @@ class ImmersedStructure {
   Eigen::Vector3d total_force(int b) const;
   Eigen::Vector3d tether_force(int b) const;
   double last_min_det() const { return min_det_; }
+  // Mode implicit: the last step's marker displacement (3 x markers; part of the state, saved in
+  // checkpoints so that a restart repeats the run) and its solve's BiCGSTAB iterations.
+  const Eigen::Matrix3Xd& last_displacement() const { return last_displacement_; }
+  void set_last_displacement(const Eigen::Matrix3Xd& d);
+  int last_implicit_iterations() const { return implicit_iterations_; }
   const DiracTransfer& transfer() const { return transfer_; }
   const ImmersedOptions& options() const { return options_; }
 
@@ -129,6 +150,11 @@ class ImmersedStructure {
   void locate(const Eigen::Matrix3Xd& x);          // wraps into the box
   void interpolate(const flow::VectorField& u);    // velocity_ at the located markers
   void spread(flow::VectorField& density);
+  // K = -dF/dX of every body at x (into stiffness_) and its product with a vector of the coupled
+  // markers (fixed nodes are Dirichlet: their rows and columns drop out).
+  void assemble_stiffness(const Eigen::Matrix3Xd& x);
+  void apply_coupled_stiffness(const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd& kv);
+  void implicit_finish(double dt);
 
   flow::LocalMesh& mesh_;
   ImmersedOptions options_;
@@ -144,6 +170,10 @@ class ImmersedStructure {
   double min_det_ = 1;
   double dt_max_ = -1;  // last stable_time_step(), -1 before the first
   flow::VectorField u_copy_, held_force_;
+  std::vector<Eigen::SparseMatrix<double>> stiffness_;  // per body, at the last assembly
+  Eigen::Matrix3Xd stiffness_in_, stiffness_out_;       // all markers, scratch
+  Eigen::Matrix3Xd last_displacement_;                  // mode implicit: dX^{n-1}
+  int implicit_iterations_ = 0;
 };
 
 }  // namespace valsalva::ibm

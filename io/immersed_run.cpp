@@ -123,7 +123,17 @@ std::vector<CheckpointArray> ImmersedRun::checkpoint_arrays() const {
     bound.rows.push_back(0);
     bound.data = {dt_bound_, static_cast<double>(evaluated_at_)};
   }
-  return {a, bound};
+  if (ib_->options().mode != ibm::CouplingMode::implicit) return {a, bound};
+  // The implicit coupling's state: the last marker displacement (its extrapolated force).
+  CheckpointArray d{"marker_last_displacement", ib_->num_markers(), 3, {}, {}};
+  if (root_) {
+    const auto& dx = ib_->last_displacement();
+    for (int m = 0; m < dx.cols(); ++m) {
+      d.rows.push_back(m);
+      for (int k = 0; k < 3; ++k) d.data.push_back(dx(k, m));
+    }
+  }
+  return {a, bound, d};
 }
 
 void ImmersedRun::restore(const CheckpointReader& in) {
@@ -138,6 +148,18 @@ void ImmersedRun::restore(const CheckpointReader& in) {
   for (int m = 0; m < x.cols(); ++m)
     for (int d = 0; d < 3; ++d) x(d, m) = data[3 * m + d];
   ib_->set_positions(x);
+  if (ib_->options().mode == ibm::CouplingMode::implicit) {
+    if (!in.has("marker_last_displacement"))
+      throw std::runtime_error(
+          "restart: the checkpoint has no marker_last_displacement, the state of immersed.coupling "
+          "= \"implicit\" (it was written with another coupling); restart with the coupling it "
+          "was written with");
+    const auto d = in.read_array("marker_last_displacement", rows);
+    Eigen::Matrix3Xd dx(3, ib_->num_markers());
+    for (int m = 0; m < dx.cols(); ++m)
+      for (int k = 0; k < 3; ++k) dx(k, m) = d[3 * m + k];
+    ib_->set_last_displacement(dx);
+  }
   const std::int64_t row = 0;
   const auto bound = in.read_array("immersed_dt_bound", std::span(&row, 1));
   dt_bound_ = bound[0];

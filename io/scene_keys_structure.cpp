@@ -48,13 +48,16 @@ void declare_structure_keys(Schema& s) {
           "A marker farther than this beyond the fluid boundary (along the outward normal of "
           "the nearest boundary node in its support) stops the run naming the marker and the "
           "patch; the slack covers a curved wall's chord polygon and edges clamped on the wall");
-  s.choice("immersed.coupling", {"per_stage", "per_step"})
+  s.choice("immersed.coupling", {"per_stage", "per_step", "implicit"})
       .def("per_stage")
       .unit_of("-")
       .doc(
           "per_stage: forces spread and markers moved at every RK stage (1.24x the stable time "
           "step of per_step for 4x the transfer cost); per_step: forces held over the step "
-          "(ibm/immersed_structure.hpp)");
+          "(ibm/immersed_structure.hpp); implicit: the force extrapolated to the end of the step "
+          "is held, and the markers' displacement solves the backward-Euler linearisation "
+          "(I + dt^2/rho Interp Spread K) dX = dt U (ibm/implicit_markers.hpp): no time-step "
+          "bound of its own, so the flow's CFL and Fourier targets set dt (stiff leaflets)");
   s.real("immersed.dt_safety")
       .def(0.9)
       .in_range(0, 1)
@@ -378,8 +381,10 @@ ImmersedSetup read_immersed_setup(const Scene& scene, const flow::Mesh& mesh) {
   o.transfer.kernel.width = scene.get<double>("immersed.kernel_width");
   o.transfer.max_outside = scene.get<double>("immersed.max_outside");
   o.transfer.min_h = scene.get<double>("immersed.kernel_min_size");
-  o.mode = scene.get<std::string>("immersed.coupling") == "per_step" ? ibm::CouplingMode::per_step
-                                                                     : ibm::CouplingMode::per_stage;
+  const auto coupling = scene.get<std::string>("immersed.coupling");
+  o.mode = coupling == "per_step"   ? ibm::CouplingMode::per_step
+           : coupling == "implicit" ? ibm::CouplingMode::implicit
+                                    : ibm::CouplingMode::per_stage;
   o.fluid_density = scene.get<double>("flow.density");
   o.time_scheme = flow::parse_time_scheme(scene.get<std::string>("time.scheme"));
   o.box = periodic_box(scene, mesh);

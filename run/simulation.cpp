@@ -187,8 +187,8 @@ void Simulation::Parts::print_summary(const io::Scene& s, double rho, double vis
         "immersed: {} structure(s), {} markers, kernel {} width {} h, coupling {}, dt bound "
         "{:.4e} s (dt_safety {})\n",
         ib.num_bodies(), ib.num_markers(), ibm::kernel_name(o.transfer.kernel.type),
-        o.transfer.kernel.width, o.mode == ibm::CouplingMode::per_stage ? "per_stage" : "per_step",
-        immersed->dt_bound(), o.stability_safety);
+        o.transfer.kernel.width, ibm::coupling_name(o.mode), immersed->dt_bound(),
+        o.stability_safety);
   }
 }
 

@@ -1,0 +1,46 @@
+// The linearly implicit marker update of the immersed coupling (ImmersedOptions::mode =
+// CouplingMode::implicit). With solid inertia neglected, the explicit coupling is an oscillator
+// of frequency omega^2 = lambda_max(A K) / rho (ibm/ib_stability.hpp) whose bound, not the flow's
+// CFL, sets the time step of stiff thin leaflets. Here the markers' displacement over a step
+// solves the backward-Euler linearisation of the force,
+//   (I + dt^2/rho A K) dX = dt U*,   A = Interp Spread at X^n, K = -dF/dX at X^n,
+// with U* the fluid velocity interpolated at X^n after a flow step driven by the held force
+//   F(X^n) - K dX^{n-1}
+// (the force linearly extrapolated to the end of the step; dX^{n-1} is the previous step's
+// displacement). The fluid response inside the solve is the unprojected one (A without the
+// projection): that keeps the solve to spread-interpolate products. With the exact (projected)
+// response this would be the backward-Euler force of Newren, Fogelson, Guy & Kirby,
+// "Unconditionally stable discretizations of the immersed boundary equations", J. Comput. Phys.
+// 222 (2007) 702; the unprojected Schur complement is the approximation Ceniceros, Fisher & Roma,
+// J. Comput. Phys. 228 (2009) 7137, use to precondition theirs. Mode by mode (a projection that
+// scales the response by 0..1) the scheme is stable for every dt, but the projection couples the
+// modes, and the scheme is NOT unconditionally stable: on the stretched block of
+// tests/ibm/test_implicit_coupling its limit lies between 3 and 4 times the explicit per-stage
+// bound. Markers move by dX, not by dt times the final interpolated velocity: the slip is
+// (modelled - projected response) times the stiff part of the motion. In a steady state U* = 0
+// and the markers do not move, so a loaded closed valve stays where its load puts it.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+
+#include "ibm/dirac_transfer.hpp"
+
+namespace valsalva::ibm {
+
+struct ImplicitSolve {
+  Eigen::Matrix3Xd displacement;  // dX, 3 x markers
+  int iterations = 0;
+  double residual = 0;  // |b - M dX| / |b|
+};
+
+// Solves (I + c A K) dX = b (c = dt^2 / rho) by BiCGSTAB without a matrix: A through the
+// transfer's spread and interpolation at its located markers, K through `apply_stiffness`
+// (3 x markers, replicated). Collective; the result is identical on all ranks. Throws when the
+// solve does not reach `tolerance` in `max_iterations`.
+ImplicitSolve implicit_marker_displacement(
+    DiracTransfer& transfer,
+    const std::function<void(const Eigen::Matrix3Xd&, Eigen::Matrix3Xd&)>& apply_stiffness,
+    const Eigen::Matrix3Xd& b, double c, double tolerance = 1e-8, int max_iterations = 1000);
+
+}  // namespace valsalva::ibm
