@@ -46,7 +46,10 @@ std::string git_commit(const fs::path& source_dir) {
   const auto git = "git -C " + quoted(source_dir);
   const auto head = first_line_of(git + " rev-parse HEAD 2>/dev/null");
   if (head.empty()) return "unknown";
-  const auto changed = first_line_of(git + " status --porcelain --untracked-files=no 2>/dev/null");
+  // Stored records are data, not source: a record rewritten by an earlier --record does not make
+  // the source differ from HEAD.
+  const auto changed = first_line_of(git + " status --porcelain --untracked-files=no -- . " +
+                                     "':(exclude)validation/*/results/*.json' 2>/dev/null");
   return changed.empty() ? head : head + "+local changes";
 }
 
