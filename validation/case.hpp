@@ -57,7 +57,8 @@ class Report {
   bool all_pass() const;
   // {"case","ranks","wall_seconds","pass","metrics":[{"name","value","reference","tolerance",
   // "check","pass"}]}; a value that is not finite is null.
-  nlohmann::json to_json(const std::string& case_name, int ranks, double wall_seconds) const;
+  nlohmann::ordered_json to_json(const std::string& case_name, int ranks,
+                                 double wall_seconds) const;
   void write_json(const std::filesystem::path& file, const std::string& case_name, int ranks,
                   double wall_seconds) const;
 

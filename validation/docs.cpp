@@ -54,7 +54,7 @@ void write_lines(std::ostream& out, const std::vector<std::string>& lines, std::
 }
 
 struct CaseRecords {
-  std::optional<nlohmann::json> full, quick;
+  std::optional<nlohmann::ordered_json> full, quick;
 };
 
 CaseRecords records_of(const fs::path& case_dir) {

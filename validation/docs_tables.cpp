@@ -8,7 +8,7 @@
 
 namespace valsalva::validation {
 
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 
 std::string md_cell(const std::string& text) {
   std::string out;
@@ -57,11 +57,9 @@ double room(const json& m) {
   if (!std::isfinite(v)) return -std::numeric_limits<double>::infinity();
   const auto check = m.at("check").get<std::string>();
   const double tiny = std::numeric_limits<double>::min();
-  if (check == "within") {
-    // An exact check (a flag, a count) has no margin to speak of: met or not.
-    if (t == 0) return v == r ? 1.0 : -1.0;
-    return (t - std::abs(v - r)) / std::abs(t);
-  }
+  // An exact check (a flag, a count: no tolerance) has no margin to speak of: met or not.
+  if (t == 0 && v == r) return 1.0;
+  if (check == "within") return t == 0 ? -1.0 : (t - std::abs(v - r)) / std::abs(t);
   const double bound = check == "at_most" ? r + t : r - t;
   const double scale = std::max({std::abs(bound), std::abs(t), tiny});
   return (check == "at_most" ? bound - v : v - bound) / scale;

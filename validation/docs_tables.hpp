@@ -15,16 +15,16 @@ void write_md_table(std::ostream& out, const std::vector<std::string>& columns,
                     const std::vector<std::vector<std::string>>& rows);
 
 // A number as the tables print it (6 significant digits; "not finite" for null).
-std::string format_number(const nlohmann::json& value);
+std::string format_number(const nlohmann::ordered_json& value);
 // What a metric must satisfy: "5.58 +- 0.01", "<= 0.01", ">= 1.8".
-std::string metric_target(const nlohmann::json& metric);
+std::string metric_target(const nlohmann::ordered_json& metric);
 
 // The summary row of a record: {metric, measured, reference / target, result, date}. For a
 // measured record the metric shown is the first that fails, else the one with the least room
 // left to its bound; the result counts the metrics that pass.
-std::vector<std::string> summary_cells(const nlohmann::json& record);
+std::vector<std::string> summary_cells(const nlohmann::ordered_json& record);
 
 // "Full level" / "Quick level": where the numbers come from, then the tables.
-void write_record_results(std::ostream& out, const nlohmann::json& record);
+void write_record_results(std::ostream& out, const nlohmann::ordered_json& record);
 
 }  // namespace valsalva::validation

@@ -15,7 +15,7 @@
 namespace valsalva::validation {
 
 namespace fs = std::filesystem;
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 
 const char* level_name(Level level) {
   return level == Level::quick ? "quick" : "full";

@@ -41,14 +41,15 @@ struct RecordOrigin {
 RecordOrigin current_origin(const std::filesystem::path& source_dir, const std::string& command);
 
 // A measured record from a run's report (Report::to_json).
-nlohmann::json measured_record(const std::string& case_name, Level level,
-                               const nlohmann::json& report, const RecordOrigin& origin);
+nlohmann::ordered_json measured_record(const std::string& case_name, Level level,
+                                       const nlohmann::ordered_json& report,
+                                       const RecordOrigin& origin);
 
 // Writes `record` to `file` (its folder created), indented, with a final newline.
-void write_record(const std::filesystem::path& file, const nlohmann::json& record);
+void write_record(const std::filesystem::path& file, const nlohmann::ordered_json& record);
 
 // The record in `file`, or nothing when there is none; std::runtime_error naming the file when
 // it does not parse or lacks a field the documentation needs.
-std::optional<nlohmann::json> read_record(const std::filesystem::path& file);
+std::optional<nlohmann::ordered_json> read_record(const std::filesystem::path& file);
 
 }  // namespace valsalva::validation

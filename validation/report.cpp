@@ -42,13 +42,14 @@ const char* check_name(Check c) {
   return "?";
 }
 // JSON has no NaN or infinity: a value that is not finite is written as null (it fails).
-nlohmann::json json_number(double x) {
-  return std::isfinite(x) ? nlohmann::json(x) : nullptr;
+nlohmann::ordered_json json_number(double x) {
+  return std::isfinite(x) ? nlohmann::ordered_json(x) : nullptr;
 }
 }  // namespace
 
-nlohmann::json Report::to_json(const std::string& case_name, int ranks, double wall_seconds) const {
-  auto metrics = nlohmann::json::array();
+nlohmann::ordered_json Report::to_json(const std::string& case_name, int ranks,
+                                       double wall_seconds) const {
+  auto metrics = nlohmann::ordered_json::array();
   for (const auto& m : metrics_)
     metrics.push_back({{"name", m.name},
                        {"value", json_number(m.value)},

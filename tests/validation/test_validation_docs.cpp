@@ -15,7 +15,7 @@
 
 namespace fs = std::filesystem;
 using namespace valsalva::validation;
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 
 namespace {
 
