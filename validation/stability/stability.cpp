@@ -3,7 +3,6 @@
 // flow/run_diagnostics.hpp, recomputed every step), with the non-dissipative centred scheme, on
 // split tetrahedra and on 20 % perturbed tetrahedra, the latter with the solver's default
 // incremental projection (reported) and with periodic_pressure_damping (asserted).
-// Measured numbers, their run conditions and what they show: README.md in this folder.
 // Flow (validation/stability/stability.toml, run by `valsalva run`'s Simulation): Kolmogorov
 // forcing f = F sin(k y) e_x in the unit periodic box ([forcing], its discrete mean removed),
 // started from rest plus a divergence-free perturbation, Re = U / (nu k) = 16 (below the flow's
@@ -12,6 +11,7 @@
 // no blow-up (finite energy, bounded divergence), the steady kinetic energy against the analytic
 // U^2/4 within the discretisation error of the coarse mesh, and no drift: the energy's relative
 // change over the second half of the run.
+// Measured numbers, their run conditions and what they show: README.md in this folder.
 #include <fmt/format.h>
 
 #include <cmath>
