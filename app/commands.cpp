@@ -25,6 +25,8 @@
 #include "run/data_dir.hpp"
 #include "run/phase.hpp"
 #include "validation/case.hpp"
+#include "validation/docs.hpp"
+#include "validation/record.hpp"
 
 namespace valsalva::app {
 
@@ -94,7 +96,7 @@ int mesh_info(const std::filesystem::path& mesh_file, double scale) {
 }
 
 int validate(const std::string& case_name, bool list, bool quick, const std::string& out,
-             const std::vector<std::string>& settings, bool show_options) {
+             const std::vector<std::string>& settings, bool show_options, bool record) {
   const int rank = world_rank();
   if (list || case_name.empty()) {
     if (rank == 0)
@@ -114,6 +116,9 @@ int validate(const std::string& case_name, bool list, bool quick, const std::str
     }
     return 0;
   }
+  if (record && !settings.empty())
+    throw std::invalid_argument(
+        "validate: --record stores the case's own levels; it cannot be combined with --set");
   validation::Context ctx;
   ctx.options = validation::parse_case_options(*c, settings);
   ctx.quick = quick;
@@ -139,6 +144,18 @@ int validate(const std::string& case_name, bool list, bool quick, const std::str
                  m.pass() ? "ok" : "FAIL", m.name, m.value, m.reference, m.tolerance);
     fmt::print("{}: {} ({:.1f} s) -> {}\n", c->name, report.all_pass() ? "PASS" : "FAIL", wall,
                (ctx.out_dir / "report.json").string());
+    if (record) {
+      const auto level = quick ? validation::Level::quick : validation::Level::full;
+      const auto command = fmt::format("{}valsalva validate {}{}",
+                                       size > 1 ? fmt::format("mpiexec -n {} ", size) : "", c->name,
+                                       quick ? " --quick" : "");
+      const auto file = validation::record_file(ctx.case_dir, level);
+      validation::write_record(
+          file, validation::measured_record(c->name, level, report.to_json(c->name, size, wall),
+                                            validation::current_origin(run::data_dir(), command)));
+      fmt::print("{}: record -> {} (build/bin/valsalva docs-validation > docs/validation.md)\n",
+                 c->name, file.string());
+    }
   }
   const bool plotted = validation::run_plot_script(ctx);
   return report.all_pass() && plotted ? 0 : 1;
@@ -146,6 +163,13 @@ int validate(const std::string& case_name, bool list, bool quick, const std::str
 
 int docs_scenes() {
   io::write_scene_docs(std::cout);
+  return 0;
+}
+
+int docs_validation() {
+  if (world_rank() == 0)
+    validation::write_validation_docs(std::cout, run::data_dir() / "validation",
+                                      validation::registered_case_docs());
   return 0;
 }
 

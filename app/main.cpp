@@ -63,8 +63,14 @@ int main(int argc, char** argv) {
                   "Case option KEY=VALUE (repeatable; --options lists the case's options)")
       ->allow_extra_args(false);
   val->add_flag("--options", case_options, "List the case's options and exit");
+  bool record = false;
+  val->add_flag("--record", record,
+                "Store the run's report as the case's record of this level "
+                "(validation/<case>/results/{quick,full}.json, read by docs-validation)");
 
   auto* docs = cli.add_subcommand("docs-scenes", "Print the scene-key reference (docs/scenes.md)");
+  auto* docs_val = cli.add_subcommand(
+      "docs-validation", "Print the validation status (docs/validation.md) from the case records");
 
   std::function<int()> compare_piv;
   auto* piv = valsalva::app::add_compare_piv(cli, compare_piv);
@@ -89,8 +95,10 @@ int main(int argc, char** argv) {
     if (*check) code = valsalva::app::check_scene(scene, scene_settings);
     if (*info) code = valsalva::app::mesh_info(mesh_file, scale);
     if (*val)
-      code = valsalva::app::validate(case_name, list, quick, out, case_settings, case_options);
+      code =
+          valsalva::app::validate(case_name, list, quick, out, case_settings, case_options, record);
     if (*docs) code = valsalva::app::docs_scenes();
+    if (*docs_val) code = valsalva::app::docs_validation();
     if (*piv) code = compare_piv();
     if (*psd_cmd) code = psd();
     if (*close_cmd) code = close_leaflets();

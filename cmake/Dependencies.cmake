@@ -6,6 +6,7 @@ find_package(fmt REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
 find_package(tomlplusplus REQUIRED)
 find_package(doctest REQUIRED)
+find_package(nlohmann_json 3.11 REQUIRED)  # JSON of validation reports and records
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
 

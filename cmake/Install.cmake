@@ -6,7 +6,7 @@ include(GNUInstallDirs)
 install(TARGETS valsalva RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/validation/ DESTINATION ${CMAKE_INSTALL_DATADIR}/valsalva/validation
   FILES_MATCHING PATTERN "*.py" PATTERN "*.toml" PATTERN "*.csv" PATTERN "*.txt" PATTERN "*.dat"
-  PATTERN "*.gdiag" PATTERN "*.es" PATTERN "*.f_t" PATTERN "*.md"
+  PATTERN "*.gdiag" PATTERN "*.es" PATTERN "*.f_t" PATTERN "*.md" PATTERN "*.json"
   PATTERN "bench" EXCLUDE)
 install(FILES ${PROJECT_SOURCE_DIR}/io/plot_piv.py ${PROJECT_SOURCE_DIR}/io/plot_psd.py
   DESTINATION ${CMAKE_INSTALL_DATADIR}/valsalva/io)

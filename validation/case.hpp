@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -54,7 +55,10 @@ class Report {
   }
   const std::vector<Metric>& metrics() const { return metrics_; }
   bool all_pass() const;
-  // {"case","ranks","wall_seconds","metrics":[{"name","value","reference","tolerance","pass"}]}
+  // {"case","ranks","wall_seconds","pass","metrics":[{"name","value","reference","tolerance",
+  // "check","pass"}]}; a value that is not finite is null.
+  nlohmann::ordered_json to_json(const std::string& case_name, int ranks,
+                                 double wall_seconds) const;
   void write_json(const std::filesystem::path& file, const std::string& case_name, int ranks,
                   double wall_seconds) const;
 

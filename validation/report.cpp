@@ -1,8 +1,10 @@
 #include <fmt/format.h>
-#include <fmt/os.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "validation/case.hpp"
 
@@ -28,18 +30,6 @@ bool Report::all_pass() const {
 }
 
 namespace {
-std::string json_number(double x) {
-  if (!std::isfinite(x)) return "null";
-  return fmt::format("{:.17g}", x);
-}
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
 const char* check_name(Check c) {
   switch (c) {
     case Check::within:
@@ -51,25 +41,34 @@ const char* check_name(Check c) {
   }
   return "?";
 }
+// JSON has no NaN or infinity: a value that is not finite is written as null (it fails).
+nlohmann::ordered_json json_number(double x) {
+  return std::isfinite(x) ? nlohmann::ordered_json(x) : nullptr;
+}
 }  // namespace
+
+nlohmann::ordered_json Report::to_json(const std::string& case_name, int ranks,
+                                       double wall_seconds) const {
+  auto metrics = nlohmann::ordered_json::array();
+  for (const auto& m : metrics_)
+    metrics.push_back({{"name", m.name},
+                       {"value", json_number(m.value)},
+                       {"reference", json_number(m.reference)},
+                       {"tolerance", json_number(m.tolerance)},
+                       {"check", check_name(m.check)},
+                       {"pass", m.pass()}});
+  return {{"case", case_name},
+          {"ranks", ranks},
+          {"wall_seconds", json_number(wall_seconds)},
+          {"pass", all_pass()},
+          {"metrics", metrics}};
+}
 
 void Report::write_json(const std::filesystem::path& file, const std::string& case_name, int ranks,
                         double wall_seconds) const {
-  auto out = fmt::output_file(file.string());
-  out.print("{{\n  \"case\": {},\n  \"ranks\": {},\n  \"wall_seconds\": {},\n  \"pass\": {},\n",
-            json_string(case_name), ranks, json_number(wall_seconds),
-            all_pass() ? "true" : "false");
-  out.print("  \"metrics\": [\n");
-  for (std::size_t i = 0; i < metrics_.size(); ++i) {
-    const auto& m = metrics_[i];
-    out.print(
-        "    {{\"name\": {}, \"value\": {}, \"reference\": {}, \"tolerance\": {}, \"check\": "
-        "\"{}\", \"pass\": {}}}{}\n",
-        json_string(m.name), json_number(m.value), json_number(m.reference),
-        json_number(m.tolerance), check_name(m.check), m.pass() ? "true" : "false",
-        i + 1 < metrics_.size() ? "," : "");
-  }
-  out.print("  ]\n}}\n");
+  std::ofstream out(file);
+  out << to_json(case_name, ranks, wall_seconds).dump(2) << "\n";
+  if (!out) throw std::runtime_error("validate: could not write " + file.string());
 }
 
 bool run_plot_script(const Context& ctx) {

@@ -13,16 +13,7 @@
 //        [--t-end 10] [--operators order2|order4] [--out bench-results/tgv_re1600]
 // --operators order4: the 4th-order gradient, divergence and viscous term
 // (ProjectionOptions::fourth_order_operators); the CSV name and summary row carry "+op4".
-// Measured (1 rank, CPU s; max -dE/dt error as a fraction of the reference peak; no model):
-//   central2 32^3 0.338 (5.5 s), 64^3 0.166 (96 s)
-//   central4 32^3 8.18, 40^3 1.90 (13 s), 48^3 blows up
-//   central4 + op4 32^3 1.013 (7.4 s), 40^3 0.551 (19.5 s), 48^3 0.372 (38.8 s)
-// The target (central4 at central2's 64^3 error with 4x less CPU, i.e. <= 0.166 within
-// 24 s) is not met. The 4th-order operators keep central4 from blowing up on the coarse meshes,
-// but its worst error is a dip of -dE/dt at t ~ 7.5-8.3, below the reference and at 32^3
-// negative (the kinetic energy grows): the scheme is not discretely energy-conserving once the
-// flow is under-resolved (the Hermite face values are not skew-symmetric with the collocated
-// projection's mass flux), so it has no dissipation to lose and gains energy instead.
+// Measured numbers: validation/notes/bench_tgv_re1600.md.
 #include <fmt/format.h>
 #include <mpi.h>
 #include <sys/resource.h>

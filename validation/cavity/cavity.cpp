@@ -19,27 +19,7 @@
 // the finest level, the target 1 %; plus the h -> 0 Richardson estimate of the two finest
 // levels (order 2).
 //
-// Measured (`valsalva validate cavity`, 1 rank, machine shared with two other jobs; wall s):
-//   Re 100   N = 24: 2.63 %   48: 1.13 %   96: 0.98 % (pass)   h -> 0: 0.93 %   1.6 / 11.5 / 82 s
-//   Re 1000  N = 32: 41.6 %   64: 8.13 %  128: 3.00 % (FAIL)   h -> 0: 1.64 %   5 / 21 / 215 s
-//   with --set re1000_finest=256 also N = 256: 2.11 % (FAIL), h -> 0 (128/256): 1.82 %, 2334 s
-//   (5681 steps to t = 11.9 from the 128^2 field; that run shared the machine with 3 jobs).
-// Total without 256^2: 5.6-6.5 min wall, 4.3 min CPU (the 96^2 and 128^2 levels took 193 s
-// and 457 s when the machine was busier). Self-convergence orders (max |profile_2N - profile_N|
-// at Ghia's points): Re 100 3.35, Re 1000 2.78 (2.54 with 256^2). Both maxima sit in v(x) near
-// the right wall (Re 100 at x = 0.8594, Re 1000 at x = 0.9453-0.9531: the wall layer there is a
-// few cells thick at 64^2, where v overshoots).
-// Why Re 1000 stays above 1 %: the deviation does not tend to zero but to Ghia's own error.
-// O. Botella, R. Peyret, Comput. Fluids 27 (1998) 421-433 (Chebyshev, N = 160) give at Ghia's
-// points v(0.9453) = -0.41038 (Ghia -0.39188), v(0.9531) = -0.35532 (-0.33714),
-// v(0.9063) = -0.52644 (-0.51550), u(0.1719) = -0.38857 (-0.38289): Ghia is off by up to
-// 1.85 % of U. Against those values our max deviation is 1.15 % of U at 128^2 and 0.26 % at
-// 256^2; the 128^2/256^2 Richardson profile agrees with them to 0.06 % of U at every point
-// (64^2/128^2: 0.57 %) and deviates from Ghia by 1.82 %; our own error at x = 0.9453 (5.2 %
-// at 64^2, 1.2 % at 128^2, 0.26 % at 256^2) falls as h^2. No converging solver meets 1 %
-// against this table at Re 1000; the check is kept at the 1 % and fails. (Re 100:
-// Ghia's table is off by ~0.9 % of U, v extrema 0.17527/-0.24533 against 0.1796/-0.2538 of
-// spectral solutions, so the 1 % passes with little margin.)
+// Measured numbers, their run conditions and what they show: README.md in this folder.
 #include <fmt/format.h>
 
 #include <chrono>

@@ -3,14 +3,6 @@
 // flow/run_diagnostics.hpp, recomputed every step), with the non-dissipative centred scheme, on
 // split tetrahedra and on 20 % perturbed tetrahedra, the latter with the solver's default
 // incremental projection (reported) and with periodic_pressure_damping (asserted).
-// What the perturbed-tetrahedra energy growth of earlier versions (9.4 x the laminar value over
-// 10^5 steps) was, measured (energy budget per term): not the discretisation gaining energy
-// (convection is energy-neutral to round-off, tests/flow/test_energy_conservation.cpp; the
-// viscous and pressure terms dissipate) but (1) the nodal forcing's discrete mean, a net force
-// on the periodic box that made the mean flow grow linearly (removed: flow/body_forcing.hpp), and
-// (2) a slow transient of the incremental projection: pressure modes the wide gradient hardly sees
-// decay over ~2600 steps, which leaves a drift of a few 1e-8 over the second half of 10^5 steps;
-// the pressure damping that boundary conditions always switch on removes it.
 // Flow (validation/stability/stability.toml, run by `valsalva run`'s Simulation): Kolmogorov
 // forcing f = F sin(k y) e_x in the unit periodic box ([forcing], its discrete mean removed),
 // started from rest plus a divergence-free perturbation, Re = U / (nu k) = 16 (below the flow's
@@ -19,6 +11,7 @@
 // no blow-up (finite energy, bounded divergence), the steady kinetic energy against the analytic
 // U^2/4 within the discretisation error of the coarse mesh, and no drift: the energy's relative
 // change over the second half of the run.
+// Measured numbers, their run conditions and what they show: README.md in this folder.
 #include <fmt/format.h>
 
 #include <cmath>

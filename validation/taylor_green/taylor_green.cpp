@@ -11,28 +11,8 @@
 // Time step of the 4th-order runs: dt ~ h^2 (validation::fourth_order_spec; projection + RK4 has
 // an O(dt^2) error ~0.012 dt^2 at Re 100 that a fixed CFL would show as order 2).
 //
-// Measured (central4 + 4th-order operators, bench_taylor_green_study, 1 rank; L2 / Linf):
-//   hexa    n 16 1.086e-5 / 1.415e-5, n 32 7.14e-7 / 9.09e-7, n 64 4.51e-8 / 5.75e-8:
-//           orders 3.99 / 3.98 (32 -> 64), 3.93 / 3.96 (16 -> 32)
-//   tetra   n 16 1.01e-3 / 1.38e-3, n 32 6.72e-5 / 9.51e-5, n 64 4.27e-6 / 6.04e-6:
-//           orders 3.98 / 3.98 (32 -> 64), 3.91 / 3.86 (16 -> 32)
-//   perturbed tetra n 16 3.17e-2 / 8.1e-2, n 32 5.53e-3 / 1.75e-2, n 64 1.23e-3 / 5.05e-3:
-//           orders 2.16 / 1.80 (32 -> 64); at n 32 the same as central2 (5.4e-3) and central4
-//           with the 2nd-order operators (6.0e-3): the edge corrections need symmetric stars.
-//   `valsalva validate taylor_green --quick` (16, 32, 64; 259 s on the shared machine) gives
-//   the same to 3 digits with the tetra dt constant 0.05: tetra 4.27e-6 at n 64, orders
-//   3.98 / 3.98, perturbed 2.18 / 1.74; hexa time check (n 32, dt/2) 0.934, tetra 0.9994.
-//   Truncation orders (n 32 -> 64): viscous 3.99 hexa, 3.98 tetra; pressure gradient 3.98
-//   both; convection 3.99 / 3.98. Perturbed tetra: pressure gradient 0.99, viscous O(1)
-//   (2.0e-3, the P1 weights' error).
-//   `valsalva validate taylor_green` (4 levels 16..128, all checks pass, 1497 s on the shared
-//   machine): central4 + 4th-order operators L2 at n 128: hexa 2.82e-9, tetra 2.68e-7,
-//   perturbed 2.95e-4; orders 64 -> 128 (L2): hexa 4.00, tetra 3.99 (Linf 3.99), perturbed
-//   2.06 (Linf 2.08); central2 hexa 2.00, tetra 2.00, perturbed 2.28. Steps at n 128: 5120
-//   (hexa, dt 1.95e-4), 1280 (tetra).
-//   build/bin/bench_taylor_green_study --cell hexa|tetra [--perturbation 0.2] --n N --cfl 0.1
-//     --dt_max DT
 // CSV: errors.csv (error vs h and vs wall time), terms.csv; plot.py makes taylor_green.png.
+// Measured numbers, their run conditions and what they show: README.md in this folder.
 #include <fmt/format.h>
 #include <fmt/os.h>
 

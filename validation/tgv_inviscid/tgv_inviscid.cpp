@@ -4,15 +4,7 @@
 // convective times) at CFL 0.5 on a periodic slab (hexahedra and Kuhn-split tetrahedra), both
 // convective schemes, and reports the drift E(10)/E(0) - 1 and the velocity error against the
 // steady exact state, at CFL 0.5 and 0.25 (and 0.125) to find the cause of the drift.
-// Measured (n 32; energy.csv, plot): the loss happens in the first 2 steps and scales as dt^2
-// (-4.9e-5, -1.2e-5, -3.0e-6 hexa central2; -1.3e-4, -3.3e-5, -8.2e-6 central4 at CFL 0.5,
-// 0.25, 0.125): the exact continuous (u, p) is not in discrete balance, and the first pressure
-// increments project the imbalance out of the velocity, removing |dt grad dp|^2-sized energy.
-// After that the energy stays constant: E(10)/E(1) - 1 = -5e-9 (hexa) for both schemes, as
-// centred schemes do semi-discretely; RK4's own damping of a skew operator (~ dt^5) is below
-// that. On split tetrahedra central4 drifts by +3e-7 independently of dt (its Hermite terms
-// are not skew-symmetric: a spatial, not a temporal, drift) and central2 by +3e-5 ~ dt^2 (its
-// discrete state moves away from the exact vortex: velocity error 4e-2 against 2e-3).
+// Measured numbers, their run conditions and what they show: README.md in this folder.
 // Asserted: total drift E(10)/E(0) - 1, the dt exponent of the start-up loss (2 +- 0.3) and
 // the long-time drift E(10)/E(1) - 1, each within about twice the measured value.
 // CSV: energy.csv (time series), drift.csv; plot.py makes tgv_inviscid.png.

@@ -5,12 +5,7 @@
 // the default) changes. Target (issue 4): 64^3 central4 sigma peak within 5 % in value and 0.5
 // in time. CSV: dissipation.csv (every run), table.csv (one row per run); plot.py -> PNG.
 // Quick version: the same at 32^3 for central4 sigma only.
-// Measured (np 1, `valsalva validate tgv_les`, 1538 s wall on a loaded machine; CPU per run
-// 63-94 s): peak -dE/dt error / peak time error, central4: sigma -1.09 % / -0.29 (per stage
-// -1.74 %), WALE +0.99 % / -0.10, Smagorinsky -8.1 % / -0.69, none +10.4 % / -0.54 (no blow-up at
-// 64^3, but a noisy rate); central2: sigma -17.3 % / -1.32, none -9.6 % / -0.29. Every model
-// dissipates ~50 % too much in the laminar phase (t < 4), so the max error over the curve is
-// 0.25-0.29 of the peak (central2 none: 0.17).
+// Measured numbers, their run conditions and what they show: README.md in this folder.
 #include <fmt/format.h>
 #include <fmt/os.h>
 

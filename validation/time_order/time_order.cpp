@@ -19,29 +19,7 @@
 // and its CPU time at equal error within 0.5 of it (timing noise); with project_stages, an error at
 // most rk4_jameson's and a CPU time at equal error at least rk4_jameson's (the reason the default
 // is rk4_jameson without stage projections: the check fails when that stops being true).
-// Measured 2026-12-03 (`valsalva validate time_order`, 1 rank, 1082 s on the shared machine;
-// an earlier run with flow::RunLoop driven directly gave the same errors to 7 digits; velocity
-// L2 error, dt = 0.1 ... 0.00625, reference dt 7.8e-4):
-//   rk4_jameson                 8.73e-4  2.33e-4  6.11e-5  1.55e-5  3.84e-6
-//   orders 1.90 1.93 1.98 2.01
-//   rk4_classic                 8.81e-4  2.35e-4  6.16e-5  1.56e-5  3.87e-6
-//   orders 1.91 1.93 1.98 2.01
-//   rk4_jameson+project_stages  4.08e-4  1.26e-4  3.60e-5  9.29e-6  2.33e-6
-//   orders 1.70 1.80 1.95 2.00
-//   rk4_classic+project_stages  4.11e-4  1.26e-4  3.61e-5  9.32e-6  2.33e-6
-//   orders 1.70 1.81 1.95 2.00 CPU at equal error / rk4_jameson's: classic 0.89 (timing noise: same
-//   work per step), jameson+project_stages 2.06, classic+project_stages 2.31 (3.2x the work per
-//   step for 0.61x the error). So rk4_jameson stays the default.
-// What limits the order (measured, see docs/validation.md): not the Runge-Kutta scheme (on a
-// spatially uniform field, where the projection is exact, rk4_classic is 4th order and
-// rk4_jameson 2nd, tests/flow/test_time_scheme.cpp; here classic and jameson give the same
-// error to 1 %), and not the linear terms (at U0 = 1e-4, Re 0.16, the error falls as
-// U0^2.6, not U0); the error falls with h at fixed dt (16^3 -> 32^3: x2 without, x3.5 with
-// project_stages), and with the approximate projection repeated 3 and 10 times per solve
-// (an experiment, not in the code; 16^3) by x3.8 and x24 with project_stages (x2.8 and x4
-// without), still at order 2 and classic still equal to jameson: the
-// approximate projection of the node-centred scheme (nodal velocity not discretely
-// divergence-free) is the main part of the 2nd-order error.
+// Measured numbers, their run conditions and what they show: README.md in this folder.
 // CSV: errors.csv; plot.py makes time_order.png (error against dt and against CPU time).
 #include <fmt/format.h>
 #include <fmt/os.h>

@@ -15,41 +15,7 @@
 // frequency, drag and lift mean and amplitude against TH2006 within 10 % (fsi3_series.csv,
 // fsi3_summary.csv). Both use the per-step coupling (why: fsi1_level and fsi3_spec below).
 // Quick: FSI1 on the coarse mesh to t = 1.4 s.
-// Measured (1 rank; FSI1 levels run one at a time with --set fsi1_level=i, the finest
-// to t = 2.0 s only; TH2006: ux_A 2.27e-5 m, uy_A 8.209e-4 m, drag 14.295, lift 0.7638 N/m):
-//   size   nodes  markers  ux_A      uy_A      drag   lift   drag spread (last window)
-//   0.02    3785   555    -3.23e-5  -3.56e-3  21.54  1.652  14 %
-//   0.014   6235   765     2.30e-5  -4.97e-4  18.13  1.087   4 %
-//   0.01   10525  1775     1.13e-4   1.88e-3  17.49  0.876   8 %
-// Drag and lift converge towards TH2006 at about first order in h (+51, +27, +22 %); uy_A and
-// ux_A do not converge: the slow bending mode has not decayed, and the bar's root lies within
-// the kernel half-width (2h) of the no-slip cylinder, whose zero velocity holds those markers
-// wherever the impulsive start left them (the split of the force between bar and cylinder
-// depends on that history; their sum, the reported drag and lift, does not).
-// Kernel width (stop 14; `--set part=fsi1 --set fsi1_level=i --set kernel=K --set kernel_width=W`,
-// to 2.5 s, drag averaged over the last 0.75 s; TH2006 14.295 N/m):
-//   size 0.02:  peskin4 4 h 21.54 (+51 %), bspline3 4 h 19.66 (+38 %), peskin4 3 h 19.08 (+33 %),
-//               roma3 3 h 18.98 (+33 %), peskin4 2.5 h 18.55 (+30 %), peskin4 2 h 18.44 (+29 %)
-//   peskin4 3 h: size 0.02 / 0.014 / 0.01: 19.08 / 17.15 / 16.49 (+33 / +20 / +15 %; 4 h: +51 /
-//               +27 / +22 %), drag spread over the last window 2 / 5 / 6 %
-//   peskin4 3 h, size 0.007 / far 0.03 (stop 15; `--set part=fsi1 --set fsi1_size_near=0.007
-//               --set fsi1_size_far=0.03 --set kernel_width=3`, 19710 nodes, 3535 markers, 35792
-//               steps, ~2100 s CPU): drag 15.83 (+10.7 %), lift 0.7463 (-2.3 %), ux_A 2.51e-5
-//               (+10.6 %), uy_A 1.078e-3 (+31 %), drag spread over the last window 6 %
-// The narrower support removes about a third of the excess, but the excess saturates near +29 %
-// at size 0.02 as the width goes to 2 h: the kernel width is not the only limit, the bar's
-// resolution (0.02 thick = 1-2 fluid cells) is. At 3 h the excess falls at first order in h
-// (+33, +20, +15, +10.7 %; 0.01 -> 0.007: order 0.95), so 5 % needs size ~0.0033 near the bar:
-// ~4.5x the nodes of size 0.007 and ~2x the steps (coupling bound dt ~ h), about 5-6 CPU hours.
-// The default stays 4 h (the scene default, and the quick check's plateau).
-// FSI3 at size 0.02 to 6 s: uy_A amplitude 34.6 mm over the last period (+0.6 %), but 24..50 mm
-// from period to period (mean 38.1, std 8.3), 5.54 Hz (+4.5 %); forces spiky (drag 853 +- 748,
-// lift 2.5 +- 579: the bar is one element thick and the 4h kernel 0.08 wide). At size 0.014 the
-// flutter does not develop up to t = 10 s (uy_A within -4.5..+6.5 mm throughout, 8.8 Hz, drag
-// 411 +- 19 N/m, lift 15 +- 42): the coarse agreement is not evidence of accuracy.
-// Cost (idle machine, per step coupling, FSI3): size 0.02 47 s per simulated second at 1 rank,
-// 33 s at 2; size 0.01 362 s at 1 rank, 243 s at 2 (per stage: 580 s at 1 rank). The marker
-// location (RKPM kernel and moment matrix per marker, each step) is ~95 % of the IB share.
+// Measured numbers, their run conditions and what they show: README.md in this folder.
 // Options (`valsalva validate turek_hron_fsi --set key=value`; `--options` lists them), so that
 // the default run stays within the CPU budget:
 //   part=fsi1|fsi3|timing   only one of the two cases, or the cost run: 300 FSI3 steps at the
