@@ -45,17 +45,18 @@ void RunLoop::install_forcing() {
     else
       f = *field;
   };
-  solver_.set_body_force([prescribed, coupled = options_.coupling.body_force](
-                             int stage, double t, const VectorField& u, VectorField& f) {
-    if (!coupled) {
-      prescribed(t, f);
-      return;
-    }
-    coupled(stage, t, u, f);
-    VectorField own(f.size());
-    prescribed(t, own);
-    for (std::size_t j = 0; j < f.size(); ++j) f[j] += own[j];
-  });
+  solver_.set_body_force(
+      [prescribed, coupled = options_.coupling.body_force, own = std::make_shared<VectorField>()](
+          int stage, double t, const VectorField& u, VectorField& f) {
+        if (!coupled) {
+          prescribed(t, f);
+          return;
+        }
+        coupled(stage, t, u, f);
+        own->resize(f.size());
+        prescribed(t, *own);
+        for (std::size_t j = 0; j < f.size(); ++j) f[j] += (*own)[j];
+      });
 }
 
 void RunLoop::update_forcing_field() {
@@ -94,9 +95,14 @@ std::string RunLoop::forcing_log_header() const {
 std::string RunLoop::forcing_log_row() const {
   const auto type = options_.forcing.type;
   if (type != ForcingSpec::Type::uniform && type != ForcingSpec::Type::flow_rate) return {};
-  const Eigen::Vector3d f = (*prescribed_force_)[0];  // uniform: every node holds it
   // + 0.0: no "-0" in the log for a component the direction does not have.
-  std::string row = fmt::format(",{:.17g},{:.17g},{:.17g}", f.x() + 0.0, f.y() + 0.0, f.z() + 0.0);
+  const Eigen::Vector3d f =
+      (flow_rate_control_
+           ? Eigen::Vector3d(flow_rate_control_->force() * flow_rate_control_->direction())
+           : options_.forcing.uniform_force(state_.time))
+          .array() +
+      0.0;
+  std::string row = fmt::format(",{:.17g},{:.17g},{:.17g}", f.x(), f.y(), f.z());
   if (flow_rate_control_) row += fmt::format(",{:.17g}", flow_rate_control_->target(state_.time));
   return row;
 }

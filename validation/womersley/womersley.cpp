@@ -294,9 +294,9 @@ void run_case(const Context& ctx, Report& report) {
   if (rank == 0) write_profiles(ctx, runs);
 
   if (ctx.quick) {
-    // Quick: Wo 4 on the extruded D/10 pipe, 1st period. The bound (docs/validation.md: the
-    // measured error + 45 %) fails on the Delaunay mesh of the same size and for a wrong phase
-    // or amplitude of the inlet (O(1) errors).
+    // Quick: Wo 4 on the extruded D/10 pipe, 1st period. The bound (the measured error with
+    // margin, docs/validation.md) fails on the Delaunay mesh of the same size and for a wrong
+    // phase or amplitude of the inlet (O(1) errors).
     report.add("Wo 4, D/10: max axial error / u_peak (1st period)", runs[0].max_error, 0.0, 0.035,
                Check::at_most);
     // The exact parallel field has a rank-1 velocity gradient: sigma3 = 0 up to the SVD's
