@@ -51,18 +51,19 @@ int check_scene(const std::filesystem::path& scene_file, const std::vector<std::
   Phase phase("reading the scene " + scene_file.string());
   const auto scene = io::load_scene(scene_file, settings);
   phase.next(mesh_phase(scene));
-  const auto mesh = io::build_mesh(scene);
+  const auto mesh = io::build_mesh(scene, MPI_COMM_WORLD);
   phase.next(fmt::format("computing the dual metrics of the mesh ({} nodes, {} cells)",
                          mesh.num_nodes(), mesh.num_cells()));
   const auto metrics = flow::compute_dual_metrics(mesh);
   phase.next("checking the scene against the mesh");
-  io::read_boundary_conditions(scene, mesh);  // every non-periodic patch has a valid condition
-  io::read_analysis_options(scene, mesh);     // probes, samples, statistics, wall shear
+  const auto boundary = io::read_boundary_conditions(scene, mesh);  // every patch has a condition
+  io::read_analysis_options(scene, mesh);  // probes, samples, statistics, wall shear
   const auto immersed = io::read_immersed_setup(scene, mesh);  // meshes, materials, clamps
   io::read_valve_monitor_options(scene, mesh);                 // [valve]: its structure and patches
   io::check_les_scene(scene);                                  // LES output fields
   io::flow_run_options(scene, {});                             // time step, output volume
   io::check_initial_state(scene, mesh);  // a Taylor-Green start on a 2 pi L-periodic mesh
+  io::check_forcing(scene, boundary);    // a flow-rate drive on a domain closed by walls
   io::check_step_count(scene, metrics);  // the viscous bound on dt against time.end
   std::string coupling;
   if (!immersed.empty()) {  // every marker in the fluid, as the run places them

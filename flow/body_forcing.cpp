@@ -6,10 +6,27 @@
 
 namespace valsalva::flow {
 
+Eigen::Vector3d ForcingSpec::uniform_force(double t) const {
+  switch (waveform) {
+    case Waveform::Kind::sine:
+      return force + amplitude * std::sin(2 * std::numbers::pi * t / period + phase);
+    case Waveform::Kind::table:
+      return force * factor(t);
+    case Waveform::Kind::constant:
+      break;
+  }
+  return force;
+}
+
+bool ForcingSpec::time_dependent() const {
+  return type == Type::flow_rate || (type == Type::uniform && waveform != Waveform::Kind::constant);
+}
+
 VectorField forcing_density(const LocalMesh& local, const ForcingSpec& spec) {
   VectorField f(local.num_local(), Eigen::Vector3d::Zero());
   if (spec.type == ForcingSpec::Type::uniform) {
-    for (auto& v : f) v = spec.force;
+    const Eigen::Vector3d f0 = spec.uniform_force(0.0);
+    for (auto& v : f) v = f0;
   } else if (spec.type == ForcingSpec::Type::kolmogorov) {
     const double k = 2 * std::numbers::pi / spec.wavelength;
     const Eigen::Vector3d across = spec.across.normalized();

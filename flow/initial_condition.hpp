@@ -18,9 +18,17 @@
 namespace valsalva::flow {
 
 struct InitialCondition {
-  std::string type = "rest";  // rest | taylor_green | taylor_green_3d | cyclic_sines
+  std::string type = "rest";  // rest | taylor_green | taylor_green_3d | cyclic_sines | womersley
   double velocity = 1.0;      // U0, m/s (taylor_green, taylor_green_3d, cyclic_sines)
   double length = 1.0;        // L, m: the period is 2 pi L (the vortices, cyclic_sines)
+  // womersley: Womersley's pipe flow (flow/womersley.hpp) at t = 0 for the flow rate
+  // Q(t) = flow_rate + amplitude sin(2 pi t / period + phase) in a pipe of `radius` about the
+  // axis through `point` along `axis`; the velocity u(r, 0) axis (r capped at the radius), and
+  // with pressure_gradient the pressure -rho G(0) (x - point) . axis of the exact solution
+  // (zero on the plane through point; else p = 0, a periodic pipe driven by a body force).
+  double radius = 1, flow_rate = 0, amplitude = 0, period = 1, phase = 0;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero(), axis = Eigen::Vector3d::UnitZ();
+  bool pressure_gradient = false;
 };
 
 // A divergence-free 3D field (each component varies only across itself), pressure 0: a start

@@ -12,6 +12,7 @@
 
 #include "flow/outlet_log.hpp"
 #include "flow/poisson_weights.hpp"
+#include "flow/womersley.hpp"
 
 namespace valsalva::flow {
 
@@ -62,26 +63,23 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
   } else if (ic.type == "cyclic_sines") {
     for (int j = 0; j < n; ++j)
       state_.velocity[j] = cyclic_sines(local.position[j], ic.velocity, ic.length);
+  } else if (ic.type == "womersley") {
+    const auto exact = Womersley::from_sine(ic.radius, options_.projection.viscosity, ic.flow_rate,
+                                            ic.amplitude, ic.period, ic.phase);
+    const Eigen::Vector3d axis = ic.axis.normalized();
+    const double g0 = exact.pressure_gradient(0.0);
+    for (int j = 0; j < n; ++j) {
+      const Eigen::Vector3d x = local.position[j] - ic.point;
+      const double s = x.dot(axis), r = std::min((x - s * axis).norm(), ic.radius);
+      state_.velocity[j] = exact.velocity(r, 0.0) * axis;
+      if (ic.pressure_gradient) state_.pressure[j] = -options_.projection.density * g0 * s;
+    }
   } else if (ic.type != "rest") {
     throw RunError("flow run: unknown initial.type '" + ic.type +
-                   "' (accepted: rest, taylor_green, taylor_green_3d, cyclic_sines)");
+                   "' (accepted: rest, taylor_green, taylor_green_3d, cyclic_sines, womersley)");
   }
   impose_initial_boundary_values();
-  if (options_.forcing.type != ForcingSpec::Type::none) {
-    prescribed_force_ =
-        std::make_shared<const VectorField>(forcing_density(local, options_.forcing));
-    solver_.set_body_force([prescribed = prescribed_force_, coupled = options_.coupling.body_force](
-                               int stage, double t, const VectorField& u, VectorField& f) {
-      if (!coupled) {
-        f = *prescribed;
-        return;
-      }
-      coupled(stage, t, u, f);
-      for (std::size_t j = 0; j < f.size(); ++j) f[j] += (*prescribed)[j];
-    });
-  } else if (options_.coupling.body_force) {
-    solver_.set_body_force(options_.coupling.body_force);
-  }
+  install_forcing();
 }
 
 void RunLoop::impose_initial_boundary_values() {
@@ -123,6 +121,7 @@ void RunLoop::resume(FlowState state, std::int64_t step, const ScalarField& pres
                      std::to_string(lumped->count()) + " resistance/RCR outlets");
     lumped->restore(lumped_outlets);
   }
+  update_forcing_field();  // a time-dependent force at the resumed time
   resumed_ = true;
 }
 
@@ -289,6 +288,7 @@ RunSummary RunLoop::run() {
         csv << ",pressure_" << name;
         if (lumped->spec(k).type == BoundaryType::rcr_outlet) csv << ",distal_pressure_" << name;
       }
+    csv << forcing_log_header();
     csv << "\n";
   }
   std::optional<OutletLog> outlet_log;
@@ -324,6 +324,13 @@ RunSummary RunLoop::run() {
     last_good_.time = state_.time;
     try {
       report = solver_.step(state_, dt);
+      if (flow_rate_control_) {
+        // The flux through the section held at its target (flow/flow_rate_control.hpp).
+        EdgeField flux = solver_.face_flux();
+        flow_rate_control_->correct(state_.velocity, flux, dt, rho, state_.time);
+        solver_.set_face_flux(flux, state_.velocity);
+      }
+      update_forcing_field();
       if (options_.coupling.finish_step) options_.coupling.finish_step(state_);
     } catch (const std::exception& e) {
       ++step_;
@@ -396,7 +403,7 @@ RunSummary RunLoop::run() {
                    "6e},{:.6e}{}\n",
                    step_, state_.time, dt, cfl, fourier, report.max_divergence, energy,
                    report.poisson.iterations, report.poisson.relative_residual, per_step, eta,
-                   flux_csv, imbalance, report.divergence_number, lumped_csv)
+                   flux_csv, imbalance, report.divergence_number, lumped_csv + forcing_log_row())
             << std::flush;
     }
     if (fields) {

@@ -22,6 +22,7 @@
 #include "flow/body_forcing.hpp"
 #include "flow/boundary_conditions.hpp"
 #include "flow/dual_metrics.hpp"
+#include "flow/flow_rate_control.hpp"
 #include "flow/initial_condition.hpp"
 #include "flow/local_mesh.hpp"
 #include "flow/mesh.hpp"
@@ -89,6 +90,8 @@ struct RunOptions {
   InitialCondition initial;
   std::vector<BoundarySpec> boundary;  // one per non-periodic patch
   ForcingSpec forcing;                 // a prescribed body force, added to the coupling's
+  // forcing.type = flow_rate: the flux through the forcing's section (io::SectionFlux).
+  FlowRateControl::SectionFlux section_flux;
   StepCoupling coupling;
   double velocity_limit = 50;  // m/s
   // Tests only: let a time step beyond the stability limit through to exercise the guard.
@@ -181,9 +184,14 @@ class RunLoop {
   RunSummary run();
 
   const FlowState& state() const { return state_; }
-  // The prescribed body-force density ([forcing], RunOptions::forcing) at every local node;
+  // The prescribed body-force density ([forcing], RunOptions::forcing) at every local node, at
+  // the time of the state (a time-dependent or controlled force is updated after every step);
   // null without one. For the wall shear stress, whose wall nodes carry a share of it.
   const VectorField* prescribed_force() const { return prescribed_force_.get(); }
+  // The flow-rate controller's state (forcing.type = flow_rate; empty otherwise), for
+  // checkpoints, and its restoration on a restart (before run()).
+  std::vector<double> forcing_state() const;
+  void restore_forcing_state(const std::vector<double>& saved);
   // The solver, read-only: its weights for wall forces (flow/wall_force.hpp).
   const ProjectionRK4& solver() const { return solver_; }
   // The boundary conditions, or null when every patch is periodic.
@@ -213,7 +221,14 @@ class RunLoop {
   RunHooks hooks_;
   TensorField grad_;
   VectorField omega_;
-  std::shared_ptr<const VectorField> prescribed_force_;  // shared with the solver's body force
+  std::shared_ptr<VectorField> prescribed_force_;       // shared with the solver's body force
+  std::shared_ptr<FlowRateControl> flow_rate_control_;  // forcing.type = flow_rate
+  void install_forcing();
+  void update_forcing_field();
+  // log.csv: force_x,force_y,force_z (N/m^3) of a uniform or controlled force and the
+  // controller's flow_rate_target (m^3/s); empty for other forcings.
+  std::string forcing_log_header() const;
+  std::string forcing_log_row() const;
   ScalarField q_;
   std::vector<double> scratch_, fluxes_;
   StabilityRates rates_;

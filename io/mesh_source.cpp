@@ -10,7 +10,9 @@
 #include "io/allocation_limit.hpp"
 #include "io/box_generator.hpp"
 #include "io/cylinder_channel_generator.hpp"
+#include "io/extruded_pipe_generator.hpp"
 #include "io/gmsh_reader.hpp"
+#include "io/periodic_pipe_generator.hpp"
 #include "io/pipe_generator.hpp"
 
 namespace valsalva::io {
@@ -76,7 +78,7 @@ std::string disconnected_pieces(const flow::Mesh& mesh) {
 
 namespace {}  // namespace
 
-flow::Mesh build_mesh(const Scene& scene) {
+flow::Mesh build_mesh(const Scene& scene, MPI_Comm comm) {
   const std::string source = scene.get<std::string>("mesh.source");
   flow::Mesh mesh;
   if (source == "box") {
@@ -108,6 +110,36 @@ flow::Mesh build_mesh(const Scene& scene) {
       mesh = generate_cylinder_channel_mesh(spec);
     } catch (const std::invalid_argument& e) {
       throw scene.error("mesh.cylinder_channel", e.what());
+    }
+  } else if (source == "extruded_pipe") {
+    const std::string k = "mesh.extruded_pipe.";
+    ExtrudedPipeSpec spec;
+    spec.radius = scene.get<double>(k + "radius");
+    spec.length = scene.get<double>(k + "length");
+    spec.target_size = scene.get<double>(k + "size");
+    spec.layer_height = scene.get<double>(k + "layer_height");
+    spec.grading.wall_size = scene.get<double>(k + "wall_size");
+    spec.grading.wall_distance = scene.get<double>(k + "wall_distance");
+    spec.grading.layer_first = scene.get<double>(k + "layer_first");
+    spec.grading.layer_ratio = scene.get<double>(k + "layer_ratio");
+    spec.grading.layer_thickness = scene.get<double>(k + "layer_thickness");
+    try {
+      mesh = generate_extruded_pipe_mesh(spec, comm);
+    } catch (const std::invalid_argument& e) {
+      throw scene.error("mesh.extruded_pipe", e.what());
+    }
+  } else if (source == "periodic_pipe") {
+    const std::string k = "mesh.periodic_pipe.";
+    PeriodicPipeSpec spec;
+    spec.radius = scene.get<double>(k + "radius");
+    spec.length = scene.get<double>(k + "length");
+    spec.target_size = scene.get<double>(k + "size");
+    spec.layers = scene.get<int>(k + "layers");
+    spec.split = scene.get<std::string>(k + "cells") == "tetra";
+    try {
+      mesh = generate_periodic_pipe_mesh(spec);
+    } catch (const std::invalid_argument& e) {
+      throw scene.error("mesh.periodic_pipe", e.what());
     }
   } else {
     mesh = generate_pipe_mesh(scene.get<double>("mesh.pipe.radius"),

@@ -2,6 +2,8 @@
 // with the scene's periodic pairs, checked before use.
 #pragma once
 
+#include <mpi.h>
+
 #include <string>
 
 #include "flow/mesh.hpp"
@@ -10,8 +12,10 @@
 namespace valsalva::io {
 
 // Errors in the scene (a periodic patch the mesh lacks, an unreadable file) are SceneErrors
-// pointing at the key; errors in the mesh itself name the mesh file, cell or node.
-flow::Mesh build_mesh(const Scene& scene);
+// pointing at the key; errors in the mesh itself name the mesh file, cell or node. Collective
+// over `comm` for mesh.source = extruded_pipe (its rank 0 triangulates the disk: Gmsh's
+// boundary-layer rows are not deterministic), local otherwise.
+flow::Mesh build_mesh(const Scene& scene, MPI_Comm comm = MPI_COMM_SELF);
 
 // Empty when every cell is connected to every other through shared nodes (periodic pairs
 // aside); else a message naming the mesh and one cell of each piece (up to 8).

@@ -223,7 +223,7 @@ void declare_flow_keys(Schema& s) {
       .doc("hypre's own diagnostic output (0 = none)");
 
   s.section("initial", "The state at t = 0.");
-  s.choice("initial.type", {"rest", "taylor_green", "taylor_green_3d", "cyclic_sines"})
+  s.choice("initial.type", {"rest", "taylor_green", "taylor_green_3d", "cyclic_sines", "womersley"})
       .def("rest")
       .unit_of("-")
       .doc(
@@ -231,7 +231,8 @@ void declare_flow_keys(Schema& s) {
           "decay gives the run's error, the 3D Taylor-Green vortex (the same keys; no exact "
           "solution after t = 0: it goes turbulent at Re = U0 L / nu = 1600), or the "
           "divergence-free field u = U0 (sin(z/L), sin(x/L), sin(y/L)) ([initial.cyclic_sines]), "
-          "a start with motion in every direction for forced periodic boxes");
+          "a start with motion in every direction for forced periodic boxes, or Womersley's "
+          "pipe flow at t = 0 ([initial.womersley])");
   s.section("initial.taylor_green",
             "taylor_green: u = U0 sin(x/L) cos(y/L) F, v = -U0 cos(x/L) sin(y/L) F, w = 0, p = "
             "rho U0^2/4 (cos 2x/L + cos 2y/L) F^2, F = exp(-2 nu t / L^2), Re = U0 L / nu; exact "
@@ -264,6 +265,34 @@ void declare_flow_keys(Schema& s) {
       .above(0)
       .unit_of("m")
       .doc("Length L: the period is 2 pi L");
+
+  s.section("initial.womersley",
+            "Womersley's exact pipe flow (Womersley 1955, flow/womersley.hpp) at t = 0 for the "
+            "flow rate Q(t) = flow_rate + amplitude sin(2 pi t / period + phase): u(r, 0) along "
+            "the axis, r from the axis (capped at the radius), with the fluid's viscosity.");
+  s.when("initial.womersley", "initial.type", {"womersley"});
+  s.real("initial.womersley.radius").required().above(0).unit_of("m").doc("Pipe radius");
+  s.real("initial.womersley.flow_rate").required().unit_of("m3/s").doc("Mean flow rate");
+  s.real("initial.womersley.amplitude")
+      .def(0.0)
+      .unit_of("m3/s")
+      .doc("Amplitude of the sine flow rate");
+  s.real("initial.womersley.period").def(1.0).above(0).unit_of("s").doc("Period of the sine");
+  s.real("initial.womersley.phase").def(0.0).unit_of("rad").doc("Phase of the sine at t = 0");
+  s.real3("initial.womersley.point")
+      .def(std::array<double, 3>{0.0, 0.0, 0.0})
+      .unit_of("m")
+      .doc("A point on the pipe's axis (with pressure = gradient: where p = 0)");
+  s.real3("initial.womersley.axis")
+      .def(std::array<double, 3>{0.0, 0.0, 1.0})
+      .unit_of("-")
+      .doc("Direction of the axis and of the flow (normalised)");
+  s.choice("initial.womersley.pressure", {"zero", "gradient"})
+      .def("zero")
+      .unit_of("-")
+      .doc(
+          "zero: p = 0 (a periodic pipe driven by a body force); gradient: the exact solution's "
+          "p = -rho G(0) (x - point) . axis (a pipe between an inlet and a pressure outlet)");
 
   s.section("output", "Fields written to HDF5 + XDMF (fields.xmf in the run directory).");
   s.real("output.interval")
@@ -358,6 +387,21 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
         o.initial.type == "cyclic_sines" ? "initial.cyclic_sines" : "initial.taylor_green";
     o.initial.velocity = scene.get<double>(table + ".velocity");
     o.initial.length = scene.get<double>(table + ".length");
+  } else if (o.initial.type == "womersley") {
+    const std::string k = "initial.womersley.";
+    auto& ic = o.initial;
+    ic.radius = scene.get<double>(k + "radius");
+    ic.flow_rate = scene.get<double>(k + "flow_rate");
+    ic.amplitude = scene.get<double>(k + "amplitude");
+    ic.period = scene.get<double>(k + "period");
+    ic.phase = scene.get<double>(k + "phase");
+    const auto point = scene.get<std::array<double, 3>>(k + "point");
+    const auto axis = scene.get<std::array<double, 3>>(k + "axis");
+    ic.point = Eigen::Vector3d(point[0], point[1], point[2]);
+    ic.axis = Eigen::Vector3d(axis[0], axis[1], axis[2]);
+    if (!(ic.axis.norm() > 0) || !ic.axis.allFinite())
+      throw scene.error(k + "axis", "the axis must be a non-zero finite vector");
+    ic.pressure_gradient = scene.get<std::string>(k + "pressure") == "gradient";
   }
   o.forcing = read_forcing(scene);
 

@@ -15,6 +15,9 @@ namespace valsalva::io {
 flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::path& run_dir);
 // [forcing] (io/scene_keys_forcing.cpp); part of flow_run_options.
 flow::ForcingSpec read_forcing(const Scene& scene);
+// forcing.type = flow_rate against the boundary conditions: walls and slip walls only (the
+// controller sets the flux of a closed periodic domain). Throws SceneError naming forcing.type.
+void check_forcing(const Scene& scene, const std::vector<flow::BoundarySpec>& boundary);
 
 // A time step from time.cfl and time.fourier (time.dt = 0) bounded by the viscous (Fourier) limit
 // on this mesh: refused, naming flow.density (or flow.viscosity), when that bound alone implies

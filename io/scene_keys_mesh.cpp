@@ -6,12 +6,15 @@ namespace valsalva::io {
 
 void declare_mesh_keys(Schema& s) {
   s.section("mesh", "Where the fluid mesh comes from.");
-  s.choice("mesh.source", {"box", "gmsh", "pipe", "cylinder_channel"})
+  s.choice("mesh.source",
+           {"box", "gmsh", "pipe", "cylinder_channel", "periodic_pipe", "extruded_pipe"})
       .required()
       .unit_of("-")
       .doc(
           "Built-in box generator ([mesh.box]), a Gmsh .msh file (mesh.file), a Gmsh-API pipe "
-          "([mesh.pipe]) or the DFG cylinder channel as a periodic slab ([mesh.cylinder_channel])");
+          "([mesh.pipe]), the DFG cylinder channel as a periodic slab ([mesh.cylinder_channel]) or "
+          "a streamwise-periodic pipe ([mesh.periodic_pipe]), or a pipe of prism layers split "
+          "into tetrahedra, optionally with rows along the wall ([mesh.extruded_pipe])");
   s.string("mesh.file")
       .required()
       .unit_of("-")
@@ -62,6 +65,78 @@ void declare_mesh_keys(Schema& s) {
   s.real("mesh.pipe.radius").required().above(0).unit_of("m").doc("Pipe radius");
   s.real("mesh.pipe.length").required().above(0).unit_of("m").doc("Pipe length along its axis");
   s.real("mesh.pipe.size").required().above(0).unit_of("m").doc("Target tetrahedron edge length");
+
+  s.section("mesh.extruded_pipe",
+            "Pipe along +z from an inlet (z = 0) to an outlet (z = length) "
+            "(io/extruded_pipe_generator.hpp): a triangulated disk about the z axis, optionally "
+            "refined towards the wall, extruded into prism layers split into tetrahedra; patches "
+            "inlet, outlet, wall, region fluid.");
+  s.when("mesh.extruded_pipe", "mesh.source", {"extruded_pipe"});
+  s.real("mesh.extruded_pipe.radius").required().above(0).unit_of("m").doc("Pipe radius");
+  s.real("mesh.extruded_pipe.length").required().above(0).unit_of("m").doc("Pipe length");
+  s.real("mesh.extruded_pipe.size")
+      .required()
+      .above(0)
+      .unit_of("m")
+      .doc("Largest triangle edge of the disk (Gmsh)");
+  s.real("mesh.extruded_pipe.layer_height")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("m")
+      .doc("Height of the prism layers (rounded to length / layers); 0 = size");
+  s.real("mesh.extruded_pipe.wall_size")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("m")
+      .doc("Triangle size at the wall, growing linearly to size at wall_distance; 0 = none");
+  s.real("mesh.extruded_pipe.wall_distance")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("m")
+      .doc("Distance from the wall over which wall_size grows to size");
+  s.real("mesh.extruded_pipe.layer_first")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("m")
+      .doc("Structured rows along the wall: the first row's height; 0 = no rows");
+  s.real("mesh.extruded_pipe.layer_ratio")
+      .def(1.2)
+      .at_least(1)
+      .unit_of("-")
+      .doc("Growth ratio of the wall rows");
+  s.real("mesh.extruded_pipe.layer_thickness")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("m")
+      .doc("Total thickness of the wall rows");
+
+  s.section("mesh.periodic_pipe",
+            "Streamwise-periodic circular pipe along +z (io/periodic_pipe_generator.hpp): a "
+            "triangulated disk about the z axis extruded into identical layers from z = 0 to "
+            "length; patches wall, zmin, zmax (zmin/zmax paired as periodic), region fluid.");
+  s.when("mesh.periodic_pipe", "mesh.source", {"periodic_pipe"});
+  s.real("mesh.periodic_pipe.radius").required().above(0).unit_of("m").doc("Pipe radius");
+  s.real("mesh.periodic_pipe.length")
+      .required()
+      .above(0)
+      .unit_of("m")
+      .doc("Period along z (the pipe's length)");
+  s.real("mesh.periodic_pipe.size")
+      .required()
+      .above(0)
+      .unit_of("m")
+      .doc("Largest triangle edge of the disk (Gmsh)");
+  s.integer("mesh.periodic_pipe.layers")
+      .def(3)
+      .at_least(3)
+      .unit_of("-")
+      .doc("Identical cell layers along z (3 at least, so that periodic images stay apart)");
+  s.choice("mesh.periodic_pipe.cells", {"tetra", "prism"})
+      .def("tetra")
+      .unit_of("-")
+      .doc(
+          "tetra = the prisms split into tetrahedra (the same diagonals in every layer, P1 "
+          "Poisson weights); prism = the prisms themselves (two-point Poisson weights)");
 
   s.section("mesh.cylinder_channel",
             "DFG flow-around-a-cylinder channel (Schaefer & Turek 1996) as a slab of tetrahedra: "

@@ -37,12 +37,25 @@ SectionFlux::SectionFlux(const flow::LocalMesh& local, SectionOptions options)
     // end is an owned node or a first-layer ghost there).
     const int first = local.global_id[j] < local.global_id[k] ? j : k;
     if (first >= local.num_owned) continue;
-    const double dj = (local.position[j] - o.point).dot(n);
-    const double dk = (local.position[k] - o.point).dot(n);
+    // An edge across a periodic pair joins nodes whose stored positions are a period apart: it is
+    // taken as one of its two images, (x_j, x_j + edge vector) or (x_k - edge vector, x_k),
+    // whichever the plane cuts (a period holds several edges, so not both); taken at face value
+    // it would count as cut by every plane between the stored positions.
+    const Eigen::Vector3d& ev = local.edge_vector[e];
+    Eigen::Vector3d xj = local.position[j], xk = local.position[k];
+    auto side = [&](const Eigen::Vector3d& x) { return (x - o.point).dot(n) > 0; };
+    if ((xk - xj - ev).norm() > 1e-6 * ev.norm()) {
+      if (side(xj) != side(xj + ev))
+        xk = xj + ev;
+      else
+        xj = xk - ev;
+    }
+    const double dj = (xj - o.point).dot(n);
+    const double dk = (xk - o.point).dot(n);
     // Behind: d <= 0, in front: d > 0, so a node on the plane belongs to exactly one side.
     if ((dj > 0) == (dk > 0)) continue;
     const double t = dj / (dj - dk);
-    if (!within(local.position[j] + t * (local.position[k] - local.position[j]))) continue;
+    if (!within(xj + t * (xk - xj))) continue;
     const double sign = dk > 0 ? 1.0 : -1.0;
     edges_.push_back(e);
     signs_.push_back(sign);

@@ -12,6 +12,8 @@
 // flow rate to the Poisson tolerance, with no interpolation error. A bound that clips the flow
 // (a disc smaller than the pipe) gives the flux through the dual faces it picks, an
 // approximation of the flux through the disc of O(h) in the clipped rim.
+// On a periodic mesh an edge across a periodic pair is taken from j to k's image next to j, so
+// that a plane across the periodic direction cuts the domain once (a periodic pipe's section).
 // Each cut edge is counted once over all ranks (by the rank that owns its end of lower global
 // id), so the value is the same at any rank count up to the order of the final sum.
 #pragma once

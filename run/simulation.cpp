@@ -25,6 +25,7 @@
 #include "io/scene_keys_les.hpp"
 #include "io/scene_keys_structure.hpp"
 #include "io/scene_keys_valve.hpp"
+#include "io/section_flux.hpp"
 #include "io/stop_signal.hpp"
 #include "run/phase.hpp"
 #include "valve/valve_monitor.hpp"
@@ -165,6 +166,8 @@ void Simulation::Parts::write_checkpoint(const flow::FlowState& state, std::int6
         io::nodal_checkpoint_array("subgrid_viscosity", local, loop->subgrid_viscosity()));
   if (const auto* lumped = loop->solver().lumped_outlets())
     extras.push_back(io::replicated_checkpoint_array("lumped_outlets", local, lumped->saved()));
+  if (const auto forcing = loop->forcing_state(); !forcing.empty())
+    extras.push_back(io::replicated_checkpoint_array("flow_rate_control", local, forcing));
   last_checkpoint = writer->write(state, step, dt, extras);
   last_write = Clock::now();
 }
@@ -221,7 +224,7 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
 
   // Everything the scene can get wrong is checked before the run directory is touched.
   phase.next(mesh_phase(scene));
-  p.mesh = io::build_mesh(scene);
+  p.mesh = io::build_mesh(scene, comm);
   phase.next(fmt::format("computing the dual metrics of the mesh ({} nodes, {} cells)",
                          p.mesh.num_nodes(), p.mesh.num_cells()));
   p.metrics = flow::compute_dual_metrics(p.mesh);
@@ -233,6 +236,7 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
   io::check_les_scene(scene);
   io::flow_run_options(scene, dir);  // its checks (time step, output volume), before any write
   io::check_initial_state(scene, p.mesh);
+  io::check_forcing(scene, boundary);
   io::check_step_count(scene, p.metrics);
   p.run_path = p.in_place ? dir : io::RunDirectory::prepare(dir, wipe, scene, comm).path();
 
@@ -289,7 +293,7 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
   flow::FlowState start;
   flow::ScalarField start_dp, start_nu_sgs;
   flow::EdgeField start_flux;
-  std::vector<double> start_lumped;
+  std::vector<double> start_lumped, start_forcing;
   if (in) {
     in->read_state(start);
     start_step = in->info().step;
@@ -306,6 +310,8 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
       start_nu_sgs = io::read_nodal_array(*in, p.local, "subgrid_viscosity");
     if (in->has("lumped_outlets"))  // resistance/RCR states (flux, pressure, p_d, increment)
       start_lumped = io::read_replicated_array(*in, "lumped_outlets");
+    if (in->has("flow_rate_control"))  // the force that holds the flow rate
+      start_forcing = io::read_replicated_array(*in, "flow_rate_control");
     if (p.analysis) p.analysis->restore(*in);
     if (p.rank == 0 && p.print)
       fmt::print("restart: {} (step {}, t = {:.9g} s)\n", p.checkpoint->string(), start_step,
@@ -327,11 +333,26 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
   auto sink = [&p](const std::string& stream, double time, const flow::FieldSet& set) {
     p.write_fields(stream, time, set);
   };
-  p.loop.emplace(p.mesh, p.metrics, p.local, run_options, sink);
+  if (run_options.forcing.type == flow::ForcingSpec::Type::flow_rate) {
+    // The controller's own cut of the forcing's section (read_forcing checked that it exists).
+    const auto& sections = analysis_options.sections.sections;
+    const auto it = std::find_if(sections.begin(), sections.end(), [&](const auto& s) {
+      return s.name == run_options.forcing.section;
+    });
+    auto cut = std::make_shared<io::SectionFlux>(p.local, *it);
+    run_options.section_flux = [cut](const flow::EdgeField& flux) { return cut->flux(flux); };
+  }
+  try {
+    p.loop.emplace(p.mesh, p.metrics, p.local, run_options, sink);
+  } catch (const flow::RunError& e) {
+    if (e.key().empty()) throw;
+    throw std::runtime_error(scene.location(e.key()).str() + ": " + e.what());
+  }
   if (p.analysis && p.loop->prescribed_force())
     p.analysis->set_body_force(p.loop->prescribed_force());
   if (p.checkpoint) {
     p.loop->resume(std::move(start), start_step, start_dp, start_nu_sgs, start_flux, start_lumped);
+    p.loop->restore_forcing_state(start_forcing);
     p.les.resume(p.loop->subgrid_viscosity());
   }
   if (p.mesh_hash != 0 && checkpoints)

@@ -17,7 +17,7 @@
 
 #include "field_test_utils.hpp"
 #include "flow/run_loop.hpp"
-#include "validation/womersley/womersley_run.hpp"
+#include "validation/bench/womersley_run.hpp"
 
 using namespace valsalva;
 

@@ -26,8 +26,8 @@
 #include <string>
 
 #include "validation/bench/bench_cli.hpp"
-#include "validation/womersley/womersley_run.hpp"
-#include "validation/womersley_periodic/periodic_run.hpp"
+#include "validation/bench/periodic_run.hpp"
+#include "validation/bench/womersley_run.hpp"
 
 namespace {
 

@@ -1,5 +1,5 @@
 // A streamwise-periodic Womersley pipe run; see periodic_run.hpp.
-#include "validation/womersley_periodic/periodic_run.hpp"
+#include "validation/bench/periodic_run.hpp"
 
 #include <fmt/format.h>
 
@@ -16,7 +16,7 @@
 #include "flow/projection_rk4.hpp"
 #include "io/periodic_pipe_generator.hpp"
 #include "les/subgrid_viscosity.hpp"
-#include "validation/womersley/womersley_run.hpp"
+#include "validation/bench/womersley_run.hpp"
 
 namespace valsalva::validation {
 

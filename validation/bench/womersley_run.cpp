@@ -1,5 +1,5 @@
 // A Womersley pipe run; see womersley_run.hpp.
-#include "validation/womersley/womersley_run.hpp"
+#include "validation/bench/womersley_run.hpp"
 
 #include <fmt/format.h>
 
@@ -48,20 +48,6 @@ flow::Mesh womersley_mesh(const WomersleySetup& setup, MPI_Comm comm) {
   options.wall_size *= size;
   options.wall_distance *= size;
   return io::generate_pipe_mesh(R, L, size, options);
-}
-
-std::vector<double> gather_to_root(const std::vector<double>& mine, MPI_Comm comm) {
-  int size = 0, rank = 0;
-  MPI_Comm_size(comm, &size);
-  MPI_Comm_rank(comm, &rank);
-  const int n = static_cast<int>(mine.size());
-  std::vector<int> counts(size), offsets(size, 0);
-  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-  for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
-  std::vector<double> all(rank == 0 ? offsets.back() + counts.back() : 0);
-  MPI_Gatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0,
-              comm);
-  return all;
 }
 
 PhaseSteps phase_steps(const flow::Womersley& exact, double period, int phases, double cfl,

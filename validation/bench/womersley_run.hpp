@@ -1,4 +1,6 @@
-// One Womersley pipe run (shared by the validation case and the tests): a rigid straight pipe
+// One Womersley pipe run with its own time loop, for bench_womersley_study's set-up choices and
+// test_rank_agreement (the validation case validation/womersley runs its scenes through
+// run::Simulation instead): a rigid straight pipe
 // (Gmsh tetrahedra: 3D Delaunay, io/pipe_generator.hpp, or an extruded disk,
 // io/extruded_pipe_generator.hpp) with a Womersley-profile sine inflow
 // Q(t) = Q0 (1 + sin(2 pi t / T)), no-slip wall and an outlet, started from the exact solution
@@ -23,6 +25,7 @@
 #include "flow/womersley.hpp"
 #include "io/extruded_pipe_generator.hpp"
 #include "io/pipe_generator.hpp"
+#include "validation/gather_to_root.hpp"
 
 namespace valsalva::validation {
 
@@ -113,8 +116,5 @@ struct NuSgsRecord {
     return local.comm.sum(sum) / std::max(1.0, local.comm.sum(count));
   }
 };
-
-// Collective: the owned values of every rank, concatenated on rank 0 (empty elsewhere).
-std::vector<double> gather_to_root(const std::vector<double>& mine, MPI_Comm comm);
 
 }  // namespace valsalva::validation

@@ -1,0 +1,22 @@
+// Distributed values collected for a case's tables and comparisons: the owned values of every
+// rank concatenated on rank 0 (profiles, samples), a velocity field by dual node on every rank
+// (a run against its twin on the same mesh).
+#pragma once
+
+#include <mpi.h>
+
+#include <vector>
+
+#include "flow/local_mesh.hpp"
+#include "flow/operators.hpp"
+
+namespace valsalva::validation {
+
+// Collective over `comm`: rank 0 gets every rank's `mine` in rank order, the others nothing.
+std::vector<double> gather_to_root(const std::vector<double>& mine, MPI_Comm comm);
+
+// Collective: u (3 values per node) by dual node (global order), the same on every rank.
+std::vector<double> velocity_by_dual_node(const flow::LocalMesh& local, const flow::VectorField& u,
+                                          std::int64_t dual_nodes);
+
+}  // namespace valsalva::validation
