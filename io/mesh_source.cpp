@@ -11,6 +11,7 @@
 #include "io/box_generator.hpp"
 #include "io/cylinder_channel_generator.hpp"
 #include "io/gmsh_reader.hpp"
+#include "io/periodic_pipe_generator.hpp"
 #include "io/pipe_generator.hpp"
 
 namespace valsalva::io {
@@ -108,6 +109,19 @@ flow::Mesh build_mesh(const Scene& scene) {
       mesh = generate_cylinder_channel_mesh(spec);
     } catch (const std::invalid_argument& e) {
       throw scene.error("mesh.cylinder_channel", e.what());
+    }
+  } else if (source == "periodic_pipe") {
+    const std::string k = "mesh.periodic_pipe.";
+    PeriodicPipeSpec spec;
+    spec.radius = scene.get<double>(k + "radius");
+    spec.length = scene.get<double>(k + "length");
+    spec.target_size = scene.get<double>(k + "size");
+    spec.layers = scene.get<int>(k + "layers");
+    spec.split = scene.get<std::string>(k + "cells") == "tetra";
+    try {
+      mesh = generate_periodic_pipe_mesh(spec);
+    } catch (const std::invalid_argument& e) {
+      throw scene.error("mesh.periodic_pipe", e.what());
     }
   } else {
     mesh = generate_pipe_mesh(scene.get<double>("mesh.pipe.radius"),

@@ -6,12 +6,13 @@ namespace valsalva::io {
 
 void declare_mesh_keys(Schema& s) {
   s.section("mesh", "Where the fluid mesh comes from.");
-  s.choice("mesh.source", {"box", "gmsh", "pipe", "cylinder_channel"})
+  s.choice("mesh.source", {"box", "gmsh", "pipe", "cylinder_channel", "periodic_pipe"})
       .required()
       .unit_of("-")
       .doc(
           "Built-in box generator ([mesh.box]), a Gmsh .msh file (mesh.file), a Gmsh-API pipe "
-          "([mesh.pipe]) or the DFG cylinder channel as a periodic slab ([mesh.cylinder_channel])");
+          "([mesh.pipe]), the DFG cylinder channel as a periodic slab ([mesh.cylinder_channel]) or "
+          "a pipe periodic along its axis ([mesh.periodic_pipe])");
   s.string("mesh.file")
       .required()
       .unit_of("-")
@@ -62,6 +63,25 @@ void declare_mesh_keys(Schema& s) {
   s.real("mesh.pipe.radius").required().above(0).unit_of("m").doc("Pipe radius");
   s.real("mesh.pipe.length").required().above(0).unit_of("m").doc("Pipe length along its axis");
   s.real("mesh.pipe.size").required().above(0).unit_of("m").doc("Target tetrahedron edge length");
+
+  s.section("mesh.periodic_pipe",
+            "Periodic pipe generator (io/periodic_pipe_generator.hpp): a triangulated disk in the "
+            "xy plane, centred on the z axis, extruded along z into identical layers; patches "
+            "wall, zmin and zmax, zmin/zmax periodic");
+  s.when("mesh.periodic_pipe", "mesh.source", {"periodic_pipe"});
+  const std::string pp = "mesh.periodic_pipe.";
+  s.real(pp + "radius").required().above(0).unit_of("m").doc("Pipe radius");
+  s.real(pp + "length").required().above(0).unit_of("m").doc("Period along z");
+  s.real(pp + "size").required().above(0).unit_of("m").doc("Largest triangle size in the disk");
+  s.integer(pp + "layers")
+      .def(3)
+      .at_least(3)
+      .unit_of("-")
+      .doc("Cell layers along z (3 at least, so that periodic images stay apart)");
+  s.choice(pp + "cells", {"prism", "tetra"})
+      .def("prism")
+      .unit_of("-")
+      .doc("prism = the extruded prisms; tetra = the prisms split into tetrahedra");
 
   s.section("mesh.cylinder_channel",
             "DFG flow-around-a-cylinder channel (Schaefer & Turek 1996) as a slab of tetrahedra: "

@@ -37,12 +37,20 @@ SectionFlux::SectionFlux(const flow::LocalMesh& local, SectionOptions options)
     // end is an owned node or a first-layer ghost there).
     const int first = local.global_id[j] < local.global_id[k] ? j : k;
     if (first >= local.num_owned) continue;
-    const double dj = (local.position[j] - o.point).dot(n);
-    const double dk = (local.position[k] - o.point).dot(n);
+    // The edge as a segment from j to k, edge_vector giving its periodic shift: an edge through
+    // a periodic pair is the segment from j to k's image, or (the same edge seen from k) from
+    // j's image to k; the plane may cut either copy, not the straight line between the stored
+    // positions.
+    Eigen::Vector3d xj = local.position[j], xk = xj + local.edge_vector[e];
+    double dj = (xj - o.point).dot(n), dk = (xk - o.point).dot(n);
     // Behind: d <= 0, in front: d > 0, so a node on the plane belongs to exactly one side.
+    if ((dj > 0) == (dk > 0) && (xk - local.position[k]).squaredNorm() > 0) {
+      xk = local.position[k], xj = xk - local.edge_vector[e];
+      dj = (xj - o.point).dot(n), dk = (xk - o.point).dot(n);
+    }
     if ((dj > 0) == (dk > 0)) continue;
     const double t = dj / (dj - dk);
-    if (!within(local.position[j] + t * (local.position[k] - local.position[j]))) continue;
+    if (!within(xj + t * (xk - xj))) continue;
     const double sign = dk > 0 ? 1.0 : -1.0;
     edges_.push_back(e);
     signs_.push_back(sign);

@@ -14,6 +14,7 @@
 #include "flow/dual_metrics.hpp"
 #include "flow/local_mesh.hpp"
 #include "flow/run_loop.hpp"
+#include "io/periodic_pipe_generator.hpp"
 #include "io/pipe_generator.hpp"
 #include "io/run_analysis.hpp"
 #include "io/section_flux.hpp"
@@ -121,4 +122,22 @@ TEST_CASE("sections that cut nothing or have no normal are refused by name") {
                                       "normal (0, 0, 1) cuts no mesh edge within its bound"));
   CHECK_THROWS_WITH(io::SectionFlux(local, section("flat", 0.01, {0, 0, 0})),
                     doctest::Contains("section.flat.normal: the normal is zero"));
+}
+
+TEST_CASE("a section of a periodic pipe: edges through the periodic pair are not cut") {
+  // Before the fix the edges from the last layer to the images of the first (stored at z = 0)
+  // counted as cut by any plane between them, reversed: the projected area summed to zero.
+  io::PeriodicPipeSpec spec;
+  spec.radius = 0.002, spec.length = 0.00075, spec.target_size = 0.00025;
+  const auto mesh = io::generate_periodic_pipe_mesh(spec);
+  const auto metrics = flow::compute_dual_metrics(mesh);
+  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
+  double volume = 0;
+  for (int i = 0; i < local.num_owned; ++i) volume += local.volume[i];
+  const double cross_section = local.comm.sum(volume) / spec.length;  // the polygon's area
+  for (double z : {0.000375, 0.0006, 0.0007}) {
+    CAPTURE(z);
+    const io::SectionFlux s(local, section("mid", z));
+    CHECK(s.projected_area() == doctest::Approx(cross_section).epsilon(1e-12));
+  }
 }
