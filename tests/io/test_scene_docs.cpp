@@ -46,7 +46,7 @@ TEST_CASE("the docs show defaults, units, ranges and conditions") {
   CHECK(md.find("| `length` | float[3] | `[1.0, 1.0, 1.0]` | m | 3 values, each > 0 |") !=
         std::string::npos);
   CHECK(md.find("| `source` | enum | required | - | \"box\", \"gmsh\", \"pipe\", "
-                "\"cylinder_channel\" |") != std::string::npos);
+                "\"cylinder_channel\", \"periodic_pipe\" |") != std::string::npos);
   CHECK(md.find("Used only when `mesh.source` is `\"pipe\"`.") != std::string::npos);
   CHECK(md.find("| `output_dir` | string | `\"runs/<scene file stem>\"` |") != std::string::npos);
 }
