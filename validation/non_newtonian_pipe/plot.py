@@ -15,7 +15,11 @@ levels = list(csv.DictReader(open(out / "levels.csv")))
 fluids = ["power_law", "casson", "carreau_yasuda"]
 fig, axes = plt.subplots(1, 4, figsize=(17, 4.2))
 for ax, fluid in zip(axes, fluids):
-    finest = max((lv for lv in levels if lv["fluid"] == fluid), key=lambda lv: int(lv["n"]))
+    runs = [lv for lv in levels if lv["fluid"] == fluid]
+    if not runs:  # --set fluid=... ran the others only
+        ax.set_axis_off()
+        continue
+    finest = max(runs, key=lambda lv: int(lv["n"]))
     rows = list(csv.DictReader(open(out / "runs" / f"{fluid}_{finest['n']}" / "profile.csv")))
     rows.sort(key=lambda r: float(r["r"]))
     r = [float(x["r"]) * 1e3 for x in rows]
@@ -26,6 +30,8 @@ for ax, fluid in zip(axes, fluids):
     ax.set_title(fluid.replace("_", " "))
     ax.legend(fontsize=8)
 power = [lv for lv in levels if lv["fluid"] == "power_law"]
+if not power:
+    power = [{"h": "nan", "profile_l2_over_umax": "nan"}]
 h = [float(lv["h"]) * 1e3 for lv in power]
 e = [float(lv["profile_l2_over_umax"]) for lv in power]
 axes[3].loglog(h, e, "o-", label="power law n 1.5, L2 / u_max")
