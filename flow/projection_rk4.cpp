@@ -23,16 +23,20 @@ ProjectionRK4::ProjectionRK4(const LocalMesh& mesh, ProjectionOptions options,
       old_convection_(options.scheme == "central4" && !options.fourth_order_operators),
       poisson_(mesh, poisson_weights_, options.poisson),
       dp_(mesh.num_local(), 0.0),
-      rk_(tableau(options.time_scheme)) {
+      rk_(tableau(options.time_scheme)),
+      rheology_(options.rheology.law != ViscosityLaw::newtonian) {
   if (!(options.density > 0) || !(options.viscosity >= 0))
     throw std::invalid_argument("flow::ProjectionRK4: density must be > 0 (got " +
                                 std::to_string(options.density) + ") and viscosity >= 0 (got " +
                                 std::to_string(options.viscosity) + ")");
+  if (const auto problem = viscosity_model_problem(options.rheology))
+    throw std::invalid_argument("flow::ProjectionRK4: " + viscosity_law_name(options.rheology.law) +
+                                " " + problem->parameter + ": " + problem->message);
   if (options.fourth_order_operators) {
-    if (options.subgrid_viscosity)
+    if (options.subgrid_viscosity || rheology_)
       throw std::invalid_argument(
-          "flow::ProjectionRK4: the 4th-order operators have no full-stress (LES) viscous term; "
-          "run an LES without fourth_order_operators");
+          "flow::ProjectionRK4: the 4th-order operators have no full-stress (LES or "
+          "non-Newtonian) viscous term; run without fourth_order_operators");
     order4_ = std::make_unique<Order4Operators>(mesh, poisson_weights_);
   }
   auto* bc = options_.boundary.get();
@@ -66,13 +70,15 @@ void ProjectionRK4::momentum_rhs(const VectorField& u, const EdgeField& flux, Ve
     convection_->apply(u, conv_);
   else
     convection_->apply(u, flux, conv_);
-  if (options_.subgrid_viscosity) {
-    // The gradient's ghosts are valid, so nu_sgs is computed on ghosts too: no exchange.
+  if (options_.subgrid_viscosity || rheology_) {
+    // The gradient's ghosts are valid, so nu_sgs and nu(gamma_dot) are computed on ghosts too:
+    // no exchange.
     gradient(mesh_, u, grad_u_);
-    nu_sgs_.resize(grad_u_.size());
-    options_.subgrid_viscosity(stage, grad_u_, nu_sgs_);
-    nu_eff_.resize(nu_sgs_.size());
-    for (std::size_t i = 0; i < nu_sgs_.size(); ++i) nu_eff_[i] = options_.viscosity + nu_sgs_[i];
+    if (options_.subgrid_viscosity) {
+      nu_sgs_.resize(grad_u_.size());
+      options_.subgrid_viscosity(stage, grad_u_, nu_sgs_);
+    }
+    total_viscosity();
     viscous_stress(mesh_, weights_, nu_eff_, u, grad_u_, rhs);
   } else if (options_.viscosity > 0) {
     gradient(mesh_, u, grad_u_);
@@ -86,7 +92,9 @@ void ProjectionRK4::momentum_rhs(const VectorField& u, const EdgeField& flux, Ve
   for (int i = 0; i < mesh_.num_local(); ++i) rhs[i] -= conv_[i];
   if (options_.boundary) {
     options_.boundary->stabilize_backflow(u, rhs);
-    if (options_.viscosity > 0 || options_.subgrid_viscosity)
+    if (rheology_)  // nu_eff_ holds the whole viscosity
+      options_.boundary->drop_outlet_viscous_flux(grad_u_, 0.0, nu_eff_, rhs);
+    else if (options_.viscosity > 0 || options_.subgrid_viscosity)
       options_.boundary->drop_outlet_viscous_flux(grad_u_, options_.viscosity, nu_sgs_, rhs);
   }
 }
@@ -318,6 +326,28 @@ StepReport ProjectionRK4::step(FlowState& state, double dt) {
       MPI_Bcast(report.divergence_position.data(), 3, MPI_DOUBLE, worst_h.rank, mesh_.comm.get()));
   report.divergence_number = max_speed > 0 ? worst_h.value / max_speed : 0.0;
   return report;
+}
+
+void ProjectionRK4::total_viscosity() {
+  const std::size_t n = grad_u_.size();
+  nu_eff_.resize(n);
+  if (rheology_) {
+    const double rho = options_.density;
+    for (std::size_t i = 0; i < n; ++i)
+      nu_eff_[i] = apparent_viscosity(options_.rheology, shear_rate(grad_u_[i])) / rho;
+  } else {
+    nu_eff_.assign(n, options_.viscosity);
+  }
+  if (options_.subgrid_viscosity && nu_sgs_.size() == n)
+    for (std::size_t i = 0; i < n; ++i) nu_eff_[i] += nu_sgs_[i];
+}
+
+const ScalarField& ProjectionRK4::viscosity_field(const VectorField& u) {
+  if (!rheology_)
+    throw std::logic_error("flow::ProjectionRK4::viscosity_field without a non-Newtonian fluid");
+  gradient(mesh_, u, grad_u_);
+  total_viscosity();
+  return nu_eff_;
 }
 
 double ProjectionRK4::max_subgrid_viscosity() const {

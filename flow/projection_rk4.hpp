@@ -56,6 +56,7 @@
 #include "flow/operators_order4.hpp"
 #include "flow/pressure_poisson.hpp"
 #include "flow/time_scheme.hpp"
+#include "flow/viscosity_model.hpp"
 
 namespace valsalva::flow {
 
@@ -99,6 +100,12 @@ struct ProjectionOptions {
   // computed or allocated. When set, the viscous term is the full stress
   // div((nu + nu_sgs)(grad u + grad u^T)) (flow/viscous_stress.hpp).
   std::function<void(int stage, const TensorField& grad_u, ScalarField& nu_sgs)> subgrid_viscosity;
+  // Non-Newtonian fluid (law != newtonian): `viscosity` is not used; the kinematic viscosity of
+  // every node is mu(gamma_dot) / density from the gradient of the RK stage's own velocity, so
+  // the right-hand side of each stage is a function of that stage alone (a viscosity frozen over
+  // the step would make the viscous term 1st order in time), and the viscous term is the full
+  // stress div((nu(gamma_dot) + nu_sgs)(grad u + grad u^T)) (flow/viscous_stress.hpp).
+  ViscosityModel rheology;
   std::shared_ptr<BoundaryConditions> boundary;  // null: every patch periodic
 };
 
@@ -174,6 +181,12 @@ class ProjectionRK4 {
   void set_subgrid_viscosity(const ScalarField& nu_sgs);
   // Collective: max over owned nodes of that nu_sgs (0 without a subgrid model), m^2/s.
   double max_subgrid_viscosity() const;
+  // A non-Newtonian fluid (ProjectionOptions::rheology)?
+  bool variable_viscosity() const { return rheology_; }
+  // With one: the kinematic viscosity nu(gamma_dot(u)) + nu_sgs of the velocity u at every local
+  // node (nu_sgs of the last stage evaluated), m^2/s, what the time step's viscous (Fourier)
+  // bound uses node by node. Computed from u alone, so a restart sees the same values.
+  const ScalarField& viscosity_field(const VectorField& u);
 
   // Installs (or, with an empty function, removes) the body-force hook; without one no force
   // array is allocated or touched.
@@ -218,7 +231,10 @@ class ProjectionRK4 {
   VectorField rhs_sum_, stage_sum_;  // rk4_classic: sum b_k R(w_k); sum b_k w_k (outlets)
   ScalarField stage_dp_;             // project_stages: dp of the current stage
   TensorField grad_u_;
-  ScalarField nu_sgs_, nu_eff_;  // LES only: subgrid and total viscosity
+  ScalarField nu_sgs_, nu_eff_;  // LES or non-Newtonian: subgrid and total viscosity
+  bool rheology_ = false;        // options_.rheology is not Newtonian
+  // nu_eff_ = nu(gamma_dot(grad_u_)) (or the constant nu) + nu_sgs_ at every local node.
+  void total_viscosity();
   BodyForce body_force_;
   VectorField force_;  // body-force density of the current stage (only with a hook)
   std::unique_ptr<LumpedOutlets> lumped_;

@@ -9,10 +9,14 @@
 
 namespace valsalva::flow {
 
-StabilityRates stability_rates(const LocalMesh& mesh, const std::vector<double>& weights, double nu,
-                               const VectorField& u, std::vector<double>& scratch) {
+namespace {
+// `scale * nu_at(j)`: the kinematic viscosity of local node j (a constant nu as scale = nu and
+// nu_at = 1 keeps the Newtonian bound's rounding as it was).
+template <class Viscosity>
+StabilityRates rates(const LocalMesh& mesh, const std::vector<double>& weights, Viscosity nu_at,
+                     double scale, const VectorField& u, std::vector<double>& scratch) {
   const int n = mesh.num_local();
-  // Per-node sums of |u_jk . S_jk| / 2 and a_jk over the edges (each edge feeds both ends).
+  // Per-node sums of |u_jk . S_jk| / 2 and a_jk nu_jk over the edges (each edge feeds both ends).
   scratch.assign(2 * static_cast<std::size_t>(n), 0.0);
   double* conv = scratch.data();
   double* visc = scratch.data() + n;
@@ -21,20 +25,35 @@ StabilityRates stability_rates(const LocalMesh& mesh, const std::vector<double>&
     const double flux = 0.25 * std::abs((u[j] + u[k]).dot(mesh.edge_normal[e]));
     conv[j] += flux;
     conv[k] += flux;
-    visc[j] += weights[e];
-    visc[k] += weights[e];
+    const double a = weights[e] * 0.5 * (nu_at(j) + nu_at(k));
+    visc[j] += a;
+    visc[k] += a;
   }
   StabilityRates r;
   for (int j = 0; j < mesh.num_owned; ++j) {
-    const double rc = conv[j] / mesh.volume[j], rv = 2 * nu * visc[j] / mesh.volume[j];
+    const double rc = conv[j] / mesh.volume[j], rv = 2 * scale * visc[j] / mesh.volume[j];
     r.stability = std::max(r.stability, rc / rk4_imaginary_limit + rv / rk4_real_limit);
     r.convective = std::max(r.convective, u[j].norm() / mesh.h[j]);
-    r.viscous = std::max(r.viscous, nu / (mesh.h[j] * mesh.h[j]));
+    r.viscous = std::max(r.viscous, scale * nu_at(j) / (mesh.h[j] * mesh.h[j]));
   }
   r.stability = mesh.comm.max(r.stability);
   r.convective = mesh.comm.max(r.convective);
   r.viscous = mesh.comm.max(r.viscous);
   return r;
+}
+}  // namespace
+
+StabilityRates stability_rates(const LocalMesh& mesh, const std::vector<double>& weights, double nu,
+                               const VectorField& u, std::vector<double>& scratch) {
+  return rates(
+      mesh, weights, [](int) { return 1.0; }, nu, u, scratch);
+}
+
+StabilityRates stability_rates(const LocalMesh& mesh, const std::vector<double>& weights,
+                               const ScalarField& nu, const VectorField& u,
+                               std::vector<double>& scratch) {
+  return rates(
+      mesh, weights, [&nu](int j) { return nu[j]; }, 1.0, u, scratch);
 }
 
 double kinetic_energy(const LocalMesh& mesh, double rho, const VectorField& u) {

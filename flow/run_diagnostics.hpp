@@ -11,6 +11,9 @@
 // between these two points lies inside its stability region (|R(z)| <= 1 checked numerically),
 // so dt is stable when
 //   sigma = dt max_j (rc_j / 2.8284 + rv_j / 2.7853) <= 1.
+// With a nodal viscosity (non-Newtonian fluids) the viscous row of node j is bounded by
+// rv_j = (2 / V_j) sum_k a_jk (nu_j + nu_k) / 2 (the edge viscosity of flow/viscous_stress.hpp)
+// and the Fourier number is max_j nu_j dt / h_j^2: the local viscosity sets the bound.
 #pragma once
 
 #include <string>
@@ -33,6 +36,10 @@ struct StabilityRates {
 // `scratch` is resized to 2 num_local() and reused (no allocation inside the time loop).
 StabilityRates stability_rates(const LocalMesh& mesh, const std::vector<double>& weights, double nu,
                                const VectorField& u, std::vector<double>& scratch);
+// The same with the kinematic viscosity `nu` of every local node (ghosts valid).
+StabilityRates stability_rates(const LocalMesh& mesh, const std::vector<double>& weights,
+                               const ScalarField& nu, const VectorField& u,
+                               std::vector<double>& scratch);
 
 // Collective: 1/2 rho sum_j V_j |u_j|^2 over owned nodes, J.
 double kinetic_energy(const LocalMesh& mesh, double rho, const VectorField& u);

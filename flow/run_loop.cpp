@@ -143,9 +143,15 @@ ProjectionOptions& RunLoop::attach_boundary() {
 
 double RunLoop::choose_dt(double remaining) {
   const auto& t = options_.time;
-  // LES: nu + max nu_sgs of the previous step's last stage bounds the viscous rate.
-  const double nu = options_.projection.viscosity + solver_.max_subgrid_viscosity();
-  rates_ = stability_rates(local_, solver_.laplacian_weights(), nu, state_.velocity, scratch_);
+  // A non-Newtonian fluid: its nodal viscosity of the current velocity (+ nu_sgs). LES: nu + max
+  // nu_sgs of the previous step's last stage bounds the viscous rate.
+  if (solver_.variable_viscosity()) {
+    rates_ = stability_rates(local_, solver_.laplacian_weights(),
+                             solver_.viscosity_field(state_.velocity), state_.velocity, scratch_);
+  } else {
+    const double nu = options_.projection.viscosity + solver_.max_subgrid_viscosity();
+    rates_ = stability_rates(local_, solver_.laplacian_weights(), nu, state_.velocity, scratch_);
+  }
   const double limit = 1.0 / rates_.stability;  // +inf at rest without viscosity
   double dt = t.dt;
   if (dt > 0) {

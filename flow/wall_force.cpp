@@ -46,10 +46,16 @@ std::vector<WallLoad> wall_loads(const LocalMesh& mesh, const std::string& patch
       loads[slot[b.node]].area += b.area;
     }
 
+  const ScalarField* mu_field = in.viscosity_field;
+  if (mu_field && in.stiffness_weights)
+    throw std::invalid_argument(
+        "flow::wall_force: a nodal viscosity goes with the full-stress operator's two-point "
+        "weights, not the stiffness weights");
   if (method == WallForceMethod::surface) {
     for (auto& l : loads) {
       const Eigen::Matrix3d& gj = g[l.node];
-      l.force = pr[l.node] * l.area - mu * (gj + gj.transpose()) * l.area;
+      const double mu_j = mu_field ? (*mu_field)[l.node] : mu;
+      l.force = pr[l.node] * l.area - mu_j * (gj + gj.transpose()) * l.area;
     }
     return loads;
   }
@@ -62,8 +68,16 @@ std::vector<WallLoad> wall_loads(const LocalMesh& mesh, const std::string& patch
     if (slot[j] < 0 && slot[k] < 0) continue;
     const Eigen::Vector3d& s = mesh.edge_normal[e];
     const Eigen::Vector3d conv = rho * (0.5 * (u[j] + u[k]).dot(s)) * 0.5 * (u[j] + u[k]);
-    Eigen::Vector3d visc = mu * a[e] * (u[k] - u[j]);
-    if (!in.stiffness_weights) visc += mu * 0.5 * (g[j] + g[k]) * (s - a[e] * mesh.edge_vector[e]);
+    Eigen::Vector3d visc;
+    if (mu_field) {  // the flux of flow::viscous_stress
+      const Eigen::Matrix3d gm = 0.5 * (g[j] + g[k]);
+      visc = (0.5 * ((*mu_field)[j] + (*mu_field)[k])) *
+             (a[e] * (u[k] - u[j]) + gm * (s - a[e] * mesh.edge_vector[e]) + gm.transpose() * s);
+    } else {
+      visc = mu * a[e] * (u[k] - u[j]);
+      if (!in.stiffness_weights)
+        visc += mu * 0.5 * (g[j] + g[k]) * (s - a[e] * mesh.edge_vector[e]);
+    }
     const Eigen::Vector3d pres = 0.5 * (pr[j] + pr[k]) * s;
     const Eigen::Vector3d out_of_j = conv - visc + pres;  // through S_jk, into k
     if (slot[j] >= 0) loads[slot[j]].force -= out_of_j;

@@ -39,6 +39,11 @@ struct WallForceInput {
   const std::vector<double>* laplacian_weights = nullptr;
   bool stiffness_weights = false;
   const VectorField* body_force = nullptr;  // force per unit volume, N/m^3; optional
+  // Non-Newtonian fluids: the dynamic viscosity of every local node (Pa s), in place of
+  // dynamic_viscosity. The residual method then uses the solver's full-stress flux
+  // (flow/viscous_stress.hpp: edge viscosity (mu_j + mu_k)/2, with the transpose part; two-point
+  // weights only), the surface method mu_j.
+  const ScalarField* viscosity_field = nullptr;
 };
 
 // The force (N) of the fluid on the wall share of each owned node of a patch, with the node's

@@ -57,6 +57,11 @@ class RunAnalysis {
   const WallShearRecorder* wall_shear() const { return wall_shear_ ? &*wall_shear_ : nullptr; }
   // The prescribed body-force density of the run, for the wall shear stress (see
   // WallShearRecorder::set_body_force); must outlive the analysis.
+  // A non-Newtonian fluid: the wall shear stress with its nodal viscosity
+  // (WallShearRecorder::set_viscosity_model).
+  void set_viscosity_model(const flow::ViscosityModel& model) {
+    if (wall_shear_) wall_shear_->set_viscosity_model(model);
+  }
   void set_body_force(const flow::VectorField* force_density) {
     if (wall_shear_) wall_shear_->set_body_force(force_density);
   }

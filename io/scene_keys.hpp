@@ -10,6 +10,7 @@ void declare_run_keys(Schema& schema);        // io/scene_keys_run.cpp
 void declare_mesh_keys(Schema& schema);       // io/scene_keys_mesh.cpp
 void declare_partition_keys(Schema& schema);  // io/scene_keys_partition.cpp
 void declare_flow_keys(Schema& schema);       // io/scene_keys_flow.cpp
+void declare_rheology_keys(Schema& schema);   // io/scene_keys_rheology.cpp
 void declare_forcing_keys(Schema& schema);    // io/scene_keys_forcing.cpp
 void declare_boundary_keys(Schema& schema);   // io/scene_keys_boundary.cpp
 void declare_les_keys(Schema& schema);        // io/scene_keys_les.cpp

@@ -10,6 +10,7 @@
 
 #include "flow/time_scheme.hpp"
 #include "io/scene_keys.hpp"
+#include "io/scene_keys_rheology.hpp"
 
 namespace valsalva::io {
 
@@ -46,7 +47,8 @@ void declare_flow_keys(Schema& s) {
       .unit_of("Pa s")
       .doc(
           "Dynamic viscosity (Newtonian); 3.6e-3 is the reference experiment's blood analogue; "
-          "the 1e9-step rule of flow.density applies");
+          "the 1e9-step rule of flow.density applies; not used by the momentum equation with a "
+          "non-Newtonian flow.viscosity_model");
   s.choice("flow.scheme", {"central2", "central4"})
       .def("central2")
       .unit_of("-")
@@ -350,6 +352,7 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   const double rho = scene.get<double>("flow.density");
   o.projection.density = rho;
   o.projection.viscosity = scene.get<double>("flow.viscosity") / rho;
+  o.projection.rheology = read_viscosity_model(scene);
   o.projection.scheme = scene.get<std::string>("flow.scheme");
   o.projection.fourth_order_operators = scene.get<bool>("flow.fourth_order_operators");
   o.projection.stiffness_viscous = scene.get<std::string>("flow.viscous_weights") == "stiffness";

@@ -21,6 +21,7 @@ const Schema& scene_schema() {
     declare_mesh_keys(s);
     declare_partition_keys(s);
     declare_flow_keys(s);
+    declare_rheology_keys(s);
     declare_forcing_keys(s);
     declare_boundary_keys(s);
     declare_les_keys(s);

@@ -73,6 +73,12 @@ void WallShearRecorder::sample(const flow::FlowState& state) {
   in.velocity_gradient = &grad_;
   in.laplacian_weights = &weights_;
   in.body_force = body_force_;
+  if (model_.law != flow::ViscosityLaw::newtonian) {
+    mu_field_.resize(grad_.size());
+    for (std::size_t i = 0; i < grad_.size(); ++i)
+      mu_field_[i] = flow::apparent_viscosity(model_, flow::shear_rate(grad_[i]));
+    in.viscosity_field = &mu_field_;
+  }
   const double t = state.time, t0 = options_.start_time;
   const double elapsed = sampled_ ? t - std::max(last_time_, t0) : 0.0;
   std::vector<double> mean;

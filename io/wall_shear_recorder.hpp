@@ -35,6 +35,9 @@ class WallShearRecorder {
   // it belongs to the fluid's momentum balance, not to the wall (without it a uniform force F
   // adds F h/2 per unit area to tau_w, h/H of a channel's wall shear). Must outlive the recorder.
   void set_body_force(const flow::VectorField* force_density) { body_force_ = force_density; }
+  // A non-Newtonian fluid (flow.viscosity_model): tau_w with the nodal viscosity
+  // mu(gamma_dot) of the sampled velocity, in place of the constructor's dynamic_viscosity.
+  void set_viscosity_model(const flow::ViscosityModel& model) { model_ = model; }
   std::vector<CheckpointArray> checkpoint_arrays() const;
   void restore(const CheckpointReader& reader);            // collective
   void write(const std::filesystem::path& run_dir) const;  // collective
@@ -51,6 +54,8 @@ class WallShearRecorder {
   const flow::VectorField* body_force_ = nullptr;
   std::vector<double> weights_;  // the viscous edge weights of the momentum operator
   flow::TensorField grad_;
+  flow::ViscosityModel model_;           // newtonian: mu_
+  flow::ScalarField mu_field_;           // non-Newtonian: mu(gamma_dot) per local node
   std::vector<std::vector<int>> nodes_;  // local wall node per load, per patch
   std::vector<std::vector<double>> area_;
   std::vector<std::vector<Eigen::Vector3d>> tau_;

@@ -179,8 +179,11 @@ void Simulation::Parts::print_summary(const io::Scene& s, double rho, double vis
       "method {}\n",
       mesh.num_nodes(), metrics.num_nodes(), mesh.num_cells(), local.comm.size(),
       partition.ghost_layers, partition.method);
-  fmt::print("flow: rho {:.6g} kg/m3, nu {:.6g} m2/s, scheme {}, initial state {}\n", rho,
-             viscosity, s.get<std::string>("flow.scheme"), s.get<std::string>("initial.type"));
+  const auto law = s.get<std::string>("flow.viscosity_model");
+  fmt::print("flow: rho {:.6g} kg/m3, {}, scheme {}, initial state {}\n", rho,
+             law == "newtonian" ? fmt::format("nu {:.6g} m2/s", viscosity)
+                                : fmt::format("viscosity model {}", law),
+             s.get<std::string>("flow.scheme"), s.get<std::string>("initial.type"));
   if (les.subgrid_viscosity)
     fmt::print("les: model {}, constant {:.4g}\n", les.model, les.constant);
   if (immersed) {
@@ -350,6 +353,7 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
   }
   if (p.analysis && p.loop->prescribed_force())
     p.analysis->set_body_force(p.loop->prescribed_force());
+  if (p.analysis) p.analysis->set_viscosity_model(run_options.projection.rheology);
   if (p.checkpoint) {
     p.loop->resume(std::move(start), start_step, start_dp, start_nu_sgs, start_flux, start_lumped);
     p.loop->restore_forcing_state(start_forcing);

@@ -16,6 +16,7 @@
 #include "flow/local_mesh.hpp"
 #include "flow/run_loop.hpp"
 #include "io/box_generator.hpp"
+#include "io/periodic_pipe_generator.hpp"
 #include "io/pipe_generator.hpp"
 #include "io/run_analysis.hpp"
 #include "io/section_flux.hpp"
@@ -150,5 +151,23 @@ TEST_CASE("a section across a periodic direction cuts the domain once") {
     INFO("x = " << x);
     CHECK(cut.flux(flux) == doctest::Approx(1.0).epsilon(1e-12));
     CHECK(cut.projected_area() == doctest::Approx(1.0).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("a section of a periodic pipe: edges through the periodic pair are not cut") {
+  // Before the fix the edges from the last layer to the images of the first (stored at z = 0)
+  // counted as cut by any plane between them, reversed: the projected area summed to zero.
+  io::PeriodicPipeSpec spec;
+  spec.radius = 0.002, spec.length = 0.00075, spec.target_size = 0.00025;
+  const auto mesh = io::generate_periodic_pipe_mesh(spec);
+  const auto metrics = flow::compute_dual_metrics(mesh);
+  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
+  double volume = 0;
+  for (int i = 0; i < local.num_owned; ++i) volume += local.volume[i];
+  const double cross_section = local.comm.sum(volume) / spec.length;  // the polygon's area
+  for (double z : {0.000375, 0.0006, 0.0007}) {
+    CAPTURE(z);
+    const io::SectionFlux s(local, section("mid", z));
+    CHECK(s.projected_area() == doctest::Approx(cross_section).epsilon(1e-12));
   }
 }
