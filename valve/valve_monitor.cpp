@@ -60,7 +60,7 @@ ValveMonitor::ValveMonitor(const flow::LocalMesh& local, const ibm::ImmersedStru
   const structure::SolidMesh& all = structure.body(body).mesh();
   for (int i = 1; i <= 3; ++i) {
     const std::string prefix = fmt::format("leaflet{}", i);
-    for (const std::string set : {prefix, prefix + "_free_edge", prefix + "_attachment"})
+    for (const std::string& set : {prefix, prefix + "_free_edge", prefix + "_attachment"})
       if (!all.node_sets.count(set) || all.node_sets.at(set).empty())
         throw std::runtime_error(fmt::format(
             "valve.structure = '{}': its mesh has no node set '{}' (a valve needs leaflet1..3 "
