@@ -220,6 +220,6 @@ TEST_CASE("4th-order operators: refused with one ghost layer and with an LES mod
   options.fourth_order_operators = true;
   options.subgrid_viscosity = [](int, const TensorField&, ScalarField&) {};
   CHECK_THROWS_WITH_AS(flow::ProjectionRK4(local, options),
-                       doctest::Contains("no full-stress (LES) viscous term"),
+                       doctest::Contains("no full-stress (LES or non-Newtonian) viscous term"),
                        std::invalid_argument);
 }
