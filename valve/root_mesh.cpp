@@ -129,6 +129,24 @@ std::string classify(const ValveGeometry& g, int tag) {
   return inlet ? "inlet" : outlet ? "outlet" : on ? "frame" : "wall";
 }
 
+// mesh_size inside the valve region, far_mesh_size outside, linear over two far sizes between
+// (a Gmsh Box field as background size; the smaller of it and the boundary sizes wins).
+void set_valve_region_size(const ValveGeometry& g) {
+  namespace field = gmsh::model::mesh::field;
+  const int box = field::add("Box");
+  const double r = g.refined_region_radius();
+  field::setNumber(box, "VIn", g.mesh_size);
+  field::setNumber(box, "VOut", g.fluid_far_size());
+  field::setNumber(box, "XMin", -r);
+  field::setNumber(box, "XMax", r);
+  field::setNumber(box, "YMin", -r);
+  field::setNumber(box, "YMax", r);
+  field::setNumber(box, "ZMin", g.refined_region_z_min());
+  field::setNumber(box, "ZMax", g.refined_region_z_max());
+  field::setNumber(box, "Thickness", 2 * g.fluid_far_size());
+  field::setAsBackgroundMesh(box);
+}
+
 }  // namespace
 
 bool on_frame(const ValveGeometry& g, double x, double y, double z, double tol) {
@@ -190,9 +208,10 @@ RootMeshSummary write_root_mesh(const std::filesystem::path& file, const ValveGe
   };
   s.cad_seconds = since(t0);
   io::gmsh_call(source + ": meshing the root", [&] {
-    gmsh::option::setNumber("Mesh.MeshSizeMax", g.mesh_size);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", g.fluid_far_size());
     gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 1);
+    if (g.fluid_far_size() > g.mesh_size) set_valve_region_size(g);
     const auto t1 = std::chrono::steady_clock::now();
     io::generate_deterministic_mesh(2);
     s.surface_seconds = since(t1);

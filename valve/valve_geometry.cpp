@@ -103,6 +103,11 @@ const std::vector<ValveKey>& valve_keys() {
       {"mesh_size", "m",
        "fluid tetrahedron size; leaflet Q2 elements are 1.5 mesh_size along the arc and height",
        &G::mesh_size},
+      {"far_mesh_size", "m",
+       "fluid tetrahedron size away from the valve region (inflow tract beyond one root radius "
+       "upstream of the annulus, aorta beyond one root diameter above the STJ); 0: mesh_size "
+       "everywhere",
+       &G::far_mesh_size},
   };
   return keys;
 }
@@ -150,10 +155,16 @@ void validate(const ValveGeometry& g) {
   for (const auto& k : valve_keys()) {
     const double v = g.*k.field;
     require(std::isfinite(v), k.name, v, "it must be a finite number");
-    if (k.name != "first_commissure_deg" && k.name != "free_edge_rise")
+    if (k.name != "first_commissure_deg" && k.name != "free_edge_rise" &&
+        k.name != "far_mesh_size")
       require(v > 0, k.name, v, "it must be positive");
   }
   require(g.free_edge_rise >= 0, "free_edge_rise", g.free_edge_rise, "it must not be negative");
+  require(g.far_mesh_size == 0 || g.far_mesh_size >= g.mesh_size, "far_mesh_size",
+          g.far_mesh_size,
+          fmt::format("it must be 0 (uniform) or at least mesh_size = {:g} m", g.mesh_size));
+  require(g.far_mesh_size <= g.root_radius(), "far_mesh_size", g.far_mesh_size,
+          fmt::format("must not exceed the root radius {:g} m", g.root_radius()));
   const double R = g.root_radius();
   require(g.frame_thickness < R, "frame_thickness", g.frame_thickness,
           fmt::format("the frame must be thinner than the root radius {:g} m", R));

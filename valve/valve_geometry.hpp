@@ -30,6 +30,9 @@
 //     the lobe leaves the wall at the leaflet's attachment, tangent to the frame's outer face,
 //     bulges most half-way up and returns to the STJ circle;
 //     R_b = R below the post tops, rising as sin^2 to stj_diameter / 2 at the STJ.
+// - Fluid sizes: mesh_size in the valve region (the leaflets and their kernels must be resolved
+//   there), far_mesh_size (coarser, optional) in the inflow tract and the aorta away from it,
+//   with a transition of two far sizes (a Gmsh Box field).
 #pragma once
 
 #include <array>
@@ -59,6 +62,16 @@ struct ValveGeometry {
   double inlet_length = 50e-3;
   double outlet_length = 92e-3;
   double mesh_size = 1e-3;
+  double far_mesh_size = 0;  // 0: the whole fluid at mesh_size
+
+  // The fluid size away from the valve region (see refined_region_* below).
+  double fluid_far_size() const { return far_mesh_size > 0 ? far_mesh_size : mesh_size; }
+  // The valve region meshed at mesh_size when far_mesh_size is coarser: the whole root cross-
+  // section, from one root radius upstream of the annulus (the frame's step and the inflow's
+  // contraction onto the leaflets) to one root diameter above the STJ (the jet's near wake).
+  double refined_region_z_min() const { return -root_radius(); }
+  double refined_region_z_max() const { return sinus_height + root_diameter; }
+  double refined_region_radius() const { return root_radius() + sinus_depth; }
 
   // Derived quantities.
   double root_radius() const { return root_diameter / 2; }

@@ -27,7 +27,7 @@ std::string refusal(const std::vector<std::string>& settings) {
 TEST_CASE("valve geometry: defaults and derived angles") {
   const valve::ValveGeometry g;
   CHECK_NOTHROW(valve::validate(g));
-  CHECK(valve::valve_keys().size() == 19);
+  CHECK(valve::valve_keys().size() == 20);
   const double deg = M_PI / 180;
   CHECK(g.commissure_angle(0) == doctest::Approx(90 * deg));
   CHECK(g.commissure_angle(2) == doctest::Approx(330 * deg));
@@ -78,6 +78,9 @@ TEST_CASE("valve geometry: bad values are refused naming key, value and limit") 
       {{"inlet_length=abc"}, {"inlet_length", "not a number"}},
       {{"mesh_size=1e-3", "mesh_size=2e-3"}, {"mesh_size", "twice"}},
       {{"mesh_size"}, {"key=value"}},
+      {{"mesh_size=2e-3", "far_mesh_size=1e-3"}, {"far_mesh_size", "0.001", "at least mesh_size"}},
+      {{"far_mesh_size=-1e-3"}, {"far_mesh_size", "-0.001", "at least mesh_size"}},
+      {{"far_mesh_size=0.02"}, {"far_mesh_size", "0.02", "root radius"}},
   };
   for (const auto& c : cases) {
     const std::string msg = refusal(c.set);
