@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
+#include <ctime>
 #include <limits>
 
 #include "ibm/collective_error.hpp"
@@ -77,43 +79,114 @@ DiracTransfer::DiracTransfer(flow::LocalMesh& mesh, const TransferOptions& optio
   }
 }
 
+namespace {
+// Adds the CPU time of its scope to `total` (std::clock: this process's CPU time).
+class CpuTimer {
+ public:
+  explicit CpuTimer(double& total) : total_(total), start_(std::clock()) {}
+  ~CpuTimer() { total_ += double(std::clock() - start_) / CLOCKS_PER_SEC; }
+  CpuTimer(const CpuTimer&) = delete;
+  CpuTimer& operator=(const CpuTimer&) = delete;
+
+ private:
+  double& total_;
+  std::clock_t start_;
+};
+}  // namespace
+
 void DiracTransfer::locate(std::span<const Eigen::Vector3d> markers) {
-  const auto& mesh = *mesh_;
+  const CpuTimer timer(counts_.cpu_seconds);
   num_markers_ = static_cast<int>(markers.size());
   supports_.clear();
   weights_.clear();
+  ++counts_.calls;
+  counts_.markers += num_markers_;
+  counts_.rebuilt += num_markers_;
+  locate_all(markers);
+}
 
+void DiracTransfer::relocate(std::span<const Eigen::Vector3d> markers) {
+  if (!(options_.reuse_distance > 0) || located_at_.size() != markers.size()) {
+    locate(markers);
+    return;
+  }
+  // All markers or none: markers located at different times would lag their kernels by
+  // different amounts, and forces that cancel between nearby markers (a thin leaflet's two
+  // faces, contact pairs) would no longer cancel once spread. Located together, two markers'
+  // kernels lag each other by their relative displacement only.
+  bool moved = false;
+  {
+    const CpuTimer timer(counts_.cpu_seconds);
+    for (std::size_t i = 0; i < markers.size() && !moved; ++i)
+      moved = periodic_distance(markers[i], located_at_[i]) >
+              options_.reuse_distance * located_h_[i];
+  }
+  if (moved) {
+    locate(markers);
+    return;
+  }
+  ++counts_.calls;
+  counts_.markers += num_markers_;
+}
+
+double DiracTransfer::periodic_distance(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+  // A marker wrapped into the periodic box may come back one period away (a flap standing on
+  // the periodic boundary sits at 0 or at the period by round-off).
+  Eigen::Vector3d d = a - b;
+  for (const auto& p : periods_) {
+    const double length = p.norm();
+    d -= p * std::round(d.dot(p) / (length * length));
+  }
+  return d.norm();
+}
+
+void DiracTransfer::locate_all(std::span<const Eigen::Vector3d> markers) {
+  const auto& mesh = *mesh_;
   // Nearest owned node of every marker on this rank, then the rank with the nearest overall.
   // The search takes ghosts too, so that it stops as soon as any node is near (a marker of
   // another rank's region no longer scans every ring up to the reach): owned nodes are numbered
   // first and ties go to the lower index, so a ghost comes out only when every owned node is
   // strictly farther, and then the ghost's owner is strictly nearer and this rank cannot win.
   const double reach = options_.kernel.width * std::max(h_max_, options_.min_h);
-  mine_.resize(markers.size());
-  best_.resize(markers.size());
-  nearest_.resize(markers.size());
+  const std::size_t count = markers.size();
+  mine_.resize(count);
+  best_.resize(count);
+  nearest_.resize(count);
   const int num_owned = mesh.num_owned;
-  for (std::size_t i = 0; i < markers.size(); ++i) {
-    const auto found = grid_.nearest(markers[i], reach, [](int) { return true; });
+  for (std::size_t k = 0; k < count; ++k) {
+    const auto found = grid_.nearest(markers[k], reach, [](int) { return true; });
     const bool owned = found.index >= 0 && found.index < num_owned;
-    nearest_[i] = owned ? found.index : -1;
-    mine_[i] = {owned ? found.distance : std::numeric_limits<double>::max(), mesh.comm.rank()};
+    nearest_[k] = owned ? found.index : -1;
+    mine_[k] = {owned ? found.distance : std::numeric_limits<double>::max(), mesh.comm.rank()};
   }
-  if (!markers.empty())
-    VALSALVA_MPI(MPI_Allreduce(mine_.data(), best_.data(), static_cast<int>(markers.size()),
+  if (count > 0)
+    VALSALVA_MPI(MPI_Allreduce(mine_.data(), best_.data(), static_cast<int>(count),
                                MPI_DOUBLE_INT, MPI_MINLOC, mesh.comm.get()));
 
   std::string error;
-  for (std::size_t i = 0; i < markers.size() && error.empty(); ++i) {
-    const int marker = static_cast<int>(i);
-    if (best_[i].distance == std::numeric_limits<double>::max()) {
+  built_h_.assign(count, 0.0);
+  for (std::size_t k = 0; k < count && error.empty(); ++k) {
+    const int marker = static_cast<int>(k);
+    const auto& x = markers[k];
+    if (best_[k].distance == std::numeric_limits<double>::max()) {
       error = fmt::format("{} is outside the fluid mesh: no fluid node within {:.6g} m",
-                          where(marker, markers[i]), reach);
-    } else if (best_[i].rank == mesh.comm.rank()) {
-      error = build_support(marker, markers[i], nearest_[i]);
+                          where(marker, x), reach);
+    } else if (best_[k].rank == mesh.comm.rank()) {
+      error = build_support(marker, x, nearest_[k]);
+      if (error.empty()) built_h_[k] = supports_.back().h;
     }
   }
-  settle(mesh.comm, error);
+  try {
+    settle(mesh.comm, error);
+  } catch (...) {
+    located_at_.clear();  // the next relocate locates every marker again
+    throw;
+  }
+  if (count > 0)
+    VALSALVA_MPI(MPI_Allreduce(MPI_IN_PLACE, built_h_.data(), static_cast<int>(count), MPI_DOUBLE,
+                               MPI_MAX, mesh.comm.get()));
+  located_at_.assign(markers.begin(), markers.end());
+  located_h_ = built_h_;
 }
 
 std::string DiracTransfer::build_support(int marker, const Eigen::Vector3d& x, int nearest) {

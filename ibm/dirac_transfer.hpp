@@ -23,6 +23,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -48,6 +49,19 @@ struct TransferOptions {
   // which grows as the kernel shrinks) from following a few small cells that the geometry
   // forces, e.g. around a thin rigid frame the leaflets are attached to.
   double min_h = 0;
+  // relocate(): a marker keeps the support and corrected weights built at its last location
+  // until it is farther than this (in units of the h they were built with) from there; 0 =
+  // every call rebuilds every marker. The kernel then lags the marker by less than this
+  // distance, which changes interpolated values by O(this h |grad u|) and keeps spreading and
+  // interpolation adjoint (they share the weights).
+  double reuse_distance = 0;
+};
+
+// How much locating work the transfer did: locate and relocate calls, the markers they were
+// given and those they (re)built, and the CPU seconds they took on this rank.
+struct LocateCounts {
+  std::int64_t calls = 0, markers = 0, rebuilt = 0;
+  double cpu_seconds = 0;
 };
 
 class DiracTransfer {
@@ -74,6 +88,13 @@ class DiracTransfer {
   // wider than a period, when it lies more than max_outside h beyond the fluid boundary, or
   // when its moment matrix stays ill-conditioned after growing.
   void locate(std::span<const Eigen::Vector3d> markers);
+  // Collective. As locate, but only when some marker moved farther than options.reuse_distance
+  // h from where it was last located (or the marker count changed); else the supports and
+  // weights stay as they are: those of locate at located_at(), bit for bit.
+  void relocate(std::span<const Eigen::Vector3d> markers);
+  // Where each marker's support was built (replicated; empty before the first locate).
+  const std::vector<Eigen::Vector3d>& located_at() const { return located_at_; }
+  const LocateCounts& counts() const { return counts_; }
 
   // Collective. `marker_force` (components per marker, replicated) -> `density` (components per
   // local node, overwritten): complete on owned nodes, ghosts refreshed by a halo insert.
@@ -91,6 +112,10 @@ class DiracTransfer {
   const flow::LocalMesh& mesh() const { return *mesh_; }
 
  private:
+  // |a - b| up to whole periods.
+  double periodic_distance(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
+  // Ownership and supports of every marker, located_at_ and located_h_.
+  void locate_all(std::span<const Eigen::Vector3d> markers);
   // Builds the support of one marker on this rank; returns an error message or "".
   std::string build_support(int marker, const Eigen::Vector3d& x, int nearest);
   void check_sizes(const char* what, std::size_t marker_values, std::size_t node_values,
@@ -112,6 +137,10 @@ class DiracTransfer {
   int num_markers_ = 0;
   std::vector<MarkerSupport> supports_;
   std::vector<Weight> weights_;
+  std::vector<Eigen::Vector3d> located_at_;  // replicated, per marker
+  std::vector<double> located_h_;            // replicated: the h its support was built with
+  std::vector<double> built_h_;              // scratch of locate_all
+  LocateCounts counts_;
   // Scratch reused between markers and calls (no allocation once warm).
   struct DistanceRank {  // layout of MPI_DOUBLE_INT for MPI_MINLOC
     double distance;

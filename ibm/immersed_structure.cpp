@@ -82,7 +82,15 @@ void ImmersedStructure::locate(const Eigen::Matrix3Xd& x) {
   if (options_.box)
     for (int a = 0; a < wrapped_.cols(); ++a)
       wrapped_.col(a) = wrap_into(*options_.box, wrapped_.col(a));
-  transfer_.locate(as_points(wrapped_));
+  transfer_.relocate(as_points(wrapped_));
+}
+
+void ImmersedStructure::restore_location(const std::vector<Eigen::Vector3d>& located_at) {
+  if (located_at.size() != coupled_.size())
+    throw std::invalid_argument(
+        fmt::format("ibm::ImmersedStructure::restore_location: {} positions for {} coupled markers",
+                    located_at.size(), coupled_.size()));
+  transfer_.locate(located_at);
 }
 
 void ImmersedStructure::compute_forces(const Eigen::Matrix3Xd& x) {

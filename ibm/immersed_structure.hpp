@@ -140,6 +140,12 @@ class ImmersedStructure {
   void set_last_displacement(const Eigen::Matrix3Xd& d);
   int last_implicit_iterations() const { return implicit_iterations_; }
   const DiracTransfer& transfer() const { return transfer_; }
+  // Where each coupled marker's kernel support was last built (transfer.reuse_distance keeps it
+  // while the marker stays near): part of the state, saved in checkpoints so that a restart
+  // spreads and interpolates with the same weights. restore_location rebuilds the supports
+  // there (collective; throws on a count that is not num_coupled_markers()).
+  const std::vector<Eigen::Vector3d>& located_at() const { return transfer_.located_at(); }
+  void restore_location(const std::vector<Eigen::Vector3d>& located_at);
   const ImmersedOptions& options() const { return options_; }
 
  private:

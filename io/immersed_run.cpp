@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 
 #include "io/immersed_coupling.hpp"
@@ -123,7 +124,19 @@ std::vector<CheckpointArray> ImmersedRun::checkpoint_arrays() const {
     bound.rows.push_back(0);
     bound.data = {dt_bound_, static_cast<double>(evaluated_at_)};
   }
-  if (ib_->options().mode != ibm::CouplingMode::implicit) return {a, bound};
+  std::vector<CheckpointArray> arrays{a, bound};
+  // Where the kernel supports were built (they are kept while markers stay near).
+  const auto& at = ib_->located_at();
+  if (static_cast<int>(at.size()) == ib_->num_coupled_markers()) {
+    CheckpointArray l{"marker_located_at", ib_->num_coupled_markers(), 3, {}, {}};
+    if (root_)
+      for (std::size_t m = 0; m < at.size(); ++m) {
+        l.rows.push_back(static_cast<std::int64_t>(m));
+        for (int k = 0; k < 3; ++k) l.data.push_back(at[m][k]);
+      }
+    arrays.push_back(std::move(l));
+  }
+  if (ib_->options().mode != ibm::CouplingMode::implicit) return arrays;
   // The implicit coupling's state: the last marker displacement (its extrapolated force).
   CheckpointArray d{"marker_last_displacement", ib_->num_markers(), 3, {}, {}};
   if (root_) {
@@ -133,7 +146,8 @@ std::vector<CheckpointArray> ImmersedRun::checkpoint_arrays() const {
       for (int k = 0; k < 3; ++k) d.data.push_back(dx(k, m));
     }
   }
-  return {a, bound, d};
+  arrays.push_back(std::move(d));
+  return arrays;
 }
 
 void ImmersedRun::restore(const CheckpointReader& in) {
@@ -159,6 +173,16 @@ void ImmersedRun::restore(const CheckpointReader& in) {
     for (int m = 0; m < dx.cols(); ++m)
       for (int k = 0; k < 3; ++k) dx(k, m) = d[3 * m + k];
     ib_->set_last_displacement(dx);
+  }
+  // A checkpoint without supports (written before the markers were ever located) locates them
+  // afresh at the next stage, as the uninterrupted run would have.
+  if (in.has("marker_located_at")) {
+    std::vector<std::int64_t> coupled(static_cast<std::size_t>(ib_->num_coupled_markers()));
+    std::iota(coupled.begin(), coupled.end(), 0);
+    const auto l = in.read_array("marker_located_at", coupled);
+    std::vector<Eigen::Vector3d> at(coupled.size());
+    for (std::size_t m = 0; m < at.size(); ++m) at[m] = {l[3 * m], l[3 * m + 1], l[3 * m + 2]};
+    ib_->restore_location(at);
   }
   const std::int64_t row = 0;
   const auto bound = in.read_array("immersed_dt_bound", std::span(&row, 1));

@@ -48,6 +48,17 @@ void declare_structure_keys(Schema& s) {
           "A marker farther than this beyond the fluid boundary (along the outward normal of "
           "the nearest boundary node in its support) stops the run naming the marker and the "
           "patch; the slack covers a curved wall's chord polygon and edges clamped on the wall");
+  s.real("immersed.reuse_distance")
+      .def(0.1)
+      .at_least(0)
+      .at_most(0.5)
+      .unit_of("h")
+      .doc(
+          "A marker keeps its kernel support and RKPM-corrected weights until it has moved this "
+          "far from where they were built (in units of the h they were built with); only the "
+          "markers that moved farther are located again. 0 = every marker at every RK stage. "
+          "The kernel lags its marker by less than this, which shifts interpolated velocities "
+          "by at most this h |grad u|; spreading and interpolation stay adjoint");
   s.choice("immersed.coupling", {"per_stage", "per_step", "implicit"})
       .def("per_stage")
       .unit_of("-")
@@ -381,6 +392,7 @@ ImmersedSetup read_immersed_setup(const Scene& scene, const flow::Mesh& mesh) {
   o.transfer.kernel.width = scene.get<double>("immersed.kernel_width");
   o.transfer.max_outside = scene.get<double>("immersed.max_outside");
   o.transfer.min_h = scene.get<double>("immersed.kernel_min_size");
+  o.transfer.reuse_distance = scene.get<double>("immersed.reuse_distance");
   const auto coupling = scene.get<std::string>("immersed.coupling");
   o.mode = coupling == "per_step"   ? ibm::CouplingMode::per_step
            : coupling == "implicit" ? ibm::CouplingMode::implicit

@@ -434,6 +434,9 @@ const flow::DualMetrics& Simulation::metrics() const {
 const flow::RunLoop& Simulation::loop() const {
   return *parts_->loop;
 }
+const ibm::ImmersedStructure* Simulation::immersed() const {
+  return parts_->immersed ? &parts_->immersed->structure() : nullptr;
+}
 const flow::LocalMesh& Simulation::local() const {
   return parts_->local;
 }

@@ -17,6 +17,10 @@
 #include "flow/run_loop.hpp"
 #include "io/scene.hpp"
 
+namespace valsalva::ibm {
+class ImmersedStructure;
+}
+
 namespace valsalva::run {
 
 // How a run is started, apart from the scene: the command line of `valsalva run`.
@@ -68,6 +72,8 @@ class Simulation {
   const flow::LocalMesh& local() const;
   const flow::FlowState& state() const;
   const flow::RunLoop& loop() const;
+  // The immersed structures, or nullptr in a scene without [structure.<name>] tables.
+  const ibm::ImmersedStructure* immersed() const;
   const std::filesystem::path& run_path() const;
 
  private:

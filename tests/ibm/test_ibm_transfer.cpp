@@ -311,3 +311,64 @@ TEST_CASE("interpolation converges at second order on perturbed tetrahedra") {
   CHECK(order_coarse >= 1.8);
   CHECK(order_fine >= 1.8);
 }
+
+// relocate keeps every support while all markers stay within reuse_distance h of where they
+// were built, and rebuilds all of them once one moved farther (markers located at different
+// times would lag their kernels differently, and forces that cancel between nearby markers would
+// no longer cancel). Kept, the results are bit for bit those of a locate at the old positions;
+// rebuilt, those of a locate at the new ones; at 1, 2 and 3 ranks.
+TEST_CASE("relocate: all supports kept within reuse_distance h, all rebuilt beyond") {
+  const Level level(12);
+  auto local = flow::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {5, "metis"});
+  const double cell = kLength.x() / 12, reuse = 0.1;
+  const auto x = markers(cell);
+  const auto nm = x.size();
+  ibm::TransferOptions o{{ibm::KernelType::peskin4, 4.0}};
+  o.reuse_distance = reuse;
+  ibm::DiracTransfer transfer(local, o);
+  transfer.locate(x);
+  double h_min = 1e300;  // the smallest h a support was built with
+  for (const auto& s : transfer.supports()) h_min = std::min(h_min, s.h);
+  h_min = local.comm.min(h_min);
+  const auto force = random_forces(nm);
+  std::vector<Vec> field(local.num_local());
+  for (int j = 0; j < local.num_local(); ++j) field[j] = smooth(local.position[j]);
+  // Spread and interpolation of `t` against a fresh transfer located at `at`: identical?
+  auto same_as_fresh = [&](ibm::DiracTransfer& t, const std::vector<Vec>& at) {
+    ibm::DiracTransfer fresh(local, o);
+    fresh.locate(at);
+    std::vector<Vec> d1(local.num_local()), d2(local.num_local()), u1(nm), u2(nm);
+    t.spread(force, d1);
+    fresh.spread(force, d2);
+    t.interpolate(field, u1);
+    fresh.interpolate(field, u2);
+    bool same = u1 == u2;
+    for (int j = 0; j < local.num_local(); ++j) same = same && d1[j] == d2[j];
+    return local.comm.min(same ? 1.0 : 0.0) == 1.0;
+  };
+  auto shifted = [&](double distance) {  // every marker moved inwards by `distance`
+    std::vector<Vec> y = x;
+    for (auto& p : y) p += distance * (0.5 * kLength - p).normalized();
+    return y;
+  };
+
+  const auto small = shifted(0.5 * reuse * h_min);
+  transfer.relocate(small);
+  CHECK(transfer.counts().rebuilt == static_cast<std::int64_t>(nm));  // the first locate only
+  CHECK(transfer.located_at() == x);
+  CHECK(same_as_fresh(transfer, x));
+
+  auto one_far = small;
+  one_far[7] = shifted(3 * reuse * h_min)[7];
+  transfer.relocate(one_far);
+  CHECK(transfer.counts().rebuilt == 2 * static_cast<std::int64_t>(nm));
+  CHECK(transfer.located_at() == one_far);
+  CHECK(same_as_fresh(transfer, one_far));
+  CHECK(transfer.counts().calls == 3);
+
+  o.reuse_distance = 0;  // every call rebuilds
+  ibm::DiracTransfer always(local, o);
+  always.locate(x);
+  always.relocate(x);
+  CHECK(always.counts().rebuilt == 2 * static_cast<std::int64_t>(nm));
+}
