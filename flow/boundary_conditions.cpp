@@ -28,6 +28,30 @@ Eigen::Vector3d off_axis(const Eigen::Vector3d& x, const Eigen::Vector3d& centre
   return d - d.dot(axis) * axis;
 }
 
+// The lumped ventricle's parameters (code that builds specs directly bypasses the scene checks).
+void check_elastance(const BoundarySpec& spec, const std::vector<BoundarySpec>& specs) {
+  const auto& e = spec.elastance;
+  auto bad = [&](const std::string& what) {
+    return std::invalid_argument(fmt::format("elastance inlet '{}': {}", spec.patch, what));
+  };
+  if (!e.tabulated &&
+      !(e.minimum >= 0 && e.maximum >= e.minimum && e.period > 0 && e.systole > 0 &&
+        e.systole <= e.period && std::isfinite(e.maximum) && std::isfinite(e.period)))
+    throw bad(fmt::format("needs 0 <= elastance_min <= elastance_max and 0 < systole <= period "
+                          "(got {}, {}, {}, {})",
+                          e.minimum, e.maximum, e.systole, e.period));
+  if (e.tabulated && *std::min_element(e.table.q.begin(), e.table.q.end()) < 0)
+    throw bad("the elastance table has a negative elastance");
+  if (!(spec.rest_volume >= 0) || !(spec.volume >= 0))
+    throw bad(fmt::format("volume = {} and rest_volume = {} must be >= 0", spec.volume,
+                          spec.rest_volume));
+  if (spec.venous_return.empty()) return;
+  const auto it = std::find_if(specs.begin(), specs.end(),
+                               [&](const BoundarySpec& s) { return s.patch == spec.venous_return; });
+  if (it == specs.end() || it->type != BoundaryType::rcr_outlet)
+    throw bad(fmt::format("venous_return = '{}' is not an rcr_outlet patch", spec.venous_return));
+}
+
 }  // namespace
 
 BoundaryConditions::BoundaryConditions(const LocalMesh& mesh, std::vector<BoundarySpec> specs,
@@ -100,7 +124,8 @@ BoundaryConditions::BoundaryConditions(const LocalMesh& mesh, std::vector<Bounda
     const auto& spec = specs_[P.spec];
     has_pressure_ |= pressure_type(spec.type);
     has_convective_ |= spec.type == BoundaryType::convective_outlet;
-    if (lumped_type(spec.type)) {
+    if (spec.type == BoundaryType::elastance_inlet) check_elastance(spec, specs_);
+    if (spec.type == BoundaryType::resistance_outlet || spec.type == BoundaryType::rcr_outlet) {
       const bool rcr = spec.type == BoundaryType::rcr_outlet;
       for (const auto& [name, value] :
            {std::pair{"resistance", spec.resistance},
@@ -229,6 +254,8 @@ void BoundaryConditions::update_roles(double t) {
       case BoundaryType::pressure_outlet:
       case BoundaryType::resistance_outlet:
       case BoundaryType::rcr_outlet:
+      case BoundaryType::pressure_inlet:
+      case BoundaryType::elastance_inlet:
         P.role = Role::pressure;
         break;
       case BoundaryType::inlet:

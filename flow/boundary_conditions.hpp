@@ -16,6 +16,11 @@
 //                      (a lumped outlet). Lumped outlets are pressure outlets whose uniform
 //                      pressure is coupled implicitly to their flux at the end of each step
 //                      (flow/lumped_outlets.hpp); set_outlet_pressure() holds their value.
+//   pressure_inlet     p = p_in(t) (a waveform), otherwise a pressure outlet: u free, with the
+//                      same inflow stabilisation, which here acts on the whole patch
+//   elastance_inlet    a lumped ventricle p = E(t) (V - V0), dV/dt = Q (+ the venous return
+//                      of an rcr_outlet's distal flow), Q the outward patch flux.
+//                      Both are lumped like the outlets above (a law affine in Q^{n+1}).
 // Role exchange (pulse-duplicator inflow, see ../shared/design/architecture.md): an inlet with a
 // partner (swap_with, a convective outlet) imposes Q(t) while Q >= 0; while Q < 0 the partner
 // imposes |Q| inward with a flat profile and the inlet becomes a convective outlet.
@@ -40,6 +45,7 @@
 #include <string>
 #include <vector>
 
+#include "flow/elastance.hpp"
 #include "flow/inflow_waveform.hpp"
 #include "flow/local_mesh.hpp"
 #include "flow/operators.hpp"
@@ -54,20 +60,24 @@ enum class BoundaryType {
   convective_outlet,
   pressure_outlet,
   resistance_outlet,
-  rcr_outlet
+  rcr_outlet,
+  pressure_inlet,
+  elastance_inlet
 };
-// Outlets whose pressure is a Dirichlet value of the Poisson equation: fixed or lumped.
-inline bool pressure_type(BoundaryType t) {
-  return t == BoundaryType::pressure_outlet || t == BoundaryType::resistance_outlet ||
-         t == BoundaryType::rcr_outlet;
-}
+// Patches whose uniform pressure follows a law of their flux and time, held by LumpedOutlets.
 inline bool lumped_type(BoundaryType t) {
-  return t == BoundaryType::resistance_outlet || t == BoundaryType::rcr_outlet;
+  return t == BoundaryType::resistance_outlet || t == BoundaryType::rcr_outlet ||
+         t == BoundaryType::pressure_inlet || t == BoundaryType::elastance_inlet;
+}
+// Patches whose pressure is a Dirichlet value of the Poisson equation: fixed or lumped.
+inline bool pressure_type(BoundaryType t) {
+  return t == BoundaryType::pressure_outlet || lumped_type(t);
 }
 enum class InletProfile { flat, poiseuille, womersley, plane_poiseuille };
 
 inline constexpr const char* boundary_type_names =
-    "wall, slip, inlet, convective_outlet, pressure_outlet, resistance_outlet, rcr_outlet";
+    "wall, slip, inlet, convective_outlet, pressure_outlet, resistance_outlet, rcr_outlet, "
+    "pressure_inlet, elastance_inlet";
 
 struct BoundarySpec {
   std::string patch;
@@ -89,6 +99,11 @@ struct BoundarySpec {
   double capacitance = 0;        // rcr_outlet: C, m^3/Pa
   double distal_pressure = 0;    // rcr_outlet: p_d at the start of a run, Pa
   double convection_speed = 0;   // convective_outlet, m/s; 0 = inflow / outflow area
+  Waveform inlet_pressure;       // pressure_inlet: p_in(t), Pa
+  Elastance elastance;           // elastance_inlet: E(t), Pa/m^3
+  double volume = 0;             // elastance_inlet: V at the start of a run, m^3
+  double rest_volume = 0;        // elastance_inlet: V0, m^3
+  std::string venous_return;     // elastance_inlet: rcr_outlet whose p_d / R_d fills V ("" none)
 };
 
 // A condition of `type` on `patch` with every other setting at its default (for code that

@@ -28,22 +28,57 @@ DistalWeights distal_weights(double h) {
   return w;
 }
 
-OutletStep outlet_step(const BoundarySpec& spec, const LumpedState& state, double dt) {
-  if (spec.type == BoundaryType::resistance_outlet) return {spec.pressure, spec.resistance};
-  const auto w = distal_weights(dt / (spec.distal_resistance * spec.capacitance));
-  return {w.decay * state.distal + spec.distal_resistance * w.w0 * state.flux,
-          spec.resistance + spec.distal_resistance * w.w1};
+OutletStep outlet_step(const BoundarySpec& spec, const LumpedState& state, double dt,
+                       double t_next) {
+  switch (spec.type) {
+    case BoundaryType::resistance_outlet:
+      return {spec.pressure, spec.resistance};
+    case BoundaryType::pressure_inlet:
+      return {spec.inlet_pressure(t_next), 0};
+    case BoundaryType::elastance_inlet: {
+      const double e = spec.elastance(t_next);
+      return {e * (state.distal + 0.5 * dt * state.flux - spec.rest_volume), 0.5 * dt * e};
+    }
+    default: {
+      const auto w = distal_weights(dt / (spec.distal_resistance * spec.capacitance));
+      return {w.decay * state.distal + spec.distal_resistance * w.w0 * state.flux,
+              spec.resistance + spec.distal_resistance * w.w1};
+    }
+  }
 }
 
 double distal_after(const BoundarySpec& spec, const LumpedState& state, double q_next, double dt) {
+  if (spec.type == BoundaryType::elastance_inlet)
+    return state.distal + 0.5 * dt * (state.flux + q_next);
   if (spec.type != BoundaryType::rcr_outlet) return 0;
   const auto w = distal_weights(dt / (spec.distal_resistance * spec.capacitance));
   return w.decay * state.distal + spec.distal_resistance * (w.w0 * state.flux + w.w1 * q_next);
 }
 
-double outlet_pressure(const BoundarySpec& spec, double q, double distal) {
-  return spec.type == BoundaryType::resistance_outlet ? spec.pressure + spec.resistance * q
-                                                      : distal + spec.resistance * q;
+VenousStep venous_step(const BoundarySpec& rcr, const LumpedState& state, double dt) {
+  const double c = rcr.capacitance, rd = rcr.distal_resistance;
+  const auto w = distal_weights(dt / (rd * c));
+  return {0.5 * dt * state.flux - c * ((w.decay - 1) * state.distal + rd * w.w0 * state.flux),
+          0.5 * dt - c * rd * w.w1};
+}
+
+double outlet_pressure(const BoundarySpec& spec, double q, double distal, double t) {
+  switch (spec.type) {
+    case BoundaryType::resistance_outlet:
+      return spec.pressure + spec.resistance * q;
+    case BoundaryType::pressure_inlet:
+      return spec.inlet_pressure(t);
+    case BoundaryType::elastance_inlet:
+      return spec.elastance(t) * (distal - spec.rest_volume);
+    default:
+      return distal + spec.resistance * q;
+  }
+}
+
+const char* distal_column(BoundaryType type) {
+  return type == BoundaryType::rcr_outlet        ? "distal_pressure_"
+         : type == BoundaryType::elastance_inlet ? "volume_"
+                                                 : nullptr;
 }
 
 LumpedOutlets::LumpedOutlets(const LocalMesh& mesh, BoundaryConditions& bc, const Solve& solve,
@@ -74,6 +109,12 @@ LumpedOutlets::LumpedOutlets(const LocalMesh& mesh, BoundaryConditions& bc, cons
     phi_.push_back(std::move(phi));
     grad_phi_.push_back(std::move(grad));
   }
+  for (int k = 0; k < n; ++k) {
+    int source = -1;
+    for (int r = 0; r < n; ++r)
+      if (!spec(k).venous_return.empty() && spec(r).patch == spec(k).venous_return) source = r;
+    source_.push_back(source);
+  }
   states_.assign(n, LumpedState{});
   steps_.assign(n, OutletStep{});
   response_.setZero(n, n);
@@ -83,17 +124,20 @@ LumpedOutlets::LumpedOutlets(const LocalMesh& mesh, BoundaryConditions& bc, cons
   used_.assign(n, 0.0);
 }
 
-void LumpedOutlets::start(const VectorField& velocity, ScalarField& pressure) {
+void LumpedOutlets::start(const VectorField& velocity, ScalarField& pressure, double t) {
   const auto q = bc_.patch_fluxes(velocity);
   for (int k = 0; k < count(); ++k) {
     auto& s = states_[k];
     s.flux = q[patches_[k]];
-    s.distal = spec(k).type == BoundaryType::rcr_outlet ? spec(k).distal_pressure : 0.0;
+    const auto type = spec(k).type;
+    s.distal = type == BoundaryType::rcr_outlet        ? spec(k).distal_pressure
+               : type == BoundaryType::elastance_inlet ? spec(k).volume
+                                                       : 0.0;
     // The pressure of the fluid at rest (p0, p_d(0)): the initial velocity's flux split is the
     // mass correction's, not the flow's, and its R Q^0 put 7 kPa between the two outlets of
     // validation/rcr_outlet/rcr_split.toml at R_d = 1e10 Pa s/m3, which blew the first step up;
     // the first step's implicit solve makes P and Q consistent.
-    s.pressure = outlet_pressure(spec(k), 0.0, s.distal);
+    s.pressure = outlet_pressure(spec(k), 0.0, s.distal, t);
     s.increment = 0;
     bc_.set_outlet_pressure(patches_[k], s.pressure);
     // The harmonic lift P^0 phi_k, so that the first step's grad p^n does not see P^0 jump over
@@ -139,11 +183,23 @@ void LumpedOutlets::couple(VectorField& u, EdgeField& flux, ScalarField& dp,
     for (int j = 0; j < n; ++j) response_(j, k) = -dt_over_rho * r[patches_[j]];
   }
   for (int j = 0; j < n; ++j) {
-    steps_[j] = outlet_step(spec(j), states_[j], dt);
+    auto& step = steps_[j];
+    step = outlet_step(spec(j), states_[j], dt, t_next);
+    if (const int k = source_[j]; k >= 0) {
+      const auto v = venous_step(spec(k), states_[k], dt);
+      const double e = spec(j).elastance(t_next);
+      step.offset += e * v.d0;
+      step.source = k;
+      step.cross = e * v.d1;
+    }
     const auto& s = states_[j];
-    // P^n + guess + delta_j = offset + slope (Q_0 + M delta)
-    rhs_(j) = steps_[j].offset + steps_[j].slope * q0[patches_[j]] - s.pressure - s.increment;
-    system_.row(j) = -steps_[j].slope * response_.row(j);
+    // P^n + guess + delta_j = offset + slope (Q_0 + M delta)_j + cross (Q_0 + M delta)_source
+    rhs_(j) = step.offset + step.slope * q0[patches_[j]] - s.pressure - s.increment;
+    system_.row(j) = -step.slope * response_.row(j);
+    if (step.source >= 0) {
+      rhs_(j) += step.cross * q0[patches_[step.source]];
+      system_.row(j) -= step.cross * response_.row(step.source);
+    }
     system_(j, j) += 1;
   }
   delta_ = system_.partialPivLu().solve(rhs_);
@@ -162,16 +218,29 @@ void LumpedOutlets::couple(VectorField& u, EdgeField& flux, ScalarField& dp,
 
 void LumpedOutlets::finish(const VectorField& velocity, ScalarField& pressure, double dt) {
   const auto q = bc_.patch_fluxes(velocity);
+  const int n = count();
+  std::vector<double> q_next(n), distal(n);
+  for (int k = 0; k < n; ++k) {
+    q_next[k] = q[patches_[k]];
+    distal[k] = distal_after(spec(k), states_[k], q_next[k], dt);
+  }
+  // Venous return: the volume the source's distal resistance passed, from its own update, so
+  // that V + C p_d is conserved to round-off.
+  for (int j = 0; j < n; ++j)
+    if (const int k = source_[j]; k >= 0)
+      distal[j] += 0.5 * dt * (states_[k].flux + q_next[k]) -
+                   spec(k).capacitance * (distal[k] - states_[k].distal);
   mismatch_ = 0;
-  for (int k = 0; k < count(); ++k) {
+  for (int k = 0; k < n; ++k) {
     auto& s = states_[k];
-    const double q_next = q[patches_[k]];
-    const double p_next = steps_[k].offset + steps_[k].slope * q_next;
+    const auto& step = steps_[k];
+    double p_next = step.offset + step.slope * q_next[k];
+    if (step.source >= 0) p_next += step.cross * q_next[step.source];
     mismatch_ = std::max(mismatch_, std::abs(p_next - used_[k]));
-    s.distal = distal_after(spec(k), s, q_next, dt);
+    s.distal = distal[k];
     s.increment = p_next - s.pressure;
     s.pressure = p_next;
-    s.flux = q_next;
+    s.flux = q_next[k];
     bc_.set_outlet_pressure(patches_[k], p_next);
   }
   bc_.impose_pressure(pressure);

@@ -30,6 +30,17 @@
 //   w_0 = (1 - e^{-h}) / h - e^{-h},  w_1 = 1 - (1 - e^{-h}) / h.
 // 2nd order like the trapezoidal rule (w_0, w_1 -> h/2 for small h), but exact for any tau =
 // R_d C: no step-size limit and no trapezoidal ringing (its factor -> -1) when C is small.
+//
+// Inlets held the same way:
+//   pressure_inlet   P^{n+1} = p_in(t^{n+1}): offset only (slope 0);
+//   elastance_inlet  P = E(t) (V - V0), V^{n+1} = V^n + dt (Q^n + Q^{n+1}) / 2 + D (trapezoidal,
+//                    exact for Q linear in time like the p_d update), Q outward (dV/dt = -inflow);
+//                    P^{n+1} = E(t^{n+1}) (V^{n+1} - V0) is affine in Q^{n+1}, slope E dt / 2.
+//                    D = 0, or with venous_return the volume the named rcr_outlet's distal
+//                    resistance passed over the step, D = dt (Q_r^n + Q_r^{n+1}) / 2 -
+//                    C (p_d^{n+1} - p_d^n) (its own update above), affine in Q_r^{n+1}: the law
+//                    gets a cross term and V + C p_d changes by dt/2 times the sum of the two
+//                    patches' fluxes at t^n and t^{n+1}, zero to round-off in a closed pipe.
 #pragma once
 
 #include <Eigen/Dense>
@@ -46,7 +57,7 @@ namespace valsalva::flow {
 struct LumpedState {
   double flux = 0;       // Q^n, outward, m^3/s
   double pressure = 0;   // P^n, Pa
-  double distal = 0;     // rcr: p_d^n, Pa (resistance: 0)
+  double distal = 0;     // rcr: p_d^n, Pa; elastance_inlet: V^n, m^3 (others: 0)
   double increment = 0;  // P^n - P^{n-1}, Pa: the next solve's Dirichlet guess
 };
 inline constexpr int lumped_state_size = 4;
@@ -57,15 +68,27 @@ struct DistalWeights {
 };
 DistalWeights distal_weights(double h);
 
-// P^{n+1} = offset + slope Q^{n+1} over one step of length dt from `state`.
+// P^{n+1} = offset + slope Q^{n+1} + cross Q_source^{n+1} over one step of length dt from
+// `state` to t_next (source: the lumped index of a venous return, -1 = none).
 struct OutletStep {
   double offset = 0, slope = 0;
+  int source = -1;
+  double cross = 0;
 };
-OutletStep outlet_step(const BoundarySpec& spec, const LumpedState& state, double dt);
-// rcr: p_d^{n+1} for the flux q_next at t^{n+1}; resistance: 0.
+OutletStep outlet_step(const BoundarySpec& spec, const LumpedState& state, double dt,
+                       double t_next = 0);
+// rcr: p_d^{n+1} for the flux q_next at t^{n+1}; elastance_inlet: V^{n+1} without the venous
+// return; others: 0.
 double distal_after(const BoundarySpec& spec, const LumpedState& state, double q_next, double dt);
-// The outlet pressure at one instant for flux q and distal pressure p_d (a run's start).
-double outlet_pressure(const BoundarySpec& spec, double q, double distal);
+// The volume an rcr_outlet's distal resistance passes over one step, D = d0 + d1 Q^{n+1}.
+struct VenousStep {
+  double d0 = 0, d1 = 0;
+};
+VenousStep venous_step(const BoundarySpec& rcr, const LumpedState& state, double dt);
+// The pressure at one instant t for flux q and state `distal` (a run's start).
+double outlet_pressure(const BoundarySpec& spec, double q, double distal, double t = 0);
+// The log column prefix of LumpedState::distal ("distal_pressure_", "volume_"), null = none.
+const char* distal_column(BoundaryType type);
 
 class LumpedOutlets {
  public:
@@ -84,7 +107,8 @@ class LumpedOutlets {
   // Collective. A new run: Q^0 from the (boundary-imposed) velocity, P^0 = p0 (resistance) or
   // p_d(0) = BoundarySpec::distal_pressure (RCR), the law at zero flux, written into the
   // pressure at the outlets' nodes; sum_k P_k^0 phi_k is added to the pressure elsewhere.
-  void start(const VectorField& velocity, ScalarField& pressure);
+  // Inlets: p_in(t), E(t) (V(0) - V0).
+  void start(const VectorField& velocity, ScalarField& pressure, double t = 0);
   // The states as lumped_state_size values per outlet (checkpoints) and back.
   std::vector<double> saved() const;
   void restore(const std::vector<double>& values);
@@ -111,6 +135,7 @@ class LumpedOutlets {
   const LocalMesh& mesh_;
   BoundaryConditions& bc_;
   std::vector<int> patches_, spec_;
+  std::vector<int> source_;  // per lumped patch: lumped index of its venous return, -1 = none
   std::vector<ScalarField> phi_;
   std::vector<VectorField> grad_phi_;
   std::vector<LumpedState> states_;

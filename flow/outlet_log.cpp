@@ -21,7 +21,7 @@ OutletLog::OutletLog(const std::filesystem::path& dir, const LumpedOutlets& outl
   for (int k = 0; k < outlets.count(); ++k) {
     const auto& name = patch_names[outlets.patch(k)];
     file_ << ",flux_" << name << ",pressure_" << name;
-    if (outlets.spec(k).type == BoundaryType::rcr_outlet) file_ << ",distal_pressure_" << name;
+    if (const char* column = distal_column(outlets.spec(k).type)) file_ << "," << column << name;
   }
   file_ << "\n";
 }
@@ -32,7 +32,7 @@ void OutletLog::write(std::int64_t step, double time) {
   for (int k = 0; k < outlets_.count(); ++k) {
     const auto& s = outlets_.state(k);
     row += fmt::format(",{:.17g},{:.17g}", s.flux, s.pressure);
-    if (outlets_.spec(k).type == BoundaryType::rcr_outlet) row += fmt::format(",{:.17g}", s.distal);
+    if (distal_column(outlets_.spec(k).type)) row += fmt::format(",{:.17g}", s.distal);
   }
   file_ << row << "\n" << std::flush;
 }

@@ -87,7 +87,7 @@ void RunLoop::impose_initial_boundary_values() {
     boundary_->impose_pressure(state_.pressure);
     boundary_->hold_outlets(state_.velocity);
     boundary_->impose(state_.velocity, state_.time);
-    if (auto* lumped = solver_.lumped_outlets()) lumped->start(state_.velocity, state_.pressure);
+    if (auto* lumped = solver_.lumped_outlets()) lumped->start(state_.velocity, state_.pressure, state_.time);
   }
   last_good_ = state_;
 }
@@ -292,7 +292,7 @@ RunSummary RunLoop::run() {
       for (int k = 0; k < lumped->count(); ++k) {
         const auto& name = local_.patch_names[lumped->patch(k)];
         csv << ",pressure_" << name;
-        if (lumped->spec(k).type == BoundaryType::rcr_outlet) csv << ",distal_pressure_" << name;
+        if (const char* column = distal_column(lumped->spec(k).type)) csv << "," << column << name;
       }
     csv << forcing_log_header();
     csv << "\n";
@@ -399,7 +399,7 @@ RunSummary RunLoop::run() {
           flux_text +=
               fmt::format(" p_{} {:.6g} Pa", local_.patch_names[lumped->patch(k)], s.pressure);
           lumped_csv += fmt::format(",{:.17g}", s.pressure);
-          if (lumped->spec(k).type == BoundaryType::rcr_outlet)
+          if (distal_column(lumped->spec(k).type))
             lumped_csv += fmt::format(",{:.17g}", s.distal);
         }
       if (root && out.print) print_progress(report, dt, energy, per_step, eta, flux_text);

@@ -15,13 +15,147 @@
 
 namespace valsalva::io {
 
+namespace {
+
+// pressure_inlet and elastance_inlet keys.
+void declare_inlet_pressure_keys(Schema& s, const std::string& b) {
+  s.choice(b + ".pressure_waveform", {"constant", "sine", "table"})
+      .def("constant")
+      .unit_of("-")
+      .doc(
+          "pressure_inlet: p_in(t), constant (pressure), sine (pressure + pressure_amplitude "
+          "sin(2 pi t / pressure_period + pressure_phase)) or a periodic CSV table "
+          "(pressure_file)");
+  s.when(b + ".pressure_waveform", b + ".type", {"pressure_inlet"});
+  const std::string sine = "pressure_inlet sine waveform: ";
+  s.real(b + ".pressure_amplitude").required().unit_of("Pa").doc(sine + "amplitude");
+  s.real(b + ".pressure_period").required().above(0).unit_of("s").doc(sine + "period");
+  s.real(b + ".pressure_phase").def(0.0).unit_of("rad").doc(sine + "phase");
+  for (const char* key : {".pressure_amplitude", ".pressure_period", ".pressure_phase"}) {
+    s.when(b + key, b + ".type", {"pressure_inlet"});
+    s.when(b + key, b + ".pressure_waveform", {"sine"});
+  }
+  s.string(b + ".pressure_file")
+      .required()
+      .unit_of("-")
+      .doc(
+          "pressure_inlet: CSV table of rows 't, p' (s, Pa), relative to the scene file; one "
+          "period, linearly interpolated, repeated");
+  s.when(b + ".pressure_file", b + ".type", {"pressure_inlet"});
+  s.when(b + ".pressure_file", b + ".pressure_waveform", {"table"});
+
+  s.choice(b + ".elastance", {"raised_cosine", "table"})
+      .def("raised_cosine")
+      .unit_of("-")
+      .doc(
+          "elastance_inlet: E(t); raised_cosine: E = elastance_min + (elastance_max - "
+          "elastance_min) (1 - cos(2 pi s / systole)) / 2 for s = t mod cycle_period < systole, "
+          "elastance_min after (flow/elastance.hpp); table: a periodic CSV table (elastance_file)");
+  s.when(b + ".elastance", b + ".type", {"elastance_inlet"});
+  const std::string curve = "elastance_inlet raised_cosine: ";
+  s.real(b + ".elastance_min").required().at_least(0).unit_of("Pa/m3").doc(
+      curve + "diastolic elastance (a human ventricle: about 1e7 Pa/m3 = 0.08 mmHg/mL)");
+  s.real(b + ".elastance_max").required().at_least(0).unit_of("Pa/m3").doc(
+      curve + "end-systolic elastance, >= elastance_min (about 3e8 Pa/m3 = 2.3 mmHg/mL)");
+  s.real(b + ".cycle_period").required().above(0).unit_of("s").doc(curve + "heart period");
+  s.real(b + ".systole").required().above(0).unit_of("s").doc(
+      curve + "duration of the contraction, <= cycle_period");
+  for (const char* key : {".elastance_min", ".elastance_max", ".cycle_period", ".systole"}) {
+    s.when(b + key, b + ".type", {"elastance_inlet"});
+    s.when(b + key, b + ".elastance", {"raised_cosine"});
+  }
+  s.string(b + ".elastance_file")
+      .required()
+      .unit_of("-")
+      .doc(
+          "elastance_inlet: CSV table of rows 't, E' (s, Pa/m3), relative to the scene file; one "
+          "period, linearly interpolated, repeated; E >= 0");
+  s.when(b + ".elastance_file", b + ".type", {"elastance_inlet"});
+  s.when(b + ".elastance_file", b + ".elastance", {"table"});
+  s.real(b + ".volume").required().at_least(0).unit_of("m3").doc(
+      "elastance_inlet: ventricular volume V at the start of the run (a restart continues its "
+      "own)");
+  s.real(b + ".rest_volume").def(0.0).at_least(0).unit_of("m3").doc(
+      "elastance_inlet: unstressed volume V0 of p = E(t) (V - V0)");
+  s.string(b + ".venous_return")
+      .def("")
+      .unit_of("-")
+      .doc(
+          "elastance_inlet: an rcr_outlet patch whose distal flow p_d / R_d fills the ventricle "
+          "(a closed loop: V + C p_d + the fluid volume is conserved); empty = no filling");
+  for (const char* key : {".volume", ".rest_volume", ".venous_return"})
+    s.when(b + key, b + ".type", {"elastance_inlet"});
+}
+
+// A periodic table of `key` (io/waveform_table.hpp), its errors under that key.
+flow::Waveform read_table(const Scene& scene, const std::string& key) {
+  try {
+    return read_waveform_table(scene.path(key));
+  } catch (const TableError& e) {
+    throw scene.error(key, e.what());
+  }
+}
+
+// The pressure_inlet's and elastance_inlet's settings.
+void read_inlet_pressure(const Scene& scene, const std::string& key, flow::BoundarySpec& spec) {
+  if (spec.type == flow::BoundaryType::pressure_inlet) {
+    const auto waveform = scene.get<std::string>(key + ".pressure_waveform");
+    auto& p = spec.inlet_pressure;
+    if (waveform == "table") {
+      p = read_table(scene, key + ".pressure_file");
+      return;
+    }
+    p.mean = scene.get<double>(key + ".pressure");
+    if (waveform == "sine") {
+      p.kind = flow::Waveform::Kind::sine;
+      p.amplitude = scene.get<double>(key + ".pressure_amplitude");
+      p.period = scene.get<double>(key + ".pressure_period");
+      p.phase = scene.get<double>(key + ".pressure_phase");
+    }
+    return;
+  }
+  auto& e = spec.elastance;
+  if (scene.get<std::string>(key + ".elastance") == "table") {
+    e.tabulated = true;
+    e.table = read_table(scene, key + ".elastance_file");
+    if (*std::min_element(e.table.q.begin(), e.table.q.end()) < 0)
+      throw scene.error(key + ".elastance_file", "the table has a negative elastance",
+                        "E >= 0 in every row");
+  } else {
+    e.minimum = scene.get<double>(key + ".elastance_min");
+    e.maximum = scene.get<double>(key + ".elastance_max");
+    e.period = scene.get<double>(key + ".cycle_period");
+    e.systole = scene.get<double>(key + ".systole");
+    if (e.maximum < e.minimum)
+      throw scene.error(key + ".elastance_max",
+                        fmt::format("{} is below elastance_min = {}", e.maximum, e.minimum),
+                        "elastance_max >= elastance_min");
+    if (e.systole > e.period)
+      throw scene.error(key + ".systole",
+                        fmt::format("{} s is longer than cycle_period = {} s", e.systole, e.period),
+                        "0 < systole <= cycle_period");
+  }
+  spec.volume = scene.get<double>(key + ".volume");
+  spec.rest_volume = scene.get<double>(key + ".rest_volume");
+  spec.venous_return = scene.get<std::string>(key + ".venous_return");
+  if (!spec.venous_return.empty() &&
+      (!scene.has("boundary." + spec.venous_return) ||
+       scene.get<std::string>("boundary." + spec.venous_return + ".type") != "rcr_outlet"))
+    throw scene.error(
+        key + ".venous_return",
+        fmt::format("'{}' is not an rcr_outlet patch of the scene", spec.venous_return),
+        "the name of a [boundary.X] table with type = \"rcr_outlet\"");
+}
+
+}  // namespace
+
 void declare_boundary_keys(Schema& s) {
   const std::string b = "boundary.<patch>";
   s.section(b,
             "Boundary condition of one mesh patch (the table name is the patch name, e.g. "
             "[boundary.inlet]); every non-periodic patch needs one, periodic patches take none.");
   s.choice(b + ".type", {"wall", "slip", "inlet", "convective_outlet", "pressure_outlet",
-                         "resistance_outlet", "rcr_outlet"})
+                         "resistance_outlet", "rcr_outlet", "pressure_inlet", "elastance_inlet"})
       .required()
       .unit_of("-")
       .doc(
@@ -32,7 +166,11 @@ void declare_boundary_keys(Schema& s) {
           "resistance Q, capacitance dp_d/dt = Q - p_d / distal_resistance (Q the outward patch "
           "flux; both lumped outlets are pressure outlets coupled implicitly through the "
           "pressure equation, flow/lumped_outlets.hpp; flux, pressure and distal pressure in "
-          "outlets.csv every step and in log.csv)");
+          "outlets.csv every step and in log.csv); pressure_inlet: pressure p_in(t) from "
+          "pressure_waveform, velocity free with the inflow stabilisation of pressure outlets on "
+          "the whole patch; elastance_inlet: a lumped ventricle p = E(t) (V - rest_volume), "
+          "dV/dt = -inflow (+ venous_return), coupled implicitly like the lumped outlets, V in "
+          "log.csv and outlets.csv");
   s.real3(b + ".velocity")
       .def(std::array{0.0, 0.0, 0.0})
       .unit_of("m/s")
@@ -94,8 +232,11 @@ void declare_boundary_keys(Schema& s) {
   s.real(b + ".pressure")
       .def(0.0)
       .unit_of("Pa")
-      .doc("Fixed pressure of the outlet; resistance_outlet: the pressure p0 at zero flux");
-  s.when(b + ".pressure", b + ".type", {"pressure_outlet", "resistance_outlet"});
+      .doc(
+          "Fixed pressure of the outlet; resistance_outlet: the pressure p0 at zero flux; "
+          "pressure_inlet: the constant or mean p_in (pressure_waveform constant or sine; unused "
+          "with a table)");
+  s.when(b + ".pressure", b + ".type", {"pressure_outlet", "resistance_outlet", "pressure_inlet"});
   s.real(b + ".resistance")
       .required()
       .above(0)
@@ -130,6 +271,7 @@ void declare_boundary_keys(Schema& s) {
       .unit_of("m/s")
       .doc("Convection speed U_c; 0 = total inflow / total outflow area at every stage");
   s.when(b + ".convection_speed", b + ".type", {"convective_outlet"});
+  declare_inlet_pressure_keys(s, b);
 }
 
 std::vector<flow::BoundarySpec> read_boundary_conditions(const Scene& scene,
@@ -186,11 +328,7 @@ std::vector<flow::BoundarySpec> read_boundary_conditions(const Scene& scene,
       const auto waveform = scene.get<std::string>(key + ".waveform");
       auto& q = spec.flow_rate;
       if (waveform == "table") {
-        try {
-          q = read_waveform_table(scene.path(key + ".file"));
-        } catch (const TableError& e) {
-          throw scene.error(key + ".file", e.what());
-        }
+        q = read_table(scene, key + ".file");
       } else {
         q.mean = scene.get<double>(key + ".flow_rate");
         if (waveform == "sine") {
@@ -225,6 +363,10 @@ std::vector<flow::BoundarySpec> read_boundary_conditions(const Scene& scene,
       spec.type = flow::BoundaryType::resistance_outlet;
       spec.pressure = scene.get<double>(key + ".pressure");
       spec.resistance = scene.get<double>(key + ".resistance");
+    } else if (type == "pressure_inlet" || type == "elastance_inlet") {
+      spec.type = type == "pressure_inlet" ? flow::BoundaryType::pressure_inlet
+                                           : flow::BoundaryType::elastance_inlet;
+      read_inlet_pressure(scene, key, spec);
     } else {
       spec.type = flow::BoundaryType::rcr_outlet;
       spec.resistance = scene.get<double>(key + ".resistance");

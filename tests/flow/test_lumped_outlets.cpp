@@ -2,7 +2,8 @@
 // solution for a linear flux, a resistance outlet on a channel against a fixed-pressure outlet
 // (one outlet: the velocity does not see the outlet pressure, the pressure shifts by p0 + R Q),
 // two RCR outlets in parallel (the projection uses the pressure the law gives at the end-of-step
-// flux, to round-off) and the refusal of non-positive parameters.
+// flux, to round-off) and the refusal of non-positive parameters; the lumped ventricle's affine
+// law and its venous return against the RCR's own update (volume conserved).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -85,6 +86,32 @@ TEST_CASE("distal pressure update: exact for a flux linear in time, any h = dt /
   const auto below = flow::distal_weights(1e-3 * (1 - 1e-12)), above = flow::distal_weights(1e-3);
   CHECK(below.w0 == doctest::Approx(above.w0).epsilon(1e-11));
   CHECK(below.w1 == doctest::Approx(above.w1).epsilon(1e-11));
+}
+
+TEST_CASE("elastance inlet: the affine law is E(t) (V^{n+1} - V0), the venous volume the RCR's") {
+  auto lv = flow::boundary_spec("lv", flow::BoundaryType::elastance_inlet);
+  lv.elastance = {false, 2e7, 5e8, 0.5, 0.2, {}};
+  lv.rest_volume = 2e-7;
+  const auto ao = rcr("ao", 2e7, 1e8, 1e-9);
+  // Raised cosine: E_min at t = 0 and from the end of systole on, E_max at T_s / 2.
+  CHECK(lv.elastance(0.0) == 2e7);
+  CHECK(lv.elastance(0.1) == doctest::Approx(5e8).epsilon(1e-15));
+  CHECK(lv.elastance(0.35) == 2e7);
+  CHECK(lv.elastance(0.6) == doctest::Approx(lv.elastance(0.1)).epsilon(1e-15));
+  const double dt = 2e-3, t_next = 0.07, q0 = -3e-6, q1 = -4e-6;
+  const flow::LumpedState ventricle{q0, 300, 1.1e-6, 0}, artery{-q0, 280, 250, 0};
+  const auto step = flow::outlet_step(lv, ventricle, dt, t_next);
+  const double volume = flow::distal_after(lv, ventricle, q1, dt);
+  CHECK(volume == doctest::Approx(1.1e-6 + 0.5 * dt * (q0 + q1)).epsilon(1e-15));
+  CHECK(step.offset + step.slope * q1 ==
+        doctest::Approx(lv.elastance(t_next) * (volume - 2e-7)).epsilon(1e-13));
+  // Venous volume: D = d0 + d1 Q_r^{n+1} equals dt (Q_r^n + Q_r^{n+1}) / 2 - C dp_d, so V + C p_d
+  // changes by dt/2 times the sum of the two fluxes (0 here: Q_r = -Q).
+  const auto v = flow::venous_step(ao, artery, dt);
+  const double pd = flow::distal_after(ao, artery, -q1, dt);
+  const double venous = 0.5 * dt * (-q0 - q1) - 1e-9 * (pd - 250);
+  CHECK(v.d0 + v.d1 * -q1 == doctest::Approx(venous).epsilon(1e-10));
+  CHECK(std::abs((volume + venous + 1e-9 * pd) - (1.1e-6 + 1e-9 * 250)) <= 1e-20);
 }
 
 TEST_CASE(
