@@ -17,6 +17,10 @@
 #include "flow/run_loop.hpp"
 #include "io/scene.hpp"
 
+namespace valsalva::io {
+class RunAnalysis;
+}
+
 namespace valsalva::run {
 
 // How a run is started, apart from the scene: the command line of `valsalva run`.
@@ -69,6 +73,9 @@ class Simulation {
   const flow::FlowState& state() const;
   const flow::RunLoop& loop() const;
   const std::filesystem::path& run_path() const;
+  // What the scene measures ([wall_shear], [statistics], ...), null when it asks for nothing:
+  // e.g. a validation case's observer reading the wall shear stress of the step.
+  const io::RunAnalysis* analysis() const;
 
  private:
   struct Parts;
