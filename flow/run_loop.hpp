@@ -196,7 +196,8 @@ class RunLoop {
   const ProjectionRK4& solver() const { return solver_; }
   // The boundary conditions, or null when every patch is periodic.
   const BoundaryConditions* boundary() const { return boundary_.get(); }
-  // Velocity error against the exact Taylor-Green solution at the current time (collective).
+  // Velocity error against the exact Taylor-Green solution at the current time (collective); a
+  // Newtonian fluid's (run() reports none for a non-Newtonian one).
   TaylorGreenError taylor_green_error() const;
 
  private:

@@ -80,6 +80,20 @@ double apparent_viscosity(const ViscosityModel& m, double gamma_dot) {
   return m.mu;
 }
 
+double lowest_viscosity(const ViscosityModel& m) {
+  switch (m.law) {
+    case ViscosityLaw::newtonian:
+      return m.mu;
+    case ViscosityLaw::carreau_yasuda:  // monotone in gamma_dot, mu_0 at rest
+      return m.n < 1 ? m.mu_inf : m.mu_0;
+    case ViscosityLaw::casson:  // decreasing towards mu_p
+      return m.plastic_viscosity;
+    case ViscosityLaw::power_law:  // K gamma^(n - 1) above the floor
+      return m.n < 1 ? 0.0 : m.consistency * std::pow(m.shear_rate_min, m.n - 1);
+  }
+  return m.mu;
+}
+
 std::string viscosity_law_name(ViscosityLaw law) {
   switch (law) {
     case ViscosityLaw::newtonian:

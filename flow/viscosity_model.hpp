@@ -58,6 +58,11 @@ inline double shear_rate(const Eigen::Matrix3d& grad) {
 // The apparent dynamic viscosity at shear rate gamma_dot >= 0, Pa s (a pure function).
 double apparent_viscosity(const ViscosityModel& model, double gamma_dot);
 
+// The infimum of mu(gamma_dot) over all shear rates, Pa s: Carreau-Yasuda mu_inf (n < 1) or
+// mu_0 (n >= 1), Casson mu_p, a power law K gamma_min^(n - 1) (n >= 1) or 0 (n < 1: it thins
+// without bound). The viscous time-step bound of the fluid is at most h^2 / (this / rho).
+double lowest_viscosity(const ViscosityModel& model);
+
 std::string viscosity_law_name(ViscosityLaw law);
 
 }  // namespace valsalva::flow

@@ -271,7 +271,9 @@ void declare_flow_keys(Schema& s) {
   s.section("initial.womersley",
             "Womersley's exact pipe flow (Womersley 1955, flow/womersley.hpp) at t = 0 for the "
             "flow rate Q(t) = flow_rate + amplitude sin(2 pi t / period + phase): u(r, 0) along "
-            "the axis, r from the axis (capped at the radius), with the fluid's viscosity.");
+            "the axis, r from the axis (capped at the radius), with the fluid's viscosity (with a "
+            "non-Newtonian flow.viscosity_model, the Newtonian profile of flow.viscosity: a start, "
+            "not that fluid's solution).");
   s.when("initial.womersley", "initial.type", {"womersley"});
   s.real("initial.womersley.radius").required().above(0).unit_of("m").doc("Pipe radius");
   s.real("initial.womersley.flow_rate").required().unit_of("m3/s").doc("Mean flow rate");
@@ -447,15 +449,37 @@ void check_step_count(const Scene& scene, const flow::DualMetrics& metrics) {
   flow::TimeOptions t;
   t.end = scene.get<double>("time.end");
   t.max_steps = scene.get<std::int64_t>("time.max_steps");
-  const double rho = scene.get<double>("flow.density"), mu = scene.get<double>("flow.viscosity");
+  const double rho = scene.get<double>("flow.density");
   const double fourier = scene.get<double>("time.fourier");
   const double h = *std::min_element(metrics.h.begin(), metrics.h.end());
+  // A non-Newtonian fluid: its lowest viscosity over all shear rates, so that dt stays an upper
+  // bound (a shear-thinning fluid at rest takes shorter steps than it does while it flows);
+  // none for a power law with n < 1, whose viscosity has no positive lower bound.
+  const auto model = read_viscosity_model(scene);
+  const bool newtonian = model.law == flow::ViscosityLaw::newtonian;
+  const double mu = flow::lowest_viscosity(model);
+  if (!(mu > 0)) return;
   // The run's viscous bound max nu dt / h_j^2 <= time.fourier (flow/run_diagnostics.hpp, the
-  // same h_j): the first step's dt when the fluid starts at rest, an upper bound on every dt
-  // since convection and a subgrid viscosity only shorten it.
+  // same h_j): the first step's dt when a Newtonian fluid starts at rest, an upper bound on
+  // every dt since convection and a subgrid viscosity only shorten it.
   const double nu = mu / rho, dt = fourier * h * h / nu;
   const double steps = refused_step_count(t, dt);
   if (steps == 0) return;
+  const std::string bound = fmt::format(
+      "the viscous bound dt <= time.fourier h^2 / nu = {:g} x ({:.3g} m)^2 / nu = {:.3g} s (h = "
+      "the mesh's smallest cube root of a dual volume) takes {:.3g} steps to time.end = {:g} s, "
+      "more than {:g}",
+      fourier, h, dt, steps, t.end, max_time_steps);
+  if (!newtonian)
+    throw scene.error(
+        "flow.viscosity_model",
+        fmt::format("{}: its lowest viscosity {:g} Pa s over all shear rates (flow/"
+                    "viscosity_model.hpp, lowest_viscosity) / flow.density = {:g} kg/m3 gives nu "
+                    ">= {:.3g} m2/s: {}",
+                    flow::viscosity_law_name(model.law), mu, rho, nu, bound),
+        fmt::format("a lowest viscosity <= time.fourier h^2 {:g} flow.density / time.end = {:.3g} "
+                    "Pa s, or set time.max_steps",
+                    max_time_steps, fourier * h * h * max_time_steps * rho / t.end));
   // The message points at the key that departs further from the reference fluid towards a
   // large nu.
   const char* key =
@@ -463,10 +487,8 @@ void check_step_count(const Scene& scene, const flow::DualMetrics& metrics) {
   throw scene.error(
       key,
       fmt::format("flow.viscosity / flow.density = {:g} Pa s / {:g} kg/m3 gives nu = {:.3g} m2/s: "
-                  "the viscous bound dt <= time.fourier h^2 / nu = {:g} x ({:.3g} m)^2 / nu = "
-                  "{:.3g} s (h = the mesh's smallest cube root of a dual volume) takes {:.3g} "
-                  "steps to time.end = {:g} s, more than {:g}",
-                  mu, rho, nu, fourier, h, dt, steps, t.end, max_time_steps),
+                  "{}",
+                  mu, rho, nu, bound),
       fmt::format("nu <= time.fourier h^2 {:g} / time.end = {:.3g} m2/s (flow.density >= {:.3g} "
                   "kg/m3 with this viscosity), or set time.max_steps",
                   max_time_steps, fourier * h * h * max_time_steps / t.end,

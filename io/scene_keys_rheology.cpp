@@ -16,8 +16,10 @@ void declare_rheology_keys(Schema& s) {
           "viscosity mu(gamma_dot) per node from the shear rate gamma_dot = sqrt(2 S:S) of each "
           "RK stage's velocity, in the full-stress viscous term (plus nu_sgs with [les]); the "
           "time step's Fourier bound uses each node's viscosity, [wall_shear] the nodal viscosity "
-          "of "
-          "the sampled velocity, and flow.viscosity is not used");
+          "of the sampled velocity, the 1e9-step rule of flow.density the law's lowest viscosity "
+          "over all shear rates (none for a power law with n < 1), and flow.viscosity is not used "
+          "(except by initial.womersley's profile); initial.type = taylor_green reports no error "
+          "against the Newtonian vortex");
 
   const std::string cy = "flow.carreau_yasuda";
   s.section(cy,

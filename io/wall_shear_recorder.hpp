@@ -46,6 +46,8 @@ class WallShearRecorder {
   // tau_w of the last sample per patch, in the order of each patch's wall loads.
   const std::vector<std::vector<Eigen::Vector3d>>& last_tau() const { return tau_; }
   const std::vector<std::vector<int>>& nodes() const { return nodes_; }
+  // |A_j| of each wall node's dual face, in the same order (area-weighted means).
+  const std::vector<std::vector<double>>& areas() const { return area_; }
 
  private:
   const flow::LocalMesh* local_;

@@ -443,6 +443,9 @@ const flow::LocalMesh& Simulation::local() const {
 const flow::FlowState& Simulation::state() const {
   return parts_->loop->state();
 }
+const io::RunAnalysis* Simulation::analysis() const {
+  return parts_->analysis ? &*parts_->analysis : nullptr;
+}
 const std::filesystem::path& Simulation::run_path() const {
   return parts_->run_path;
 }

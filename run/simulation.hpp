@@ -21,6 +21,10 @@ namespace valsalva::ibm {
 class ImmersedStructure;
 }
 
+namespace valsalva::io {
+class RunAnalysis;
+}
+
 namespace valsalva::run {
 
 // How a run is started, apart from the scene: the command line of `valsalva run`.
@@ -75,6 +79,9 @@ class Simulation {
   // The immersed structures, or nullptr in a scene without [structure.<name>] tables.
   const ibm::ImmersedStructure* immersed() const;
   const std::filesystem::path& run_path() const;
+  // What the scene measures ([wall_shear], [statistics], ...), null when it asks for nothing:
+  // e.g. a validation case's observer reading the wall shear stress of the step.
+  const io::RunAnalysis* analysis() const;
 
  private:
   struct Parts;

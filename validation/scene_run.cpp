@@ -73,6 +73,7 @@ run::RunResult run_scene_file(const std::filesystem::path& scene_file,
   if (run_dir.empty()) scratch.emplace(comm);
   const auto scene = io::load_scene(scene_file, overrides);
   run::Simulation simulation(scene, level_request(scratch ? scratch->path() : run_dir), comm);
+  if (measure.initial_velocity) simulation.set_initial_velocity(measure.initial_velocity);
   if (measure.at_start) measure.at_start(simulation);
   if (measure.observer) simulation.observe(measure.observer);
   auto result = simulation.run();

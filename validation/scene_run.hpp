@@ -22,6 +22,9 @@ std::filesystem::path case_scene(const std::string& case_name, const std::string
 run::RunRequest level_request(const std::filesystem::path& run_dir);
 
 struct SceneRun {
+  // A start other than initial.type's, u(x) at every node (Simulation::set_initial_velocity),
+  // e.g. a periodic reference solution at t = 0; empty: the scene's.
+  std::function<Eigen::Vector3d(const Eigen::Vector3d&)> initial_velocity;
   // What the case measures: called on every rank before the first step, ...
   std::function<void(const run::Simulation&)> at_start;
   // ... after every step (collective) ...

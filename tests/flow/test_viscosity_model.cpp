@@ -6,7 +6,8 @@
 // - ProjectionRK4 with a Carreau-Yasuda fluid equals, to round-off, the full-stress run whose
 //   nu_sgs hook supplies mu(gamma_dot) / rho from each RK stage's gradient (so the viscosity is
 //   evaluated per stage), and differs clearly from a Newtonian run at mu_0;
-// - viscosity_field() and the nodal stability bound: a constant field gives the Newtonian rates.
+// - viscosity_field() and the nodal stability bound: a constant field gives the Newtonian rates;
+// - with an LES model (Smagorinsky) the viscosity is mu(gamma_dot) / rho + nu_sgs, to round-off.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -17,6 +18,7 @@
 #include "flow/projection_rk4.hpp"
 #include "flow/run_diagnostics.hpp"
 #include "flow/viscosity_model.hpp"
+#include "les/subgrid_viscosity.hpp"
 
 using namespace valsalva;
 using flow::ViscosityLaw;
@@ -35,6 +37,27 @@ ViscosityModel casson(double m_reg) {
   m.yield_stress = 0.005, m.plastic_viscosity = 0.0035, m.regularisation = m_reg;
   return m;
 }
+// A 2D vortex u = U (sin kx cos ky, -cos kx sin ky) in a periodic 10 mm box of 12 x 12 x 3
+// hexahedra on two METIS parts: shear rates of 0 to 2 k U = 12.6 1/s, blood density.
+struct VortexBox {
+  static constexpr double rho = 1060, U = 0.01;
+  flow::LocalMesh mesh;
+  flow::FlowState initial;
+  VortexBox() {
+    io::BoxSpec spec = test::periodic_box("hexa", 12);
+    spec.cells = {12, 12, 3};
+    spec.length = Eigen::Vector3d(0.01, 0.01, 0.0025);
+    const auto box = io::generate_box(spec);
+    const auto metrics = flow::compute_dual_metrics(box);
+    mesh = flow::distribute(box, metrics, MPI_COMM_WORLD, {2, "metis"});
+    const double k = 2 * std::numbers::pi / 0.01;
+    for (const auto& x : mesh.position) {
+      initial.velocity.emplace_back(U * std::sin(k * x.x()) * std::cos(k * x.y()),
+                                    -U * std::cos(k * x.x()) * std::sin(k * x.y()), 0.0);
+      initial.pressure.push_back(0.0);
+    }
+  }
+};
 }  // namespace
 
 TEST_CASE("shear rate sqrt(2 S:S)") {
@@ -63,6 +86,37 @@ TEST_CASE("Carreau-Yasuda: mu_0 at rest, mu_inf + power-law branch at high shear
     CHECK(mu > m.mu_inf);
     last = mu;
   }
+}
+
+TEST_CASE("lowest_viscosity: the infimum over all shear rates (the 1e9-step rule's viscosity)") {
+  flow::ViscosityModel pl;
+  pl.law = ViscosityLaw::power_law;
+  pl.consistency = 0.01, pl.shear_rate_min = 0.1;
+  const auto shear_thickening = [&] {
+    auto m = pl;
+    m.n = 1.5;
+    return m;
+  }();
+  const auto shear_thinning = [&] {
+    auto m = pl;
+    m.n = 0.5;
+    return m;
+  }();
+  auto cy_thickening = cho_kensey();
+  cy_thickening.n = 1.5;
+  for (const auto& m : {cho_kensey(), cy_thickening, casson(1000.0), shear_thickening}) {
+    const double low = flow::lowest_viscosity(m);
+    CHECK(low > 0);
+    double seen = 1e300;  // the sampled minimum approaches the infimum from above
+    for (double g = 0; g<1e9; g = g> 0 ? 10 * g : 1e-9)
+      seen = std::min(seen, flow::apparent_viscosity(m, g));
+    CHECK(seen >= low * (1 - 1e-15));
+    CHECK(seen == doctest::Approx(low).epsilon(2e-3));
+  }
+  CHECK(flow::lowest_viscosity(shear_thinning) == 0.0);  // thins without bound
+  flow::ViscosityModel newtonian;
+  newtonian.mu = 0.0035;
+  CHECK(flow::lowest_viscosity(newtonian) == 0.0035);
 }
 
 TEST_CASE("Casson (Papanastasiou): Casson's flow curve where the fluid flows, finite at rest") {
@@ -122,19 +176,10 @@ TEST_CASE("bad parameters are refused naming the parameter") {
 }
 
 TEST_CASE("ProjectionRK4 with a Carreau-Yasuda fluid: mu(gamma_dot) per node and per RK stage") {
-  io::BoxSpec spec = test::periodic_box("hexa", 12);
-  spec.cells = {12, 12, 3};
-  spec.length = Eigen::Vector3d(0.01, 0.01, 0.0025);
-  const auto box = io::generate_box(spec);
-  const auto metrics = flow::compute_dual_metrics(box);
-  const auto mesh = flow::distribute(box, metrics, MPI_COMM_WORLD, {2, "metis"});
-  const double rho = 1060, k = 2 * std::numbers::pi / 0.01, U = 0.01;
-  flow::FlowState initial;
-  for (const auto& x : mesh.position) {  // shear rates of 0 to 2 k U = 12.6 1/s
-    initial.velocity.emplace_back(U * std::sin(k * x.x()) * std::cos(k * x.y()),
-                                  -U * std::cos(k * x.x()) * std::sin(k * x.y()), 0.0);
-    initial.pressure.push_back(0.0);
-  }
+  const VortexBox vb;
+  const auto& mesh = vb.mesh;
+  const auto& initial = vb.initial;
+  const double rho = VortexBox::rho, U = VortexBox::U;
   const auto cy = cho_kensey();
   flow::ProjectionOptions base;
   base.density = rho;
@@ -193,4 +238,64 @@ TEST_CASE("ProjectionRK4 with a Carreau-Yasuda fluid: mu(gamma_dot) per node and
                                                    << newtonian_diff << ", change " << change);
   CHECK(same <= 1e-14 * U);
   CHECK(newtonian_diff > 0.1 * change);
+}
+
+TEST_CASE(
+    "Carreau-Yasuda with an LES model: the solver's viscosity is mu(gamma_dot) / rho + nu_sgs") {
+  // The same box and vortex as above with Smagorinsky's model (les::SubgridViscosity, updated
+  // every RK stage, as [les] model = "smagorinsky", update = "stage" wires it): the run must
+  // equal, to round-off, a run without the model whose hook supplies the sum itself, and differ
+  // from the Carreau-Yasuda run without LES; the nodal viscosity the time step sees is the sum.
+  const VortexBox vb;
+  const auto& mesh = vb.mesh;
+  const auto& initial = vb.initial;
+  const double rho = VortexBox::rho, U = VortexBox::U;
+  std::vector<double> delta;
+  for (int i = 0; i < mesh.num_local(); ++i) delta.push_back(std::cbrt(mesh.volume[i]));
+  const les::SubgridViscosity smagorinsky("smagorinsky", std::nullopt, delta);
+  const auto cy = cho_kensey();
+  flow::ProjectionOptions base;
+  base.density = rho;
+  base.poisson.tolerance = 1e-12;
+  auto les_cy = base;
+  les_cy.rheology = cy;
+  les_cy.subgrid_viscosity = [&](int stage, const flow::TensorField& grad, flow::ScalarField& nu) {
+    smagorinsky(stage, grad, nu);
+  };
+  auto sum = base;  // no law: the hook gives mu(gamma_dot) / rho + nu_sgs
+  sum.subgrid_viscosity = [&](int stage, const flow::TensorField& grad, flow::ScalarField& nu) {
+    smagorinsky(stage, grad, nu);
+    for (std::size_t i = 0; i < grad.size(); ++i)
+      nu[i] += flow::apparent_viscosity(cy, flow::shear_rate(grad[i])) / rho;
+  };
+  auto cy_only = base;
+  cy_only.rheology = cy;
+  flow::ProjectionRK4 a(mesh, les_cy), b(mesh, sum), c(mesh, cy_only);
+  const double dt = 0.02;
+  auto sa = initial, sb = initial, sc = initial;
+  for (int s = 0; s < 3; ++s) a.step(sa, dt), b.step(sb, dt), c.step(sc, dt);
+  double same = 0, les_effect = 0, sgs_max = 0;
+  for (int i = 0; i < mesh.num_owned; ++i) {
+    same = std::max(same, (sa.velocity[i] - sb.velocity[i]).norm());
+    les_effect = std::max(les_effect, (sa.velocity[i] - sc.velocity[i]).norm());
+    sgs_max = std::max(sgs_max, a.subgrid_viscosity()[i]);
+  }
+  same = mesh.comm.max(same), les_effect = mesh.comm.max(les_effect);
+  MESSAGE("LES + Carreau-Yasuda vs the summing hook: " << same << ", vs Carreau-Yasuda alone: "
+                                                       << les_effect << ", max nu_sgs "
+                                                       << mesh.comm.max(sgs_max));
+  CHECK(mesh.comm.max(sgs_max) > 0);
+  CHECK(same <= 1e-14 * U);
+  CHECK(les_effect > 1e3 * std::max(same, 1e-18));
+  // The nodal viscosity of the time step's bound: mu(gamma_dot(u)) / rho + the last nu_sgs.
+  const auto nu_sgs = a.subgrid_viscosity();
+  const auto& field = a.viscosity_field(sa.velocity);
+  flow::TensorField grad;
+  flow::gradient(mesh, sa.velocity, grad);
+  double worst = 0;
+  for (int i = 0; i < mesh.num_owned; ++i)
+    worst = std::max(
+        worst, std::abs(field[i] - (flow::apparent_viscosity(cy, flow::shear_rate(grad[i])) / rho +
+                                    nu_sgs[i])));
+  CHECK(mesh.comm.max(worst) == 0.0);
 }
