@@ -443,5 +443,8 @@ const flow::FlowState& Simulation::state() const {
 const std::filesystem::path& Simulation::run_path() const {
   return parts_->run_path;
 }
+const ibm::ImmersedStructure* Simulation::immersed() const {
+  return parts_->immersed ? &parts_->immersed->structure() : nullptr;
+}
 
 }  // namespace valsalva::run

@@ -17,6 +17,10 @@
 #include "flow/run_loop.hpp"
 #include "io/scene.hpp"
 
+namespace valsalva::ibm {
+class ImmersedStructure;
+}
+
 namespace valsalva::run {
 
 // How a run is started, apart from the scene: the command line of `valsalva run`.
@@ -69,6 +73,8 @@ class Simulation {
   const flow::FlowState& state() const;
   const flow::RunLoop& loop() const;
   const std::filesystem::path& run_path() const;
+  // The immersed structures ([structure.<name>] tables), null when the scene has none.
+  const ibm::ImmersedStructure* immersed() const;
 
  private:
   struct Parts;
