@@ -13,6 +13,7 @@
 #include "io/solid_gmsh_reader.hpp"
 #include "structure/contact.hpp"
 #include "structure/mesh_generators.hpp"
+#include "structure/sphere_shell.hpp"
 
 namespace valsalva::io {
 
@@ -94,26 +95,33 @@ void declare_structure_keys(Schema& s) {
   s.section(k,
             "An immersed solid (thick membrane, leaflet, bar) of hexahedra whose nodes are markers "
             "in the fluid; its results go to structures/<name>.xmf at the field output interval.");
-  s.choice(k + ".mesh", {"bar", "shell_patch", "gmsh"})
+  s.choice(k + ".mesh", {"bar", "shell_patch", "sphere_shell", "gmsh"})
       .required()
       .unit_of("-")
       .doc(
           "bar: a straight block (origin, size, elements; node sets clamped, tip, bottom, top, "
           "back, front and u0..w1); shell_patch: a cylindrical shell patch about the z axis "
-          "(node sets attachment, free_edge, side0, side1); gmsh: a .msh file of hexahedra with "
-          "physical groups as node sets (structure/mesh_generators.hpp, io/solid_gmsh_reader.hpp)");
+          "(node sets attachment, free_edge, side0, side1); sphere_shell: a closed spherical "
+          "shell about the origin, a cubed sphere without poles (radius, thickness, elements; "
+          "node and surface sets inner, outer; structure/sphere_shell.hpp); gmsh: a .msh file of "
+          "hexahedra with physical groups as node sets (structure/mesh_generators.hpp, "
+          "io/solid_gmsh_reader.hpp)");
   s.choice(k + ".order", {"q2", "q1"})
       .def("q2")
       .unit_of("-")
       .doc("Element order of the generated mesh (quadratic hexahedra by default)");
-  s.when(k + ".order", k + ".mesh", {"bar", "shell_patch"});
+  s.when(k + ".order", k + ".mesh", {"bar", "shell_patch", "sphere_shell"});
   s.string(k + ".file").required().unit_of("-").doc("Gmsh mesh, relative to the scene file");
   s.when(k + ".file", k + ".mesh", {"gmsh"});
   s.real3(k + ".origin").def(std::array{0.0, 0.0, 0.0}).unit_of("m").doc("Corner of the bar");
   s.when(k + ".origin", k + ".mesh", {"bar"});
   s.real3(k + ".size").required().above(0).unit_of("m").doc("Extent of the bar along x, y, z");
   s.when(k + ".size", k + ".mesh", {"bar"});
-  s.real(k + ".radius").required().above(0).unit_of("m").doc("Mid-surface radius of the patch");
+  s.real(k + ".radius")
+      .required()
+      .above(0)
+      .unit_of("m")
+      .doc("Mid-surface radius of the patch or the sphere");
   s.real(k + ".angle")
       .required()
       .in_range(0, 360)
@@ -121,20 +129,32 @@ void declare_structure_keys(Schema& s) {
       .doc("Angular span, centred on +x");
   s.real(k + ".height").required().above(0).unit_of("m").doc("Extent along the patch axis z");
   s.real(k + ".thickness").required().above(0).unit_of("m").doc("Shell thickness");
-  for (const char* key : {".radius", ".angle", ".height", ".thickness"})
-    s.when(k + key, k + ".mesh", {"shell_patch"});
+  for (const char* key : {".angle", ".height"}) s.when(k + key, k + ".mesh", {"shell_patch"});
+  for (const char* key : {".radius", ".thickness"})
+    s.when(k + key, k + ".mesh", {"shell_patch", "sphere_shell"});
   s.int3(k + ".elements")
       .required()
       .at_least(1)
       .unit_of("-")
-      .doc("Elements along x, y, z (bar) or along the arc, the height and the thickness (patch)");
-  s.when(k + ".elements", k + ".mesh", {"bar", "shell_patch"});
+      .doc(
+          "Elements along x, y, z (bar), along the arc, the height and the thickness (patch), or "
+          "along each edge of the cube's faces (twice the same number) and through the thickness "
+          "(sphere)");
+  s.when(k + ".elements", k + ".mesh", {"bar", "shell_patch", "sphere_shell"});
   s.real3(k + ".rotation_axis")
       .def(std::array{0.0, 0.0, 1.0})
       .unit_of("-")
       .doc("Axis of a rotation of the mesh about the coordinate origin, before the translation");
   s.real(k + ".rotation_angle").def(0.0).unit_of("deg").doc("Angle of that rotation");
   s.real3(k + ".translate").def(std::array{0.0, 0.0, 0.0}).unit_of("m").doc("Translation");
+  s.real3(k + ".initial_stretch")
+      .def(std::array{1.0, 1.0, 1.0})
+      .above(0)
+      .unit_of("-")
+      .doc(
+          "The markers start from the placed mesh stretched by these factors along x, y, z about "
+          "the mean of its nodes (a body released from a deformed shape; factors whose product is "
+          "1 keep its volume); the mesh as placed stays the stress-free reference");
   s.choice(k + ".material",
            {"neo_hookean", "mooney_rivlin", "hgo", "st_venant_kirchhoff", "linear_elastic"})
       .def("neo_hookean")
@@ -269,13 +289,24 @@ structure::SolidMesh build_solid_mesh(const Scene& scene, const std::string& k) 
     b.n_depth = n[2];
     return structure::straight_bar(order, b);
   }
+  // A shell: a sphere or a cylindrical patch, both of a radius and a thickness.
+  const double radius = scene.get<double>(k + ".radius");
+  const double thickness = scene.get<double>(k + ".thickness");
+  if (!(thickness < 2 * radius))
+    throw scene.error(k + ".thickness", "the shell is thicker than its diameter");
+  if (type == "sphere_shell") {
+    if (n[0] != n[1])
+      throw scene.error(k + ".elements",
+                        fmt::format("a sphere shell has {} x {} elements on each cube face: the "
+                                    "first two numbers must be equal",
+                                    n[0], n[1]));
+    return structure::sphere_shell({Eigen::Vector3d::Zero(), radius, thickness, n[0], n[2]});
+  }
   structure::ShellPatch p;
-  p.radius = scene.get<double>(k + ".radius");
+  p.radius = radius;
   p.angle = scene.get<double>(k + ".angle") * std::numbers::pi / 180;
   p.height = scene.get<double>(k + ".height");
-  p.thickness = scene.get<double>(k + ".thickness");
-  if (!(p.thickness < 2 * p.radius))
-    throw scene.error(k + ".thickness", "the shell is thicker than its diameter");
+  p.thickness = thickness;
   p.n_angle = n[0];
   p.n_height = n[1];
   p.n_thickness = n[2];
@@ -291,6 +322,15 @@ void place(const Scene& scene, const std::string& k, structure::SolidMesh& mesh)
                                 ? Eigen::Matrix3d::Identity()
                                 : Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
   mesh.X = (r * mesh.X).colwise() + vec(scene, k + ".translate");
+}
+
+// The markers' start positions: the placed mesh stretched about the mean of its nodes.
+Eigen::Matrix3Xd initial_positions(const Scene& scene, const std::string& k,
+                                   const structure::SolidMesh& mesh) {
+  const Eigen::Vector3d stretch = vec(scene, k + ".initial_stretch");
+  if (stretch == Eigen::Vector3d::Ones()) return {};
+  const Eigen::Vector3d centre = mesh.X.rowwise().mean();
+  return (stretch.asDiagonal() * (mesh.X.colwise() - centre)).colwise() + centre;
 }
 
 // The markers' periodic box: the mesh's periodic links must be translations along the axes.
@@ -415,6 +455,7 @@ ImmersedSetup read_immersed_setup(const Scene& scene, const flow::Mesh& mesh) {
     st.name = name;
     st.mesh = build_solid_mesh(scene, k);
     place(scene, k, st.mesh);
+    st.initial = initial_positions(scene, k, st.mesh);
     const auto where = scene.location(k + ".parameters").str() + ": key '" + k + ".parameters'";
     try {
       st.material = structure::make_material(

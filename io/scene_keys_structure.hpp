@@ -26,6 +26,8 @@ struct StructureSetup {
   std::unique_ptr<structure::Material> material;
   ibm::BodySpec body;
   bool stresses = true;  // von Mises, principal and Cauchy stresses in the output
+  // Where the markers start (initial_stretch); empty: at the reference positions.
+  Eigen::Matrix3Xd initial;
 };
 
 struct ImmersedSetup {

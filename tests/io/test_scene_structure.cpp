@@ -186,3 +186,42 @@ contact_wall_faces = ["front"]
   CHECK(error_of(bar + "contact_wall_radius = 0.02\n")
             .find("key 'structure.flap.contact_wall_faces'") != std::string::npos);
 }
+
+TEST_CASE("a sphere shell released from a stretched shape: sets, radius, start positions") {
+  const auto sphere = [](const std::string& elements) {
+    return R"(
+[structure.cell]
+mesh = "sphere_shell"
+radius = 0.002
+thickness = 0.0004
+translate = [0.01, 0.01, 0.005]
+parameters = { G = 1.0e4, K = 1.0e5 }
+elements = )" +
+           elements + "\n";
+  };
+  const auto scene =
+      io::parse_scene(fluid + sphere("[2, 2, 1]") + "initial_stretch = [1.25, 1.0, 0.8]\n",
+                      "t.toml");
+  const auto setup = io::read_immersed_setup(scene, io::build_mesh(scene));
+  const auto& s = setup.structures.at(0);
+  CHECK(s.mesh.num_elements() == 6 * 2 * 2);
+  const Eigen::Vector3d centre(0.01, 0.01, 0.005);
+  for (int a : s.mesh.node_set("inner"))
+    CHECK((s.mesh.X.col(a) - centre).norm() == doctest::Approx(0.0018).epsilon(1e-12));
+  for (int a : s.mesh.node_set("outer"))
+    CHECK((s.mesh.X.col(a) - centre).norm() == doctest::Approx(0.0022).epsilon(1e-12));
+  // The start: the placed mesh stretched about its centre; the mesh stays the reference.
+  REQUIRE(s.initial.cols() == s.mesh.num_nodes());
+  for (int a = 0; a < s.mesh.num_nodes(); ++a) {
+    const Eigen::Vector3d d = s.mesh.X.col(a) - centre;
+    CHECK((s.initial.col(a) - centre - Eigen::Vector3d(1.25, 1.0, 0.8).cwiseProduct(d)).norm() <
+          1e-15);
+  }
+  // Without initial_stretch the markers start at the reference positions.
+  const auto plain = io::parse_scene(fluid + sphere("[2, 2, 1]"), "t.toml");
+  CHECK(io::read_immersed_setup(plain, io::build_mesh(plain)).structures.at(0).initial.size() ==
+        0);
+  CHECK(error_of(sphere("[2, 3, 1]"))
+            .find("key 'structure.cell.elements': a sphere shell has 2 x 3 elements") !=
+        std::string::npos);
+}

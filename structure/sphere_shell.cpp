@@ -1,5 +1,5 @@
 // Cubed-sphere shell and enclosed volume; see sphere_shell.hpp.
-#include "validation/membrane_relaxation/sphere_shell.hpp"
+#include "structure/sphere_shell.hpp"
 
 #include <fmt/format.h>
 
@@ -11,18 +11,16 @@
 
 #include "structure/mesh_generators.hpp"
 
-namespace valsalva::validation {
+namespace valsalva::structure {
 
-using structure::Vec3;
-
-structure::SolidMesh sphere_shell(const SphereShell& s) {
+SolidMesh sphere_shell(const SphereShell& s) {
   if (!(s.radius > s.thickness / 2 && s.thickness > 0 && s.n >= 1 && s.layers >= 1))
     throw std::invalid_argument(fmt::format(
         "sphere_shell: need radius > thickness/2 > 0, n >= 1, layers >= 1 (got R {} t {} n {} "
         "layers {})",
         s.radius, s.thickness, s.n, s.layers));
-  structure::SolidMesh out;
-  out.order = structure::HexOrder::q2;
+  SolidMesh out;
+  out.order = HexOrder::q2;
   std::map<std::tuple<long, long, long>, int> index;  // merged nodes by rounded position
   std::vector<Vec3> nodes;
   const double quantum = 1e-9 * s.radius;
@@ -40,8 +38,8 @@ structure::SolidMesh sphere_shell(const SphereShell& s) {
       const Vec3 normal = side * Vec3::Unit(axis);
       Vec3 t1 = Vec3::Unit((axis + 1) % 3), t2 = Vec3::Unit((axis + 2) % 3);
       if (side < 0) std::swap(t1, t2);
-      const auto block = structure::structured_block(
-          structure::HexOrder::q2, {s.n, s.n, s.layers}, [&](const Vec3& u) {
+      const auto block = structured_block(
+          HexOrder::q2, {s.n, s.n, s.layers}, [&](const Vec3& u) {
             const double a = std::tan(std::numbers::pi / 4 * (2 * u[0] - 1));
             const double b = std::tan(std::numbers::pi / 4 * (2 * u[1] - 1));
             const Vec3 p = (normal + a * t1 + b * t2).normalized();
@@ -66,18 +64,18 @@ structure::SolidMesh sphere_shell(const SphereShell& s) {
   return out;
 }
 
-double enclosed_volume(const structure::SolidMesh& mesh, const Eigen::Matrix3Xd& x,
+double enclosed_volume(const SolidMesh& mesh, const Eigen::Matrix3Xd& x,
                        const std::string& name) {
   const int nen = mesh.nodes_per_element();
   std::vector<double> N(nen), dN(3 * nen);
   double volume = 0;
   for (const auto& f : mesh.surface_set(name)) {
-    const auto face = structure::hex_face(f.face);
+    const auto face = hex_face(f.face);
     const int a1 = (face.axis + 1) % 3, a2 = (face.axis + 2) % 3;
-    const auto rule = structure::gauss_face(f.face, 3);
+    const auto rule = gauss_face(f.face, 3);
     const int* en = mesh.element_nodes(f.element);
     for (int g = 0; g < rule.size(); ++g) {
-      structure::hex_shape(mesh.order, rule.points[g], N, dN);
+      hex_shape(mesh.order, rule.points[g], N, dN);
       Vec3 p = Vec3::Zero(), d1 = Vec3::Zero(), d2 = Vec3::Zero();
       for (int a = 0; a < nen; ++a) {
         p += N[a] * x.col(en[a]);
@@ -91,4 +89,4 @@ double enclosed_volume(const structure::SolidMesh& mesh, const Eigen::Matrix3Xd&
   return std::abs(volume);
 }
 
-}  // namespace valsalva::validation
+}  // namespace valsalva::structure
