@@ -37,17 +37,19 @@ void check_elastance(const BoundarySpec& spec, const std::vector<BoundarySpec>& 
   if (!e.tabulated &&
       !(e.minimum >= 0 && e.maximum >= e.minimum && e.period > 0 && e.systole > 0 &&
         e.systole <= e.period && std::isfinite(e.maximum) && std::isfinite(e.period)))
-    throw bad(fmt::format("needs 0 <= elastance_min <= elastance_max and 0 < systole <= period "
-                          "(got {}, {}, {}, {})",
-                          e.minimum, e.maximum, e.systole, e.period));
+    throw bad(
+        fmt::format("needs 0 <= elastance_min <= elastance_max and 0 < systole <= period "
+                    "(got {}, {}, {}, {})",
+                    e.minimum, e.maximum, e.systole, e.period));
   if (e.tabulated && *std::min_element(e.table.q.begin(), e.table.q.end()) < 0)
     throw bad("the elastance table has a negative elastance");
   if (!(spec.rest_volume >= 0) || !(spec.volume >= 0))
     throw bad(fmt::format("volume = {} and rest_volume = {} must be >= 0", spec.volume,
                           spec.rest_volume));
   if (spec.venous_return.empty()) return;
-  const auto it = std::find_if(specs.begin(), specs.end(),
-                               [&](const BoundarySpec& s) { return s.patch == spec.venous_return; });
+  const auto it = std::find_if(specs.begin(), specs.end(), [&](const BoundarySpec& s) {
+    return s.patch == spec.venous_return;
+  });
   if (it == specs.end() || it->type != BoundaryType::rcr_outlet)
     throw bad(fmt::format("venous_return = '{}' is not an rcr_outlet patch", spec.venous_return));
 }

@@ -17,7 +17,7 @@ namespace valsalva::flow {
 
 struct Elastance {
   bool tabulated = false;
-  double minimum = 0, maximum = 0;  // Pa/m^3 (raised_cosine)
+  double minimum = 0, maximum = 0;   // Pa/m^3 (raised_cosine)
   double period = 1, systole = 0.3;  // s (raised_cosine)
   Waveform table;                    // tabulated: (t, E)
 

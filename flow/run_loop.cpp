@@ -87,7 +87,8 @@ void RunLoop::impose_initial_boundary_values() {
     boundary_->impose_pressure(state_.pressure);
     boundary_->hold_outlets(state_.velocity);
     boundary_->impose(state_.velocity, state_.time);
-    if (auto* lumped = solver_.lumped_outlets()) lumped->start(state_.velocity, state_.pressure, state_.time);
+    if (auto* lumped = solver_.lumped_outlets())
+      lumped->start(state_.velocity, state_.pressure, state_.time);
   }
   last_good_ = state_;
 }
@@ -399,8 +400,7 @@ RunSummary RunLoop::run() {
           flux_text +=
               fmt::format(" p_{} {:.6g} Pa", local_.patch_names[lumped->patch(k)], s.pressure);
           lumped_csv += fmt::format(",{:.17g}", s.pressure);
-          if (distal_column(lumped->spec(k).type))
-            lumped_csv += fmt::format(",{:.17g}", s.distal);
+          if (distal_column(lumped->spec(k).type)) lumped_csv += fmt::format(",{:.17g}", s.distal);
         }
       if (root && out.print) print_progress(report, dt, energy, per_step, eta, flux_text);
       if (csv.is_open())

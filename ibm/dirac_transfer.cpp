@@ -118,8 +118,8 @@ void DiracTransfer::relocate(std::span<const Eigen::Vector3d> markers) {
   {
     const CpuTimer timer(counts_.cpu_seconds);
     for (std::size_t i = 0; i < markers.size() && !moved; ++i)
-      moved = periodic_distance(markers[i], located_at_[i]) >
-              options_.reuse_distance * located_h_[i];
+      moved =
+          periodic_distance(markers[i], located_at_[i]) > options_.reuse_distance * located_h_[i];
   }
   if (moved) {
     locate(markers);
@@ -160,8 +160,8 @@ void DiracTransfer::locate_all(std::span<const Eigen::Vector3d> markers) {
     mine_[k] = {owned ? found.distance : std::numeric_limits<double>::max(), mesh.comm.rank()};
   }
   if (count > 0)
-    VALSALVA_MPI(MPI_Allreduce(mine_.data(), best_.data(), static_cast<int>(count),
-                               MPI_DOUBLE_INT, MPI_MINLOC, mesh.comm.get()));
+    VALSALVA_MPI(MPI_Allreduce(mine_.data(), best_.data(), static_cast<int>(count), MPI_DOUBLE_INT,
+                               MPI_MINLOC, mesh.comm.get()));
 
   std::string error;
   built_h_.assign(count, 0.0);

@@ -53,13 +53,22 @@ void declare_inlet_pressure_keys(Schema& s, const std::string& b) {
           "elastance_min after (flow/elastance.hpp); table: a periodic CSV table (elastance_file)");
   s.when(b + ".elastance", b + ".type", {"elastance_inlet"});
   const std::string curve = "elastance_inlet raised_cosine: ";
-  s.real(b + ".elastance_min").required().at_least(0).unit_of("Pa/m3").doc(
-      curve + "diastolic elastance (a human ventricle: about 1e7 Pa/m3 = 0.08 mmHg/mL)");
-  s.real(b + ".elastance_max").required().at_least(0).unit_of("Pa/m3").doc(
-      curve + "end-systolic elastance, >= elastance_min (about 3e8 Pa/m3 = 2.3 mmHg/mL)");
+  s.real(b + ".elastance_min")
+      .required()
+      .at_least(0)
+      .unit_of("Pa/m3")
+      .doc(curve + "diastolic elastance (a human ventricle: about 1e7 Pa/m3 = 0.08 mmHg/mL)");
+  s.real(b + ".elastance_max")
+      .required()
+      .at_least(0)
+      .unit_of("Pa/m3")
+      .doc(curve + "end-systolic elastance, >= elastance_min (about 3e8 Pa/m3 = 2.3 mmHg/mL)");
   s.real(b + ".cycle_period").required().above(0).unit_of("s").doc(curve + "heart period");
-  s.real(b + ".systole").required().above(0).unit_of("s").doc(
-      curve + "duration of the contraction, <= cycle_period");
+  s.real(b + ".systole")
+      .required()
+      .above(0)
+      .unit_of("s")
+      .doc(curve + "duration of the contraction, <= cycle_period");
   for (const char* key : {".elastance_min", ".elastance_max", ".cycle_period", ".systole"}) {
     s.when(b + key, b + ".type", {"elastance_inlet"});
     s.when(b + key, b + ".elastance", {"raised_cosine"});
@@ -72,11 +81,18 @@ void declare_inlet_pressure_keys(Schema& s, const std::string& b) {
           "period, linearly interpolated, repeated; E >= 0");
   s.when(b + ".elastance_file", b + ".type", {"elastance_inlet"});
   s.when(b + ".elastance_file", b + ".elastance", {"table"});
-  s.real(b + ".volume").required().at_least(0).unit_of("m3").doc(
-      "elastance_inlet: ventricular volume V at the start of the run (a restart continues its "
-      "own)");
-  s.real(b + ".rest_volume").def(0.0).at_least(0).unit_of("m3").doc(
-      "elastance_inlet: unstressed volume V0 of p = E(t) (V - V0)");
+  s.real(b + ".volume")
+      .required()
+      .at_least(0)
+      .unit_of("m3")
+      .doc(
+          "elastance_inlet: ventricular volume V at the start of the run (a restart continues its "
+          "own)");
+  s.real(b + ".rest_volume")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("m3")
+      .doc("elastance_inlet: unstressed volume V0 of p = E(t) (V - V0)");
   s.string(b + ".venous_return")
       .def("")
       .unit_of("-")

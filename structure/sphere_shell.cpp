@@ -38,13 +38,12 @@ SolidMesh sphere_shell(const SphereShell& s) {
       const Vec3 normal = side * Vec3::Unit(axis);
       Vec3 t1 = Vec3::Unit((axis + 1) % 3), t2 = Vec3::Unit((axis + 2) % 3);
       if (side < 0) std::swap(t1, t2);
-      const auto block = structured_block(
-          HexOrder::q2, {s.n, s.n, s.layers}, [&](const Vec3& u) {
-            const double a = std::tan(std::numbers::pi / 4 * (2 * u[0] - 1));
-            const double b = std::tan(std::numbers::pi / 4 * (2 * u[1] - 1));
-            const Vec3 p = (normal + a * t1 + b * t2).normalized();
-            return Vec3(s.centre + (s.radius + (u[2] - 0.5) * s.thickness) * p);
-          });
+      const auto block = structured_block(HexOrder::q2, {s.n, s.n, s.layers}, [&](const Vec3& u) {
+        const double a = std::tan(std::numbers::pi / 4 * (2 * u[0] - 1));
+        const double b = std::tan(std::numbers::pi / 4 * (2 * u[1] - 1));
+        const Vec3 p = (normal + a * t1 + b * t2).normalized();
+        return Vec3(s.centre + (s.radius + (u[2] - 0.5) * s.thickness) * p);
+      });
       const int first_element = out.num_elements();
       std::vector<int> local_to_merged(block.num_nodes());
       for (int a = 0; a < block.num_nodes(); ++a) local_to_merged[a] = node_id(block.X.col(a));
@@ -64,8 +63,7 @@ SolidMesh sphere_shell(const SphereShell& s) {
   return out;
 }
 
-double enclosed_volume(const SolidMesh& mesh, const Eigen::Matrix3Xd& x,
-                       const std::string& name) {
+double enclosed_volume(const SolidMesh& mesh, const Eigen::Matrix3Xd& x, const std::string& name) {
   const int nen = mesh.nodes_per_element();
   std::vector<double> N(nen), dN(3 * nen);
   double volume = 0;

@@ -155,13 +155,11 @@ void validate(const ValveGeometry& g) {
   for (const auto& k : valve_keys()) {
     const double v = g.*k.field;
     require(std::isfinite(v), k.name, v, "it must be a finite number");
-    if (k.name != "first_commissure_deg" && k.name != "free_edge_rise" &&
-        k.name != "far_mesh_size")
+    if (k.name != "first_commissure_deg" && k.name != "free_edge_rise" && k.name != "far_mesh_size")
       require(v > 0, k.name, v, "it must be positive");
   }
   require(g.free_edge_rise >= 0, "free_edge_rise", g.free_edge_rise, "it must not be negative");
-  require(g.far_mesh_size == 0 || g.far_mesh_size >= g.mesh_size, "far_mesh_size",
-          g.far_mesh_size,
+  require(g.far_mesh_size == 0 || g.far_mesh_size >= g.mesh_size, "far_mesh_size", g.far_mesh_size,
           fmt::format("it must be 0 (uniform) or at least mesh_size = {:g} m", g.mesh_size));
   require(g.far_mesh_size <= g.root_radius(), "far_mesh_size", g.far_mesh_size,
           fmt::format("must not exceed the root radius {:g} m", g.root_radius()));

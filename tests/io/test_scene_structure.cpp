@@ -199,9 +199,8 @@ parameters = { G = 1.0e4, K = 1.0e5 }
 elements = )" +
            elements + "\n";
   };
-  const auto scene =
-      io::parse_scene(fluid + sphere("[2, 2, 1]") + "initial_stretch = [1.25, 1.0, 0.8]\n",
-                      "t.toml");
+  const auto scene = io::parse_scene(
+      fluid + sphere("[2, 2, 1]") + "initial_stretch = [1.25, 1.0, 0.8]\n", "t.toml");
   const auto setup = io::read_immersed_setup(scene, io::build_mesh(scene));
   const auto& s = setup.structures.at(0);
   CHECK(s.mesh.num_elements() == 6 * 2 * 2);
@@ -219,8 +218,7 @@ elements = )" +
   }
   // Without initial_stretch the markers start at the reference positions.
   const auto plain = io::parse_scene(fluid + sphere("[2, 2, 1]"), "t.toml");
-  CHECK(io::read_immersed_setup(plain, io::build_mesh(plain)).structures.at(0).initial.size() ==
-        0);
+  CHECK(io::read_immersed_setup(plain, io::build_mesh(plain)).structures.at(0).initial.size() == 0);
   CHECK(error_of(sphere("[2, 3, 1]"))
             .find("key 'structure.cell.elements': a sphere shell has 2 x 3 elements") !=
         std::string::npos);

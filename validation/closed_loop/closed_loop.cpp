@@ -28,7 +28,9 @@ constexpr double kAmplitude = 0.5, kSinePeriod = 0.5;  // Pa, s (the sine level)
 // closed_loop.toml
 constexpr double kCycle = 0.5, kCapacitance = 1e-9;
 
-double poiseuille_flux(double dp) { return kPi * std::pow(kRadius, 4) * dp / (8 * kMu * kLength); }
+double poiseuille_flux(double dp) {
+  return kPi * std::pow(kRadius, 4) * dp / (8 * kMu * kLength);
+}
 
 // The complex flux amplitude of Womersley flow under the pressure difference amplitude dp_h
 // (p_in - p_out = Re[dp_h e^{i w t}]): G_h = dp_h / (rho L), Qh = G_h pi R^2 (1 - 2 J1(L) /
@@ -37,8 +39,7 @@ std::complex<double> womersley_flux(std::complex<double> dp_h, double omega) {
   const double wo = kRadius * std::sqrt(omega * kRho / kMu);
   const std::complex<double> l = std::pow(std::complex<double>(0, 1), 1.5) * wo;
   const auto shape = 1.0 - 2.0 * flow::bessel_j1(l) / (l * flow::bessel_j0(l));
-  return dp_h / (kRho * kLength) * kPi * kRadius * kRadius * shape /
-         std::complex<double>(0, omega);
+  return dp_h / (kRho * kLength) * kPi * kRadius * kRadius * shape / std::complex<double>(0, omega);
 }
 
 struct Table {
@@ -119,8 +120,7 @@ void pressure_pipe(const Context& ctx, int rank, Report& report) {
   // The oscillating profile (flatter at Wo 1.8) has its own O(h^2) deficit: 10 % for the
   // amplitude itself; divided by the steady run's ratio, the mesh's conductance deficit drops
   // out to first order and what remains is the Womersley dynamics (2 %).
-  report.add("sine, h = D/8: inflow amplitude / Womersley's - 1", amplitude, 0, 0.1,
-             Check::within);
+  report.add("sine, h = D/8: inflow amplitude / Womersley's - 1", amplitude, 0, 0.1, Check::within);
   report.add("sine, h = D/8: (amplitude / Womersley's) / (steady inflow / Poiseuille's) - 1",
              (1 + amplitude) / (1 + coarse) - 1, 0, 0.02, Check::within);
   // Phase: Womersley's lag at Wo 1.8 is 0.44 rad behind the pressure; the discrete one differs

@@ -108,9 +108,8 @@ void run(const Context& ctx, Report& report) {
   };
   measure.observer = [&](const run::Simulation& sim, std::int64_t) {
     const auto& ib = *sim.immersed();
-    const double drift = structure::enclosed_volume(ib.body(0).mesh(), ib.positions(), "inner") /
-                             r.v0 -
-                         1;
+    const double drift =
+        structure::enclosed_volume(ib.body(0).mesh(), ib.positions(), "inner") / r.v0 - 1;
     r.worst_drift = std::max(r.worst_drift, std::abs(drift));
     r.row(ib, sim.state().time, drift);
   };
@@ -135,8 +134,8 @@ void run(const Context& ctx, Report& report) {
   report.add("final shape deviation / initial (max-min inner radius over mean)",
              final_shape.deviation / r.initial_deviation, 0.0, ctx.quick ? 0.7 : 0.3,
              Check::at_most);
-  report.add("final mean inner radius / stress-free radius", final_shape.mean_radius / r.r_ref,
-             1.0, 0.02);
+  report.add("final mean inner radius / stress-free radius", final_shape.mean_radius / r.r_ref, 1.0,
+             0.02);
   report.add("total force on the membrane / sum |F_a| (internal forces balance)", force_balance,
              0.0, 1e-10, Check::at_most);
 }
