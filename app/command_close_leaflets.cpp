@@ -82,6 +82,7 @@ toml::table report_table(const Options& o, const valve::ClosingResult& r) {
       {"contact", o.closing.contact}};
   if (o.closing.contact) {
     const auto& c = n.contact;
+    t.insert("contact_clearance_m", o.closing.contact_options.clearance);
     t.insert("contact_min_gap_m", std::isfinite(c.min_gap) ? c.min_gap : 1.0);
     t.insert("contact_force_N", c.force);
     t.insert("contact_area_m2", c.area);
@@ -206,6 +207,10 @@ CLI::App* add_close_leaflets(CLI::App& cli, std::function<int()>& action) {
                 "Width of the penalty's C1 smoothing near zero gap, as a fraction of the face size "
                 "(default 0: none)")
       ->check(CLI::Range(0.0, 0.999));
+  c->add_option("--contact-clearance", o->closing.contact_options.clearance,
+                "Distance the leaflets are held apart where they coapt [m] (default 0: they touch; "
+                "an FSI run needs about the fluid mesh size, docs/valve.md)")
+      ->check(CLI::NonNegativeNumber);
   c->add_flag("--overwrite", o->overwrite, "Replace CLOSED.msh and its report");
   c->add_flag("--verbose", o->closing.verbose, "Print the Newton iterations");
   action = [o] { return run(*o); };

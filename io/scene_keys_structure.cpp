@@ -223,6 +223,16 @@ void declare_structure_keys(Schema& s) {
       .above(0)
       .unit_of("h")
       .doc("Only closest points within this distance (above or below a face) are in contact");
+  s.real(k + ".contact_clearance")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("m")
+      .doc(
+          "Distance the surfaces of a contact pair are held apart: the penalty acts on the gap "
+          "minus this. An immersed boundary cannot separate surfaces closer than about one fluid "
+          "cell (both interpolate the same velocity), so coapting leaflets that must reopen need "
+          "about the fluid mesh size near the valve (docs/valve.md); the leaflets of "
+          "`close-leaflets --contact-clearance` use the same value. 0: surfaces touch");
   s.real(k + ".contact_smoothing")
       .def(0.0)
       .at_least(0)
@@ -394,6 +404,7 @@ void read_contact(const Scene& scene, const std::string& k, const structure::Sol
   body.contact_options.penalty_factor = scene.get<double>(k + ".contact_penalty");
   body.contact_options.search_factor = scene.get<double>(k + ".contact_search");
   body.contact_options.smoothing = scene.get<double>(k + ".contact_smoothing");
+  body.contact_options.clearance = scene.get<double>(k + ".contact_clearance");
   body.contact_options.formulation =
       scene.get<std::string>(k + ".contact_formulation") == "two_half_pass"
           ? structure::ContactOptions::Formulation::two_half_pass

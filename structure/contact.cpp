@@ -122,6 +122,9 @@ Contact::Contact(const SolidMesh& mesh, const Material& material, std::vector<Co
   if (!(options_.search_factor > 0))
     throw std::invalid_argument(
         fmt::format("contact: search_factor {} must be > 0", options_.search_factor));
+  if (!(options_.clearance >= 0))
+    throw std::invalid_argument(
+        fmt::format("contact: clearance {} m must be >= 0", options_.clearance));
   if (!(options_.smoothing >= 0 && options_.smoothing < 1))
     throw std::invalid_argument(
         fmt::format("contact: smoothing {} must be in [0, 1) (a fraction of the face size)",
@@ -224,8 +227,8 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
 
   // Half pass: the slave faces S against the master faces M.
   auto half_pass = [&](const std::vector<FaceRef>& S, const std::vector<FaceRef>& M, double eps,
-                       double width, double search, ContactSurfaceSummary& s, HalfTotals& half,
-                       int surface, int h) {
+                       double width, double search, double clearance, ContactSurfaceSummary& s,
+                       HalfTotals& half, int surface, int h) {
     std::vector<Eigen::Vector3d> centres(M.size()), lo(M.size()), hi(M.size());
     std::vector<std::array<V3<double>, NF>> PM(M.size());
     std::vector<std::array<int, NF>> NM(M.size());
@@ -245,8 +248,8 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
         hi[m] = hi[m].cwiseMax(node);
       }
       // A curved Q2 face can bulge beyond its nodes' box: a margin of a quarter of its size.
-      lo[m].array() -= search + 0.25 * r;
-      hi[m].array() += search + 0.25 * r;
+      lo[m].array() -= search + clearance + 0.25 * r;
+      hi[m].array() += search + clearance + 0.25 * r;
       rmax = std::max(rmax, r);
     }
     const BucketGrid grid(centres, std::max(2 * rmax, 1e-300));
@@ -259,7 +262,7 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
         V3<double> xs;
         double da;
         slave_geometry<double, NF>(fs, sp, PS, xs, da);
-        grid.in_box(Eigen::Vector3d(xs[0], xs[1], xs[2]), rmax + search, candidates);
+        grid.in_box(Eigen::Vector3d(xs[0], xs[1], xs[2]), rmax + search + clearance, candidates);
         int best = -1;
         Projection pr;
         const Eigen::Vector3d xe(xs[0], xs[1], xs[2]);
@@ -268,20 +271,21 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
           // box, widened by the search distance, holds the point.
           if ((xe.array() < lo[c].array()).any() || (xe.array() > hi[c].array()).any()) continue;
           const Projection p = project<NF>(tables.shape[M[c].face], PM[c], xs);
-          if (!p.inside || std::abs(p.gap) > search) continue;
+          if (!p.inside || p.gap > clearance + search || p.gap < -search) continue;
           if (best < 0 || std::abs(p.gap) < std::abs(pr.gap)) best = c, pr = p;
         }
         if (best < 0) continue;
         const FaceShape<NF>& fm = tables.shape[M[best].face];
         double pressure = 0;
-        if (pr.gap < 0 && f) {
+        if (pr.gap < clearance && f) {
           if (K) {
-            const auto pf = face_point_force<AD, NF>(fs, sp, seed(PS, 0), fm,
-                                                     seed(PM[best], 3 * NF), pr, eps, width);
+            const auto pf = face_point_force<AD, NF>(
+                fs, sp, seed(PS, 0), fm, seed(PM[best], 3 * NF), pr, eps, width, clearance);
             scatter_ad(pf, ns, &NM[best]);
             pressure = pf.pressure.value();
           } else {
-            const auto pf = face_point_force<double, NF>(fs, sp, PS, fm, PM[best], pr, eps, width);
+            const auto pf =
+                face_point_force<double, NF>(fs, sp, PS, fm, PM[best], pr, eps, width, clearance);
             const double w = two_pass ? 0.5 : 1.0;
             for (int a = 0; a < NF; ++a)
               for (int i = 0; i < 3; ++i) {
@@ -290,8 +294,8 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
               }
             pressure = pf.pressure;
           }
-        } else if (pr.gap < 0) {
-          pressure = penalty_pressure(pr.gap, eps, width);
+        } else if (pr.gap < clearance) {
+          pressure = penalty_pressure(pr.gap - clearance, eps, width);
         }
         record(s, half, surface, h, fr, ns, xs, M[best], pr.gap, pressure, da);
       }
@@ -307,8 +311,9 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
     const double search = options_.search_factor * s.h;
     const double width = options_.smoothing * s.h;
     HalfTotals h0, h1;
-    half_pass(pairs_[p].a, pairs_[p].b, s.penalty, width, search, s, h0, static_cast<int>(p), 0);
-    half_pass(pairs_[p].b, pairs_[p].a, s.penalty, width, search, s, h1, static_cast<int>(p), 1);
+    const double c = options_.clearance;
+    half_pass(pairs_[p].a, pairs_[p].b, s.penalty, width, search, c, s, h0, static_cast<int>(p), 0);
+    half_pass(pairs_[p].b, pairs_[p].a, s.penalty, width, search, c, s, h1, static_cast<int>(p), 1);
     s.force = 0.5 * (h0.force + h1.force);
     s.area = 0.5 * (h0.area + h1.area);
     summary.surfaces.push_back(s);

@@ -69,6 +69,13 @@ struct ContactOptions {
   // (contact_kernel.hpp penalty_pressure); 0: the plain penalty eps <-g>. Smoothing lets Newton
   // converge where points keep entering and leaving contact (coapting leaflets).
   double smoothing = 0;
+  // Clearance c [m] between the surfaces of a pair: the penalty acts on g - c, so the surfaces
+  // are held about c apart instead of touching (a contact thickness offset). An immersed
+  // boundary cannot separate two surfaces that lie within one fluid cell of each other (both
+  // interpolate the same fluid velocity), so coapting leaflets are kept a fluid cell apart
+  // (Borazjani, CMAME 257 (2013) 103: contact acts below a threshold distance of the order of the
+  // grid spacing). Rigid obstacles ignore it.
+  double clearance = 0;
   // Gauss points per direction on each slave face; 0: order + 2 (as pressure loads).
   int quadrature = 0;
   // two_half_pass (the header): passes the patch test; the two bodies' forces are equal and

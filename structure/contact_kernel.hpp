@@ -213,12 +213,12 @@ T penalty_pressure(const T& g, double eps, double width) {
 // Penalty force of the two-half-pass Gauss-point-to-surface formulation (Sauer & De Lorenzis,
 // CMAME 253, 2013): f_a = N_a p n_m da on the slave nodes only, with
 // p = eps <-g>, g = (x_s - x_m) . n_m and n_m the master's outward unit normal at the closest
-// point, da the slave's current area element.
+// point, da the slave's current area element. With a clearance c the pressure is p(g - c).
 template <class T, int NF>
 PointForce<T, NF> face_point_force(const FaceShape<NF>& fs, const SlavePoint<NF>& sp,
                                    const std::array<V3<T>, NF>& Ps, const FaceShape<NF>& fm,
                                    const std::array<V3<T>, NF>& Pm, const Projection& pr,
-                                   double eps, double width) {
+                                   double eps, double width, double clearance = 0) {
   using std::sqrt;
   PointForce<T, NF> out;
   V3<T> xs;
@@ -235,7 +235,7 @@ PointForce<T, NF> face_point_force(const FaceShape<NF>& fs, const SlavePoint<NF>
   const T len = sqrt(dot(n, n));
   for (int i = 0; i < 3; ++i) n[i] = static_cast<double>(fm.side) * n[i] / len;
   out.gap = dot(minus(xs, xm), n);
-  out.pressure = penalty_pressure(out.gap, eps, width);
+  out.pressure = penalty_pressure(out.gap - clearance, eps, width);
   for (int a = 0; a < NF; ++a)
     for (int i = 0; i < 3; ++i) out.f[a][i] = sp.N[a] * out.pressure * out.area * n[i];
   for (int b = 0; b < NF; ++b) {

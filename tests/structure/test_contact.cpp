@@ -176,6 +176,51 @@ TEST_CASE("contact tangent equals minus the derivative of the force (central dif
   }
 }
 
+TEST_CASE("clearance: surfaces closer than c feel eps (c - g), farther ones nothing") {
+  for (HexOrder order : {HexOrder::q1, HexOrder::q2}) {
+    CAPTURE(static_cast<int>(order));
+    const double d = 0.05;  // gap between the blocks' flat faces (area 1)
+    const SolidMesh m = two_blocks(order, d);
+    for (double c : {0.04, 0.1, 0.3}) {
+      CAPTURE(c);
+      ContactOptions opt;
+      opt.clearance = c;
+      const Contact contact(m, *kMaterial, {blocks_pair(m)}, {}, opt);
+      Eigen::Matrix3Xd f = Eigen::Matrix3Xd::Zero(3, m.num_nodes());
+      const ContactSummary s = contact.add_forces(m.X, f);
+      // The reported gap stays the geometric distance.
+      CHECK(s.min_gap == doctest::Approx(d).epsilon(1e-12));
+      const double eps = s.surfaces[0].penalty;
+      const double expected = c > d ? eps * (c - d) : 0.0;  // uniform pressure on area 1
+      CHECK(s.max_pressure == doctest::Approx(expected).epsilon(1e-12));
+      CHECK(s.force == doctest::Approx(expected).epsilon(1e-10));
+      // Each block is pushed away from the other by the whole force.
+      CHECK(f.row(2).sum() == doctest::Approx(0.0).scale(expected + 1));
+      double upper = 0;
+      for (int n = 0; n < m.num_nodes(); ++n)
+        if (m.X(2, n) > 0.5 + d / 2) upper += f(2, n);
+      CHECK(upper == doctest::Approx(expected).epsilon(1e-10));
+    }
+    // The tangent stays exact with a clearance (the perturbed blocks of the test above, 0.1 apart
+    // plus the perturbation, inside a clearance of 0.15).
+    ContactOptions opt;
+    opt.clearance = 0.15;
+    const SolidMesh apart = two_blocks(order, 0.1);
+    const Contact contact(apart, *kMaterial, {blocks_pair(apart)}, {}, opt);
+    const Eigen::Matrix3Xd x = perturbed(apart, 3);
+    Eigen::Matrix3Xd f = Eigen::Matrix3Xd::Zero(3, apart.num_nodes());
+    REQUIRE(contact.add_forces(x, f).surfaces[0].active_points > 0);
+    const double err = tangent_error(contact, x, 1e-6);
+    MESSAGE("clearance tangent relative error " << err);
+    CHECK(err < 1e-8);
+  }
+  ContactOptions bad;
+  bad.clearance = -1e-3;
+  const SolidMesh m = two_blocks(HexOrder::q1, 0.05);
+  CHECK_THROWS_WITH_AS(Contact(m, *kMaterial, {blocks_pair(m)}, {}, bad),
+                       doctest::Contains("clearance"), std::invalid_argument);
+}
+
 TEST_CASE("smoothed penalty: C1 law, the plain law shifted by w / 2 below -w, exact tangent") {
   using contact_detail::penalty_pressure;
   const double eps = 7.0, w = 0.01;
