@@ -203,10 +203,15 @@ void run_case(const Context& ctx, Report& report) {
   // Carreau-Yasuda R/24 (their viscosity at rest, 11 and 3.6 times the wall's, sets the explicit
   // time step: Casson R/24 takes about 1e5 steps).
   std::vector<Level> levels;
-  for (const char* fluid : {"power_law", "power_law_thinning"})
-    if (wanted(fluid))
-      for (int n : ctx.quick ? std::vector<int>{8, 16} : std::vector<int>{8, 16, 32})
-        levels.push_back({fluid, n});
+  // The shear-thinning power law: quick R/8, R/12, full R/8, 12, 16 (its steps grow as (R/h)^2
+  // times the cap's 14-fold contrast with the wall viscosity, and the low wall viscosity makes
+  // the start-up slow: R/8 takes about 23000 steps to the steady state).
+  if (wanted("power_law"))
+    for (int n : ctx.quick ? std::vector<int>{8, 16} : std::vector<int>{8, 16, 32})
+      levels.push_back({"power_law", n});
+  if (wanted("power_law_thinning"))
+    for (int n : ctx.quick ? std::vector<int>{8, 12} : std::vector<int>{8, 12, 16})
+      levels.push_back({"power_law_thinning", n});
   if (wanted("casson")) levels.push_back({"casson", ctx.quick ? 12 : 16});
   if (wanted("carreau_yasuda")) levels.push_back({"carreau_yasuda", ctx.quick ? 12 : 24});
   for (auto& l : levels)
@@ -228,12 +233,22 @@ void run_case(const Context& ctx, Report& report) {
       const auto& coarse = levels[k - 1];
       const bool thinning = l.fluid == "power_law_thinning";
       const std::string name = thinning ? fmt::format("power law n {:g}", l.index) : "power law";
+      // n = 0.5: its velocity falls mostly near the wall (u ~ 1 - (r/R)^3), where the wall
+      // viscosity is 14 times below the axis's; its profile error is about 10 times n = 1.5's
+      // (measured 1.3 (h/R)^2 at R/8), its tolerances 2 (h/R)^2 and, for Q, 4 (h/R)^2.
+      const double h2 = 1.0 / (l.n * l.n);
       report.add(fmt::format("{} R/{}: steady profile L2 error / u_max", name, l.n),
-                 l.profile_error, 0, l.n >= 32 ? 5e-4 : 1e-3, Check::at_most);
+                 l.profile_error, 0,
+                 thinning    ? 2 * h2
+                 : l.n >= 32 ? 5e-4
+                             : 1e-3,
+                 Check::at_most);
       report.add(fmt::format("{} R/{} -> R/{}: order of the profile error", name, coarse.n, l.n),
-                 std::log2(coarse.profile_error / l.profile_error), 1.8, 0, Check::at_least);
+                 std::log(coarse.profile_error / l.profile_error) /
+                     std::log(static_cast<double>(l.n) / coarse.n),
+                 1.8, 0, Check::at_least);
       report.add(fmt::format("{} R/{}: flow rate / analytic - 1", name, l.n),
-                 l.flow_rate / l.reference_flow_rate - 1, 0, 2e-3);
+                 l.flow_rate / l.reference_flow_rate - 1, 0, thinning ? 4 * h2 : 2e-3);
       // The floor's own effect must stay well below the finest level's error, so that the
       // measured error and order are the discretisation's.
       if (thinning && (k + 1 == levels.size() || levels[k + 1].fluid != l.fluid))
