@@ -235,7 +235,8 @@ void run_case(const Context& ctx, Report& report) {
       const std::string name = thinning ? fmt::format("power law n {:g}", l.index) : "power law";
       // n = 0.5: its velocity falls mostly near the wall (u ~ 1 - (r/R)^3), where the wall
       // viscosity is 14 times below the axis's; its profile error is about 10 times n = 1.5's
-      // (measured 1.3 (h/R)^2 at R/8), its tolerances 2 (h/R)^2 and, for Q, 4 (h/R)^2.
+      // (README.md: about 1.2 (h/R)^2 at R/8 and R/12), its tolerances 2 (h/R)^2 and, for Q,
+      // 4 (h/R)^2 (Q at R/8 and R/12: about -2.4 (h/R)^2).
       const double h2 = 1.0 / (l.n * l.n);
       report.add(fmt::format("{} R/{}: steady profile L2 error / u_max", name, l.n),
                  l.profile_error, 0,
