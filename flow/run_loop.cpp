@@ -144,9 +144,14 @@ ProjectionOptions& RunLoop::attach_boundary() {
 
 double RunLoop::choose_dt(double remaining) {
   const auto& t = options_.time;
-  // A non-Newtonian fluid: its nodal viscosity of the current velocity (+ nu_sgs). LES: nu + max
+  // A non-Newtonian fluid: its nodal viscosity of the current velocity (+ nu_sgs), or the cap of
+  // a law that has one at every node (flow/viscosity_model.hpp, viscosity_cap). LES: nu + max
   // nu_sgs of the previous step's last stage bounds the viscous rate.
-  if (solver_.variable_viscosity()) {
+  const auto& rheology = options_.projection.rheology;
+  if (const double cap = viscosity_cap(rheology); cap > 0) {
+    const double nu = cap / options_.projection.density + solver_.max_subgrid_viscosity();
+    rates_ = stability_rates(local_, solver_.laplacian_weights(), nu, state_.velocity, scratch_);
+  } else if (solver_.variable_viscosity()) {
     rates_ = stability_rates(local_, solver_.laplacian_weights(),
                              solver_.viscosity_field(state_.velocity), state_.velocity, scratch_);
   } else {

@@ -94,6 +94,11 @@ double lowest_viscosity(const ViscosityModel& m) {
   return m.mu;
 }
 
+double viscosity_cap(const ViscosityModel& m) {
+  if (m.law != ViscosityLaw::power_law || m.n >= 1) return 0.0;
+  return m.consistency * std::pow(m.shear_rate_min, m.n - 1);
+}
+
 std::string viscosity_law_name(ViscosityLaw law) {
   switch (law) {
     case ViscosityLaw::newtonian:

@@ -14,7 +14,9 @@
 //   sqrt(tau_y m))^2, and within a relative exp(-m gamma_dot) of Casson's yield term where the
 //   fluid flows. m (s) is the documented regularisation parameter.
 // - Power law: mu = K max(gamma_dot, gamma_min)^(n - 1), for verification only (its viscosity
-//   is infinite or zero at rest without the floor gamma_min).
+//   is infinite (n < 1) or zero (n > 1) at rest without the floor gamma_min). With n < 1 the
+//   floor caps the viscosity at K gamma_min^(n - 1): the fluid is Newtonian at that viscosity
+//   wherever gamma_dot < gamma_min (in a pipe driven by G = -dp/dz: r < 2 K gamma_min^n / G).
 #pragma once
 
 #include <Eigen/Dense>
@@ -62,6 +64,15 @@ double apparent_viscosity(const ViscosityModel& model, double gamma_dot);
 // mu_0 (n >= 1), Casson mu_p, a power law K gamma_min^(n - 1) (n >= 1) or 0 (n < 1: it thins
 // without bound). The viscous time-step bound of the fluid is at most h^2 / (this / rho).
 double lowest_viscosity(const ViscosityModel& model);
+
+// The viscosity the explicit time step's Fourier bound takes at every node, Pa s, or 0 when each
+// node's own mu(gamma_dot) sets it: the cap K gamma_min^(n - 1) of a power law with n < 1, the
+// largest viscosity that law can produce. The cap is reached wherever the shear rate drops below
+// gamma_min (at rest, on a pipe's axis, where the flow reverses), and the nodal viscosity is
+// re-evaluated at every RK stage, so it can rise to the cap within a step: a bound from the
+// step's start would not hold at its stages. With the cap the viscous bound is
+// dt <= time.fourier h^2 rho / (K gamma_min^(n - 1)): the step count grows as gamma_min^(n - 1).
+double viscosity_cap(const ViscosityModel& model);
 
 std::string viscosity_law_name(ViscosityLaw law);
 

@@ -24,7 +24,7 @@ void declare_inlet_pressure_keys(Schema& s, const std::string& b) {
       .unit_of("-")
       .doc(
           "pressure_inlet: p_in(t), constant (pressure), sine (pressure + pressure_amplitude "
-          "sin(2 pi t / pressure_period + pressure_phase)) or a periodic CSV table "
+          "sin(2 pi t / pressure_period + pressure_phase)) or pressure + a periodic CSV table "
           "(pressure_file)");
   s.when(b + ".pressure_waveform", b + ".type", {"pressure_inlet"});
   const std::string sine = "pressure_inlet sine waveform: ";
@@ -117,8 +117,10 @@ void read_inlet_pressure(const Scene& scene, const std::string& key, flow::Bound
   if (spec.type == flow::BoundaryType::pressure_inlet) {
     const auto waveform = scene.get<std::string>(key + ".pressure_waveform");
     auto& p = spec.inlet_pressure;
-    if (waveform == "table") {
+    if (waveform == "table") {  // p_in = pressure + the table's p(t)
       p = read_table(scene, key + ".pressure_file");
+      const double offset = scene.get<double>(key + ".pressure");
+      for (double& q : p.q) q += offset;
       return;
     }
     p.mean = scene.get<double>(key + ".pressure");
@@ -250,8 +252,8 @@ void declare_boundary_keys(Schema& s) {
       .unit_of("Pa")
       .doc(
           "Fixed pressure of the outlet; resistance_outlet: the pressure p0 at zero flux; "
-          "pressure_inlet: the constant or mean p_in (pressure_waveform constant or sine; unused "
-          "with a table)");
+          "pressure_inlet: the constant p_in, the mean of the sine or a constant added to every "
+          "row of the table (pressure_waveform constant, sine or table)");
   s.when(b + ".pressure", b + ".type", {"pressure_outlet", "resistance_outlet", "pressure_inlet"});
   s.real(b + ".resistance")
       .required()

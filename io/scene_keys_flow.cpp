@@ -453,11 +453,13 @@ void check_step_count(const Scene& scene, const flow::DualMetrics& metrics) {
   const double fourier = scene.get<double>("time.fourier");
   const double h = *std::min_element(metrics.h.begin(), metrics.h.end());
   // A non-Newtonian fluid: its lowest viscosity over all shear rates, so that dt stays an upper
-  // bound (a shear-thinning fluid at rest takes shorter steps than it does while it flows);
-  // none for a power law with n < 1, whose viscosity has no positive lower bound.
+  // bound (a shear-thinning fluid at rest takes shorter steps than it does while it flows); the
+  // cap of a power law with n < 1, which the run's viscous bound takes at every node
+  // (flow/viscosity_model.hpp, viscosity_cap).
   const auto model = read_viscosity_model(scene);
   const bool newtonian = model.law == flow::ViscosityLaw::newtonian;
-  const double mu = flow::lowest_viscosity(model);
+  const double cap = flow::viscosity_cap(model);
+  const double mu = cap > 0 ? cap : flow::lowest_viscosity(model);
   if (!(mu > 0)) return;
   // The run's viscous bound max nu dt / h_j^2 <= time.fourier (flow/run_diagnostics.hpp, the
   // same h_j): the first step's dt when a Newtonian fluid starts at rest, an upper bound on
@@ -470,6 +472,18 @@ void check_step_count(const Scene& scene, const flow::DualMetrics& metrics) {
       "the mesh's smallest cube root of a dual volume) takes {:.3g} steps to time.end = {:g} s, "
       "more than {:g}",
       fourier, h, dt, steps, t.end, max_time_steps);
+  if (cap > 0)
+    throw scene.error(
+        "flow.power_law.shear_rate_min",
+        fmt::format("{:g} 1/s caps the power law (n = {:g} < 1) at K gamma_min^(n - 1) = {:g} Pa s "
+                    "(flow/viscosity_model.hpp, viscosity_cap), the viscosity of every node's "
+                    "viscous bound; / flow.density = {:g} kg/m3 gives nu = {:.3g} m2/s: {}",
+                    model.shear_rate_min, model.n, mu, rho, nu, bound),
+        fmt::format(">= {:.3g} 1/s (a cap <= time.fourier h^2 {:g} flow.density / time.end = "
+                    "{:.3g} Pa s), or set time.max_steps",
+                    std::pow(fourier * h * h * max_time_steps * rho / t.end / model.consistency,
+                             1 / (model.n - 1)),
+                    max_time_steps, fourier * h * h * max_time_steps * rho / t.end));
   if (!newtonian)
     throw scene.error(
         "flow.viscosity_model",

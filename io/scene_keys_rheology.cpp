@@ -17,7 +17,9 @@ void declare_rheology_keys(Schema& s) {
           "RK stage's velocity, in the full-stress viscous term (plus nu_sgs with [les]); the "
           "time step's Fourier bound uses each node's viscosity, [wall_shear] the nodal viscosity "
           "of the sampled velocity, the 1e9-step rule of flow.density the law's lowest viscosity "
-          "over all shear rates (none for a power law with n < 1), and flow.viscosity is not used "
+          "over all shear rates (a power law with n < 1: its cap, which its Fourier bound takes at "
+          "every "
+          "node), and flow.viscosity is not used "
           "(except by initial.womersley's profile); initial.type = taylor_green reports no error "
           "against the Newtonian vortex");
 
@@ -66,8 +68,11 @@ void declare_rheology_keys(Schema& s) {
       .above(0)
       .unit_of("1/s")
       .doc(
-          "Shear-rate floor gamma_min: the viscosity of n < 1 is bounded (it sets the time "
-          "step), that of n > 1 positive at rest");
+          "Shear-rate floor gamma_min: n > 1: the viscosity is positive at rest; n < 1: capped at "
+          "K gamma_min^(n-1) (Newtonian where gamma_dot < gamma_min; in a pipe driven by G: r < 2 "
+          "K gamma_min^n / G), the viscosity every node's Fourier bound takes, so dt <= "
+          "time.fourier h^2 rho / (K gamma_min^(n-1)) and the step count grows as "
+          "gamma_min^(n-1) (flow/viscosity_model.hpp, viscosity_cap)");
 }
 
 flow::ViscosityModel read_viscosity_model(const Scene& scene) {

@@ -119,6 +119,23 @@ TEST_CASE("lowest_viscosity: the infimum over all shear rates (the 1e9-step rule
   CHECK(flow::lowest_viscosity(newtonian) == 0.0035);
 }
 
+TEST_CASE("viscosity_cap: the largest viscosity of a shear-thinning power law, 0 for the rest") {
+  flow::ViscosityModel pl;
+  pl.law = ViscosityLaw::power_law;
+  pl.consistency = 0.035, pl.n = 0.5, pl.shear_rate_min = 0.5;
+  const double cap = flow::viscosity_cap(pl);
+  CHECK(cap == doctest::Approx(0.035 / std::sqrt(0.5)).epsilon(1e-15));
+  CHECK(flow::apparent_viscosity(pl, 0.0) == cap);  // reached at rest and below the floor
+  CHECK(flow::apparent_viscosity(pl, 0.25) == cap);
+  for (double g = 1e-9; g < 1e9; g *= 10) CHECK(flow::apparent_viscosity(pl, g) <= cap);
+  auto thickening = pl;
+  thickening.n = 1.5;
+  flow::ViscosityModel newtonian;
+  newtonian.mu = 0.0035;
+  for (const auto& m : {thickening, cho_kensey(), casson(1000.0), newtonian})
+    CHECK(flow::viscosity_cap(m) == 0.0);  // their nodal viscosity sets the time step
+}
+
 TEST_CASE("Casson (Papanastasiou): Casson's flow curve where the fluid flows, finite at rest") {
   const auto m = casson(1000.0);
   for (double g : {0.1, 1.0, 10.0, 300.0}) {  // m g >= 100: exp(-m g) <= 4e-44

@@ -63,6 +63,12 @@ double power_law_pipe_velocity(double consistency, double n, double pressure_gra
          (std::pow(radius, e) - std::pow(r, e));
 }
 
+double power_law_pipe_flow_rate(double consistency, double n, double pressure_gradient,
+                                double radius) {
+  return std::numbers::pi * n / (3 * n + 1) *
+         std::pow(pressure_gradient / (2 * consistency), 1 / n) * std::pow(radius, 3 + 1 / n);
+}
+
 double casson_pipe_velocity(double yield_stress, double plastic_viscosity, double pressure_gradient,
                             double radius, double r) {
   const double G = pressure_gradient, R = radius;

@@ -29,6 +29,9 @@ RadialProfile steady_pipe_profile(const flow::ViscosityModel& model, double pres
 // r^(1+1/n)) (Bird, Stewart & Lightfoot, Transport Phenomena, 2nd ed., problem 2B.6 / ex. 8.3-1).
 double power_law_pipe_velocity(double consistency, double n, double pressure_gradient,
                                double radius, double r);
+// Its flow rate 2 pi int u r dr = pi n / (3n+1) (G/(2K))^(1/n) R^(3+1/n).
+double power_law_pipe_flow_rate(double consistency, double n, double pressure_gradient,
+                                double radius);
 
 // Ideal Casson fluid (unregularised): plug of radius r_p = 2 tau_y / G moving at u(r_p); outside
 // it u(r) = [G/4 (R^2 - r^2) - 4/3 sqrt(tau_y G / 2) (R^1.5 - r^1.5) + tau_y (R - r)] / mu_p
