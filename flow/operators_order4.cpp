@@ -24,14 +24,12 @@ Order4Operators::Order4Operators(const LocalMesh& mesh, std::vector<double> lapl
 }
 
 void Order4Operators::gradient(const ScalarField& phi, VectorField& grad) {
-  const int n = mesh_.num_local();
-  // Old (non-adjoint) Hermite gradient: kept at nodes with boundary faces, where the adjoint of
-  // the divergence (which carries u_j . A_j) is not a consistent gradient.
   local_gradient(mesh_, phi, grad_s_);
-  grad.assign(n, Eigen::Vector3d::Zero());
+  grad.assign(mesh_.num_local(), Eigen::Vector3d::Zero());
   for (int e = 0; e < mesh_.num_owned_edges; ++e) {
     const auto [j, k] = mesh_.edges[e];
     const Eigen::Vector3d& s = mesh_.edge_normal[e];
+    // phi~ - phi_j at j and phi~ - phi_k at k (the latter with S_kj = -S_jk).
     const double half = 0.5 * (phi[k] - phi[j]);
     const double hermite = (grad_s_[j] - grad_s_[k]).dot(mesh_.edge_vector[e]) / 6.0;
     grad[j] += (half + hermite) * s;
@@ -39,33 +37,6 @@ void Order4Operators::gradient(const ScalarField& phi, VectorField& grad) {
   }
   for (int i = 0; i < mesh_.num_owned; ++i)
     grad[i] = mesh_.gradient_correction[i] * grad[i] / mesh_.volume[i];
-  // Adjoint form -V^-1 Div4^T V p elsewhere: <u, G p>_V = -<Div4 u, p>_V.
-  // Div4's Hermite term pairs with p as sum_i Gu_i : T_i, T_i = sum_e sigma (-(p_k - p_j)/6)
-  // S_e d_e^T (sigma = +1 at j, -1 at k); with Gu_i = (1/V_i) sum_e (u_k - u_j)/2 (M_i S_e)^T
-  // that is sum_e (u_k - u_j)/2 . (b_j + b_k) S_e, b_i = T_i M_i / V_i.
-  tensor_.assign(n, Eigen::Matrix3d::Zero());
-  for (std::size_t e = 0; e < mesh_.edges.size(); ++e) {
-    const auto [j, k] = mesh_.edges[e];
-    const Eigen::Matrix3d t =
-        (-(phi[k] - phi[j]) / 6.0) * mesh_.edge_normal[e] * mesh_.edge_vector[e].transpose();
-    tensor_[j] += t;
-    tensor_[k] -= t;
-  }
-  for (int i = 0; i < n; ++i)
-    tensor_[i] = tensor_[i] * mesh_.gradient_correction[i] / mesh_.volume[i];
-  adjoint_.assign(n, Eigen::Vector3d::Zero());
-  for (int e = 0; e < mesh_.num_owned_edges; ++e) {
-    const auto [j, k] = mesh_.edges[e];
-    const Eigen::Vector3d& s = mesh_.edge_normal[e];
-    const Eigen::Vector3d wide = 0.5 * (phi[k] - phi[j]) * s;
-    const Eigen::Vector3d c = 0.5 * (tensor_[j] + tensor_[k]) * s;
-    adjoint_[j] += wide + c;
-    adjoint_[k] += wide - c;
-  }
-  boundary_node_.assign(n, 0);
-  for (const auto& b : mesh_.boundary) boundary_node_[b.node] = 1;
-  for (int i = 0; i < mesh_.num_owned; ++i)
-    if (!boundary_node_[i]) grad[i] = adjoint_[i] / mesh_.volume[i];
   const_cast<Halo&>(mesh_.halo).exchange(grad, HaloMode::insert);
 }
 

@@ -14,16 +14,6 @@
 //     sum_faces u_j . A_j]
 //   are the point derivatives to O(h^4); G's own O(h^2) error is smooth and enters only as the
 //   difference G_j - G_k, i.e. as O(h^4). Only G at owned and layer-1 ghost nodes is needed.
-//   gradient() is not Grad4 but the adjoint of Div4, -V^-1 Div4^T V (so <u, grad p>_V =
-//   -<Div4 u, p>_V, the condition of Trias et al., J. Comput. Phys. 258, 246, 2014, under which
-//   the pressure coupling of a collocated projection cannot create kinetic energy):
-//     V_j grad_j = sum_k [(phi_k - phi_j)/2 S_jk + (b_j + b_k) S_jk / 2],
-//     b_j = (1/V_j) [sum_k -(phi_k - phi_j)/6 S_jk d_jk^T] M_j,
-//   the transpose of Div4's Hermite term (built from M_i and the 2nd-order gradient). On
-//   symmetric stars the adjoint of a centred operator has its order (its symbol is the
-//   conjugate), so it is 4th order there too (tests/flow/test_operators_order4.cpp). At nodes
-//   with boundary faces Grad4 is kept: there the adjoint (which would pair with u_j . A_j) is no
-//   gradient, and those nodes carry imposed velocities.
 //
 // Laplacian (viscous term nu lap v, constant nu): compact edge weights w_jk (the Poisson
 //   matrix's: two-point on hexahedra, P1 stiffness on tetrahedra, both consistent on these
@@ -64,9 +54,6 @@ class Order4Operators {
   const LocalMesh& mesh_;
   std::vector<double> weights_;
   VectorField grad_s_;                                   // scalar gradient
-  TensorField tensor_;                                   // b_i of the adjoint gradient
-  VectorField adjoint_;                                  // V_i times the adjoint gradient
-  std::vector<char> boundary_node_;                      // node has boundary faces
   TensorField grad_v_;                                   // vector gradient
   std::vector<std::array<Eigen::Matrix3d, 3>> hessian_;  // per velocity component
 };
