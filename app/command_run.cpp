@@ -40,6 +40,12 @@ int run_scene(const std::filesystem::path& scene_file, const std::vector<std::st
       "({:.4g}, {:.4g}, {:.4g}) m, t = {:.6g} s), max Poisson iterations {}\n",
       summary.steps, summary.time, summary.max_divergence, summary.max_divergence_number, at.x(),
       at.y(), at.z(), summary.max_divergence_time, summary.max_poisson_iterations);
+  const auto& free_at = summary.max_free_divergence_position;
+  fmt::print(
+      "without wall and inflow nodes: |div v| h / max|v| {:.3e} at ({:.4g}, {:.4g}, {:.4g}) m, "
+      "t = {:.6g} s\n",
+      summary.max_free_divergence_number, free_at.x(), free_at.y(), free_at.z(),
+      summary.max_free_divergence_time);
   if (summary.steady)
     fmt::print("steady state: max |u^(n+1) - u^n| / dt {:.3e} m/s2 below time.steady_tolerance\n",
                summary.change_rate);

@@ -342,6 +342,12 @@ std::vector<char> BoundaryConditions::pressure_dirichlet() const {
   return fixed;
 }
 
+void BoundaryConditions::velocity_dirichlet(std::vector<char>& held) const {
+  held.assign(mesh_.num_local(), 0);
+  for (std::size_t k = 0; k < nodes_.size(); ++k)
+    held[nodes_[k]] = role_[k] == Role::fixed || role_[k] == Role::inflow;
+}
+
 void BoundaryConditions::impose_pressure(ScalarField& p) const {
   for (const auto& b : mesh_.boundary) {
     const auto& P = patches_[b.patch];

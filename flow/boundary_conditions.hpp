@@ -126,6 +126,9 @@ class BoundaryConditions {
   // Per local node: 1 where the pressure is fixed (pressure and lumped outlets).
   std::vector<char> pressure_dirichlet() const;
   bool has_pressure_outlet() const { return has_pressure_; }
+  // Per local node (`held` resized): 1 where impose() sets the whole velocity (wall and inflow
+  // nodes at the time of the last impose()): nodes the projection does not correct.
+  void velocity_dirichlet(std::vector<char>& held) const;
   // p = p_out at the pressure-outlet nodes, the held value at lumped-outlet nodes (owned and
   // ghosts).
   void impose_pressure(ScalarField& p) const;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "flow/face_flux.hpp"
@@ -303,29 +304,44 @@ StepReport ProjectionRK4::step(FlowState& state, double dt) {
   flux_velocity_ = state.velocity;
   projection_divergence(state.velocity, div_);
   double worst = 0, speed = 0;
-  struct {
-    double value;
-    int rank;
-  } worst_h{0.0, mesh_.comm.rank()};
-  int worst_node = -1;
   for (int i = 0; i < mesh_.num_owned; ++i) {
     worst = std::max(worst, std::abs(div_[i]));
-    if (const double w = std::abs(div_[i]) * std::cbrt(mesh_.volume[i]); w > worst_h.value)
-      worst_h.value = w, worst_node = i;
     speed = std::max(speed, state.velocity[i].norm());
   }
   report.max_divergence = mesh_.comm.max(worst);
   const double max_speed = mesh_.comm.max(speed);
-  // Where the divergence number peaks: the rank holding the maximum (the lowest on a tie) sends
-  // its node's position, so that a run can say where its projection is worst.
-  VALSALVA_MPI(
-      MPI_Allreduce(MPI_IN_PLACE, &worst_h, 1, MPI_DOUBLE_INT, MPI_MAXLOC, mesh_.comm.get()));
-  if (worst_h.rank == mesh_.comm.rank() && worst_node >= 0)
-    report.divergence_position = mesh_.position[worst_node];
-  VALSALVA_MPI(
-      MPI_Bcast(report.divergence_position.data(), 3, MPI_DOUBLE, worst_h.rank, mesh_.comm.get()));
-  report.divergence_number = max_speed > 0 ? worst_h.value / max_speed : 0.0;
+  std::tie(report.divergence_number, report.divergence_position) = divergence_peak({}, max_speed);
+  if (bc) {
+    bc->velocity_dirichlet(velocity_held_);
+    std::tie(report.free_divergence_number, report.free_divergence_position) =
+        divergence_peak(velocity_held_, max_speed);
+  } else {
+    report.free_divergence_number = report.divergence_number;
+    report.free_divergence_position = report.divergence_position;
+  }
   return report;
+}
+
+std::pair<double, Eigen::Vector3d> ProjectionRK4::divergence_peak(const std::vector<char>& skip,
+                                                                  double max_speed) const {
+  struct {
+    double value;
+    int rank;
+  } worst{0.0, mesh_.comm.rank()};
+  int worst_node = -1;
+  for (int i = 0; i < mesh_.num_owned; ++i) {
+    if (!skip.empty() && skip[i]) continue;
+    if (const double w = std::abs(div_[i]) * std::cbrt(mesh_.volume[i]); w > worst.value)
+      worst.value = w, worst_node = i;
+  }
+  // The rank holding the maximum (the lowest on a tie) sends its node's position, so that a run
+  // can say where its projection is worst.
+  VALSALVA_MPI(
+      MPI_Allreduce(MPI_IN_PLACE, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, mesh_.comm.get()));
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  if (worst.rank == mesh_.comm.rank() && worst_node >= 0) position = mesh_.position[worst_node];
+  VALSALVA_MPI(MPI_Bcast(position.data(), 3, MPI_DOUBLE, worst.rank, mesh_.comm.get()));
+  return {max_speed > 0 ? worst.value / max_speed : 0.0, position};
 }
 
 void ProjectionRK4::total_viscosity() {

@@ -118,6 +118,10 @@ struct StepReport {
   // with graded cells (0 when the flow is at rest).
   double divergence_number = 0;
   Eigen::Vector3d divergence_position = Eigen::Vector3d::Zero();  // m: the node of that maximum
+  // The same over the nodes whose velocity the projection corrects, i.e. without the wall and
+  // inflow nodes whose velocity impose() sets (equal to the above without boundary conditions).
+  double free_divergence_number = 0;
+  Eigen::Vector3d free_divergence_position = Eigen::Vector3d::Zero();
 };
 
 // Body-force density f [N/m^3] at owned and ghost nodes (overwritten), evaluated once per RK
@@ -223,6 +227,11 @@ class ProjectionRK4 {
   // project_stages: projects stage velocity w (standing at t = t^n + c dt) and leaves its
   // convective face flux in stage_flux_; returns the Poisson iterations.
   int project_stage(VectorField& w, double c, double dt, double t, const ScalarField& p);
+  // max |div_[i]| h_i over owned nodes with skip[i] == 0 (skip empty: all), divided by
+  // max_speed, and where it is (collective; the lowest rank on a tie).
+  std::pair<double, Eigen::Vector3d> divergence_peak(const std::vector<char>& skip,
+                                                     double max_speed) const;
+  std::vector<char> velocity_held_;  // BoundaryConditions::velocity_dirichlet() of the step
   RungeKuttaTableau rk_;
   EdgeField flux_, stage_flux_, flux_offset_;
   VectorField flux_velocity_;  // the velocity flux_ belongs to (empty: none)

@@ -145,6 +145,10 @@ struct RunSummary {
   double max_divergence_number = 0;  // StepReport::divergence_number, max over all steps
   Eigen::Vector3d max_divergence_position = Eigen::Vector3d::Zero();  // m: where it was
   double max_divergence_time = 0;                                     // s: when
+  // StepReport::free_divergence_number (without wall and inflow nodes), max over all steps.
+  double max_free_divergence_number = 0;
+  Eigen::Vector3d max_free_divergence_position = Eigen::Vector3d::Zero();
+  double max_free_divergence_time = 0;
   int max_poisson_iterations = 0;
   double max_mass_imbalance = 0;  // max over steps of |sum of all boundary fluxes|, m^3/s
   std::optional<TaylorGreenError> taylor_green;
