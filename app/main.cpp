@@ -10,6 +10,7 @@
 #include "app/command_close_leaflets.hpp"
 #include "app/command_compare_piv.hpp"
 #include "app/command_make_valve.hpp"
+#include "app/command_plot_valve.hpp"
 #include "app/command_psd.hpp"
 #include "app/commands.hpp"
 #include "io/allocation_limit.hpp"
@@ -76,6 +77,8 @@ int main(int argc, char** argv) {
   auto* piv = valsalva::app::add_compare_piv(cli, compare_piv);
   std::function<int()> psd;
   auto* psd_cmd = valsalva::app::add_psd(cli, psd);
+  std::function<int()> plot_valve;
+  auto* plot_valve_cmd = valsalva::app::add_plot_valve(cli, plot_valve);
   std::function<int()> close_leaflets;
   auto* close_cmd = valsalva::app::add_close_leaflets(cli, close_leaflets);
   std::function<int()> make_valve;
@@ -101,6 +104,7 @@ int main(int argc, char** argv) {
     if (*docs_val) code = valsalva::app::docs_validation();
     if (*piv) code = compare_piv();
     if (*psd_cmd) code = psd();
+    if (*plot_valve_cmd) code = plot_valve();
     if (*close_cmd) code = close_leaflets();
     if (*make_valve_cmd) code = make_valve();
   } catch (const std::bad_alloc&) {
