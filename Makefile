@@ -7,7 +7,7 @@ SANITIZE ?= 1
 SANITIZE_BUDGET ?= 2400
 CCACHE := $(shell command -v ccache 2>/dev/null)
 
-.PHONY: run test deps configure build validate asan sanitize clean valve-quick
+.PHONY: run test deps configure build validate asan sanitize clean valve-quick valve-m1
 
 deps:
 	scripts/install-deps
@@ -44,6 +44,12 @@ sanitize: deps
 valve-quick: build
 	scripts/make-valve-quick $(BUILD_DIR)/bin/valsalva runs/valve_quick
 	$(BUILD_DIR)/bin/valsalva run scenes/valve_quick.toml --overwrite
+
+# The valve at M1 near the valve: its meshes (once, about 10 minutes) and the run
+# (scenes/valve_m1.toml; about 4 hours of one core per cycle).
+valve-m1: build
+	scripts/make-valve-m1 $(BUILD_DIR)/bin/valsalva runs/valve_m1
+	$(BUILD_DIR)/bin/valsalva run scenes/valve_m1.toml --overwrite
 
 asan: deps
 	cmake --preset asan && cmake --build --preset asan -j$(JOBS) && ctest --preset asan -L quick

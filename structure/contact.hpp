@@ -73,8 +73,7 @@ struct ContactOptions {
   // are held about c apart instead of touching (a contact thickness offset). An immersed
   // boundary cannot separate two surfaces that lie within one fluid cell of each other (both
   // interpolate the same fluid velocity), so coapting leaflets are kept a fluid cell apart
-  // (Borazjani, CMAME 257 (2013) 103: contact acts below a threshold distance of the order of the
-  // grid spacing). Rigid obstacles ignore it.
+  // (docs/valve.md, "Reopening"). Rigid obstacles ignore it.
   double clearance = 0;
   // Gauss points per direction on each slave face; 0: order + 2 (as pressure loads).
   int quadrature = 0;
