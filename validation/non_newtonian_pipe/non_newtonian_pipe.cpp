@@ -122,8 +122,9 @@ void run_level(const Context& ctx, Level& level, const Reference& reference) {
           io::read_numeric_table(wss, io::TableHeader::required).column("wall_mean_wss").back() /
               (G * kRadius / 2) -
           1;
-    // The profile for the plot: the nodes of rank 0 with the reference.
-    std::ofstream csv(dir / "profile.csv");
+    // The profile for the plot: the nodes of rank 0 with the reference. Beside the run
+    // directory, not in it: `run --overwrite` refuses a directory holding files it did not write.
+    std::ofstream csv(ctx.out_dir / fmt::format("profile_{}_{}.csv", level.fluid, level.n));
     csv << "r,u,u_reference\n";
     for (std::size_t k = 0; k < radius.size(); ++k)
       csv << fmt::format("{:.9e},{:.9e},{:.9e}\n", radius[k], velocity[k], u_ref(radius[k]));

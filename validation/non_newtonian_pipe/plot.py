@@ -21,7 +21,7 @@ for ax, fluid, title in zip(axes, fluids, titles):
         ax.set_axis_off()
         continue
     finest = max(runs, key=lambda lv: int(lv["n"]))
-    rows = list(csv.DictReader(open(out / "runs" / f"{fluid}_{finest['n']}" / "profile.csv")))
+    rows = list(csv.DictReader(open(out / f"profile_{fluid}_{finest['n']}.csv")))
     rows.sort(key=lambda r: float(r["r"]))
     r = [float(x["r"]) * 1e3 for x in rows]
     ax.plot(r, [float(x["u_reference"]) for x in rows], "k-", lw=2, label="reference")
