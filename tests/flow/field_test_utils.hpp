@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "flow/local_mesh.hpp"
 #include "flow/operators.hpp"
 #include "io/box_generator.hpp"
+#include "io/pipe_generator.hpp"
 
 namespace valsalva::test {
 
@@ -32,6 +34,23 @@ inline io::BoxSpec periodic_box(const std::string& type, int n, double perturbat
   spec.perturbation = perturbation;
   spec.periodic = {true, true, true};
   return spec;
+}
+
+// The meshes of the energy tests: uniform hexahedra, split and 20 % perturbed tetrahedra,
+// prisms (optional) and a Gmsh Delaunay bent pipe.
+struct NamedMesh {
+  std::string name;
+  flow::Mesh mesh;
+};
+inline std::vector<NamedMesh> energy_meshes(bool with_prisms) {
+  std::vector<NamedMesh> out;
+  out.push_back({"hexa", io::generate_box(periodic_box("hexa", 6))});
+  out.push_back({"split tetra", io::generate_box(periodic_box("tetra", 6))});
+  out.push_back({"perturbed tetra", io::generate_box(periodic_box("tetra", 6, 0.2))});
+  if (with_prisms) out.push_back({"prism", io::generate_box(periodic_box("prism", 6))});
+  out.push_back(
+      {"gmsh bent pipe", io::generate_bent_pipe_mesh(0.5, 1.5, std::numbers::pi / 2, 0.25)});
+  return out;
 }
 
 // The box `spec` distributed over `comm` with 2 ghost layers (the mesh is not kept).

@@ -115,26 +115,10 @@ Measure measure(const flow::Mesh& mesh, const std::string& scheme) {
   return r;
 }
 
-struct Case {
-  std::string name;
-  flow::Mesh mesh;
-};
-
-std::vector<Case> meshes() {
-  std::vector<Case> out;
-  out.push_back({"hexa", io::generate_box(test::periodic_box("hexa", 6))});
-  out.push_back({"split tetra", io::generate_box(test::periodic_box("tetra", 6))});
-  out.push_back({"perturbed tetra", io::generate_box(test::periodic_box("tetra", 6, 0.2))});
-  out.push_back({"prism", io::generate_box(test::periodic_box("prism", 6))});
-  out.push_back(
-      {"gmsh bent pipe", io::generate_bent_pipe_mesh(0.5, 1.5, std::numbers::pi / 2, 0.25)});
-  return out;
-}
-
 }  // namespace
 
 TEST_CASE("convective term conserves kinetic energy for projected random fields") {
-  for (const auto& c : meshes()) {
+  for (const auto& c : test::energy_meshes(true)) {
     for (const std::string scheme : {"central2", "central4"}) {
       const Measure r = measure(c.mesh, scheme);
       MESSAGE(c.name << " " << scheme << ": |sum V u.C| / (|u||C|) skew form " << r.skew

@@ -69,25 +69,10 @@ Fields random_fields(const flow::LocalMesh& local) {
   return f;
 }
 
-struct Case {
-  std::string name;
-  flow::Mesh mesh;
-};
-
-std::vector<Case> meshes() {
-  std::vector<Case> out;
-  out.push_back({"hexa", io::generate_box(test::periodic_box("hexa", 6))});
-  out.push_back({"split tetra", io::generate_box(test::periodic_box("tetra", 6))});
-  out.push_back({"perturbed tetra", io::generate_box(test::periodic_box("tetra", 6, 0.2))});
-  out.push_back(
-      {"gmsh bent pipe", io::generate_bent_pipe_mesh(0.5, 1.5, std::numbers::pi / 2, 0.25)});
-  return out;
-}
-
 }  // namespace
 
 TEST_CASE("the nodal pressure gradient is the adjoint of the projection's divergence") {
-  for (const auto& c : meshes()) {
+  for (const auto& c : test::energy_meshes(false)) {
     const auto metrics = flow::compute_dual_metrics(c.mesh);
     const auto local = flow::distribute(c.mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
     const auto f = random_fields(local);
@@ -111,7 +96,7 @@ TEST_CASE("the nodal pressure gradient is the adjoint of the projection's diverg
 }
 
 TEST_CASE("the approximate projection is a contraction: D G is bounded by the Poisson matrix") {
-  for (const auto& c : meshes()) {
+  for (const auto& c : test::energy_meshes(false)) {
     const auto metrics = flow::compute_dual_metrics(c.mesh);
     const auto local = flow::distribute(c.mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
     const auto weights = flow::poisson_weights(c.mesh, metrics, local);
