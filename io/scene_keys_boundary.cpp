@@ -103,10 +103,13 @@ void declare_inlet_pressure_keys(Schema& s, const std::string& b) {
     s.when(b + key, b + ".type", {"elastance_inlet"});
 }
 
-// A periodic table of `key` (io/waveform_table.hpp), its errors under that key.
+// A periodic table of `key` (io/waveform_table.hpp), or one that covers the run; its errors
+// under that key.
 flow::Waveform read_table(const Scene& scene, const std::string& key) {
   try {
-    return read_waveform_table(scene.path(key));
+    auto table = read_waveform_table(scene.path(key));
+    check_table_wrap(table, scene.get<double>("time.end"), scene.path(key).string());
+    return table;
   } catch (const TableError& e) {
     throw scene.error(key, e.what());
   }

@@ -110,7 +110,9 @@ Eigen::Vector3d finite_vector(const Scene& scene, const std::string& key) {
 
 flow::Waveform table(const Scene& scene) {
   try {
-    return read_waveform_table(scene.path("forcing.file"));
+    auto factor = read_waveform_table(scene.path("forcing.file"));
+    check_table_wrap(factor, scene.get<double>("time.end"), scene.path("forcing.file").string());
+    return factor;
   } catch (const std::exception& e) {
     throw scene.error("forcing.file", e.what());
   }

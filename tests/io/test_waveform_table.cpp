@@ -38,3 +38,19 @@ TEST_CASE("waveform table: header, separators, errors naming file, line and colu
   std::filesystem::remove(good);
   std::filesystem::remove(bad);
 }
+
+TEST_CASE("waveform table: a table that is not one period must cover the run") {
+  const auto ramp = flow::table_waveform({0.0, 0.1, 0.2}, {0.0, -5.0, -5.0});  // ramp, then hold
+  CHECK_NOTHROW(io::check_table_wrap(ramp, 0.2, "ramp.csv"));                  // never wraps
+  // Beyond t = 0.2 s the ramp would restart: -5 jumps back to 0.
+  CHECK_THROWS_WITH_AS(io::check_table_wrap(ramp, 0.3, "ramp.csv"),
+                       doctest::Contains("'ramp.csv' is not one period (its last value -5 at t = "
+                                         "0.2 s differs from its first, 0 at t = 0 s)"),
+                       io::TableError);
+  // A table starting after t = 0 wraps before its first row too.
+  const auto late = flow::table_waveform({0.05, 0.2}, {0.0, -5.0});
+  CHECK_THROWS_AS(io::check_table_wrap(late, 0.1, "late.csv"), io::TableError);
+  // One period (last value = first, to round-off) repeats without a jump, however long the run.
+  const auto period = flow::table_waveform({0.0, 0.5, 1.0}, {1e-4, 3e-4, 1e-4 * (1 + 1e-12)});
+  CHECK_NOTHROW(io::check_table_wrap(period, 24.0, "cycle.csv"));
+}
