@@ -436,7 +436,11 @@ RunSummary RunLoop::run() {
     }
     if (hooks_.after_step) hooks_.after_step(state_, step_);
     const bool stopping = hooks_.stop_requested && hooks_.stop_requested();
-    if (hooks_.checkpoint) hooks_.checkpoint(state_, step_, dt, stopping);
+    if (hooks_.checkpoint)
+      hooks_.checkpoint(state_, step_, dt,
+                        stopping   ? RunHooks::Moment::stopping
+                        : finished ? RunHooks::Moment::finished
+                                   : RunHooks::Moment::regular);
     if (stopping) {
       summary.stopped = true;
       break;

@@ -111,9 +111,12 @@ using FieldSink = std::function<void(const std::string& basename, double time, c
 struct RunHooks {
   // After each step, before the checkpoint hook: measurements (app/ plugs in io::RunAnalysis).
   std::function<void(const FlowState&, std::int64_t step)> after_step;
-  // After each step: the state, the step count, the step's dt and whether the run stops here on
-  // a stop request (the hook then must write; otherwise it decides, e.g. every N steps).
-  std::function<void(const FlowState&, std::int64_t step, double dt, bool stopping)> checkpoint;
+  // After each step: the state, the step count, the step's dt and why: a regular step (the hook
+  // decides, e.g. every N steps), a stop request (the hook must write) or the run's last step
+  // (time.end or time.max_steps reached: the hook writes when periodic checkpoints are on, so a
+  // finished run can be extended with --restart latest and a later time.end).
+  enum class Moment { regular, stopping, finished };
+  std::function<void(const FlowState&, std::int64_t step, double dt, Moment)> checkpoint;
   // True on every rank when the run should stop now (e.g. SIGTERM on any rank).
   std::function<bool()> stop_requested;
 };

@@ -332,7 +332,9 @@ void declare_flow_keys(Schema& s) {
       .unit_of("-")
       .doc(
           "Write a checkpoint (<run dir>/checkpoints, for `valsalva run --restart`) every this "
-          "many time steps; 0 = not by step count");
+          "many time steps; 0 = not by step count. With this or checkpoint_every_minutes on, "
+          "the run's last step is checkpointed too (extend a finished run with --restart "
+          "latest and a later time.end)");
   s.real("output.checkpoint_every_minutes")
       .def(0.0)
       .at_least(0)

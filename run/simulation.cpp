@@ -111,7 +111,8 @@ struct Simulation::Parts {
   bool stop_requested = false;  // by the observer
 
   void write_fields(const std::string& stream, double time, const flow::FieldSet& set);
-  void write_checkpoint(const flow::FlowState& state, std::int64_t step, double dt, bool stopping);
+  void write_checkpoint(const flow::FlowState& state, std::int64_t step, double dt,
+                        flow::RunHooks::Moment moment);
   void print_summary(const io::Scene& scene, double rho, double viscosity) const;
 };
 
@@ -140,11 +141,14 @@ void Simulation::Parts::write_fields(const std::string& stream, double time,
 // Poisson warm start, the face flux, nu_sgs, the lumped outlets' states and the analysis
 // accumulators.
 void Simulation::Parts::write_checkpoint(const flow::FlowState& state, std::int64_t step, double dt,
-                                         bool stopping) {
+                                         flow::RunHooks::Moment moment) {
+  using Moment = flow::RunHooks::Moment;
   const auto every_steps =
       static_cast<std::int64_t>(scene.get<int>("output.checkpoint_every_steps"));
   const double every_seconds = 60 * scene.get<double>("output.checkpoint_every_minutes");
-  bool due = stopping || (every_steps > 0 && step % every_steps == 0);
+  const bool periodic = every_steps > 0 || every_seconds > 0;
+  bool due = moment == Moment::stopping || (moment == Moment::finished && periodic) ||
+             (every_steps > 0 && step % every_steps == 0);
   if (every_seconds > 0) {
     int late = seconds_since(last_write) >= every_seconds ? 1 : 0;
     MPI_Bcast(&late, 1, MPI_INT, 0, comm);
@@ -393,7 +397,9 @@ RunResult Simulation::run() {
   };
   if (p.writer)
     hooks.checkpoint = [&p](const flow::FlowState& state, std::int64_t step, double dt,
-                            bool stopping) { p.write_checkpoint(state, step, dt, stopping); };
+                            flow::RunHooks::Moment moment) {
+      p.write_checkpoint(state, step, dt, moment);
+    };
   hooks.stop_requested = [&p] {
     // Collective (StopSignal::requested reduces over the ranks); the observer's request is
     // made on every rank alike.

@@ -163,7 +163,13 @@ void run_case(const Context& ctx, Report& report) {
   for (const char* cells : {"hexa", "tetra"}) {
     if (ctx.quick && std::string(cells) == "tetra") continue;
     for (double r : resistances)
-      for (double c : capacitances) sweep.push_back({r, c, cells});
+      for (double c : capacitances) {
+        SweepPoint point;
+        point.distal_resistance = r;
+        point.capacitance = c;
+        point.cells = cells;
+        sweep.push_back(point);
+      }
   }
   for (auto& s : sweep) run_sweep_point(ctx, s);
   if (rank == 0) {
