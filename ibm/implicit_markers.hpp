@@ -23,6 +23,7 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <vector>
 
 #include "ibm/dirac_transfer.hpp"
 
@@ -34,13 +35,21 @@ struct ImplicitSolve {
   double residual = 0;  // |b - M dX| / |b|
 };
 
+// Applies the discrete pressure projection P to a nodal field v in place: v -= grad q with
+// lap q = div v (flow::ProjectionRK4::project); q (one value per local node) is the warm start
+// on entry and the potential on return. Collective.
+using Projector = std::function<void(std::vector<Eigen::Vector3d>&, std::vector<double>&)>;
+
 // Solves (I + c A K) dX = b (c = dt^2 / rho) by BiCGSTAB without a matrix: A through the
 // transfer's spread and interpolation at its located markers, K through `apply_stiffness`
 // (3 x markers, replicated). Collective; the result is identical on all ranks. Throws when the
-// solve does not reach `tolerance` in `max_iterations`.
+// solve does not reach `tolerance` in `max_iterations`. With `project` (non-null and set) A is
+// the projected response Interp P Spread (one projection per product); `guess` (3 x markers)
+// replaces the initial guess b.
 ImplicitSolve implicit_marker_displacement(
     DiracTransfer& transfer,
     const std::function<void(const Eigen::Matrix3Xd&, Eigen::Matrix3Xd&)>& apply_stiffness,
-    const Eigen::Matrix3Xd& b, double c, double tolerance = 1e-8, int max_iterations = 1000);
+    const Eigen::Matrix3Xd& b, double c, double tolerance = 1e-8, int max_iterations = 1000,
+    const Projector* project = nullptr, const Eigen::Matrix3Xd* guess = nullptr);
 
 }  // namespace valsalva::ibm

@@ -10,8 +10,11 @@
 // - 2 ranks give the markers of 1 rank to round-off.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
+#include <string>
 
 #include "ib_box.hpp"
 
@@ -108,4 +111,65 @@ TEST_CASE("the implicit coupling gives the same markers on 1 and 2 ranks") {
   const double dt = 0.02;
   for (int n = 0; n < 10; ++n) box.step(dt);
   CHECK(test::marker_difference_to_serial(spec, box, 10, dt) < 1e-10);
+}
+
+namespace {
+
+struct Outcome {
+  bool stable = false;
+  int steps = 0;  // steps made before a failure (all of them when stable)
+  double last_speed = 0, peak_speed = 0, min_det = 0;
+  int iterations = 0;
+  std::string failure;  // the exception that ended the run
+};
+
+// The block at dt = multiple x the per-stage bound for the physical time of 160 steps at 2.5x
+// (at least 100 steps): stable when it makes every step with the marker speed decayed below half
+// its peak and no element compressed below det F = 0.5.
+Outcome run_at(ibm::ImplicitVariant variant, double multiple) {
+  test::IbBox probe(block(ibm::CouplingMode::per_stage));
+  const double dt = multiple * probe.ib->stable_time_step();
+  auto spec = block(ibm::CouplingMode::implicit);
+  spec.implicit_variant = variant;
+  if (const char* st = std::getenv("IMPLICIT_STRETCH")) spec.stretch = std::atof(st);
+  Outcome out;
+  const int steps = std::max(100, static_cast<int>(std::lround(400 / multiple)));
+  try {
+    test::IbBox box(spec);
+    out.min_det = 1e300;
+    for (int n = 0; n < steps; ++n) {
+      box.step(dt);
+      const double speed = box.ib->velocities().cwiseAbs().maxCoeff();
+      if (!std::isfinite(speed)) return out;
+      out.peak_speed = std::max(out.peak_speed, speed);
+      out.last_speed = speed;
+      out.min_det = std::min(out.min_det, box.ib->last_min_det());
+      out.iterations = std::max(out.iterations, box.ib->last_implicit_iterations());
+      out.steps = n + 1;
+    }
+  } catch (const std::runtime_error& e) {
+    out.failure = e.what();
+    return out;
+  }
+  out.stable = out.last_speed < 0.5 * out.peak_speed && out.min_det > 0.5;
+  return out;
+}
+
+}  // namespace
+
+// The table of the stability limits (not run by default: minutes):
+//   build/bin/test_implicit_coupling -tc='*limit table*' -ns
+TEST_CASE("limit table of the implicit variants" * doctest::skip()) {
+  const char* only = std::getenv("IMPLICIT_VARIANT");
+  for (auto variant : {ibm::ImplicitVariant::lagged, ibm::ImplicitVariant::consistent,
+                       ibm::ImplicitVariant::backward_euler})
+    for (double m : {0.5, 1.0, 2.0, 3.0, 3.5, 4.0, 5.0, 6.0, 8.0, 12.0, 16.0}) {
+      if (only && std::string(only) != ibm::implicit_variant_name(variant)) continue;
+      const auto o = run_at(variant, m);
+      MESSAGE(std::string(ibm::implicit_variant_name(variant))
+              << " " << m << "x: " << std::string(o.stable ? "stable" : "UNSTABLE") << " steps "
+              << o.steps << " last/peak speed " << o.last_speed << "/" << o.peak_speed
+              << " min det " << o.min_det << " max iterations " << o.iterations << " "
+              << o.failure.substr(0, 60));
+    }
 }
