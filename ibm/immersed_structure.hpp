@@ -51,9 +51,12 @@ enum class CouplingMode { per_stage, per_step, implicit };
 //                                                        the flow felt; the fluid keeps its lag)
 //   backward_euler: (I + c A_P K) dX = dt U* + c A_P K dX^{n-1}, A_P = Interp P Spread (one
 //                   pressure projection per product), then the fluid velocity is corrected by
-//                   (dt/rho) P Spread(-K (dX - dX^{n-1})): the linearised backward-Euler step of
-//                   Newren, Fogelson, Guy & Kirby (2007), markers moving with the corrected fluid.
-// c = dt^2/rho, A = Interp Spread at X^n.
+//                   (dt/rho) P Spread(-K (dX - dX^{n-1})) and the pressure by that projection's
+//                   potential (rho/dt q): the linearised backward-Euler step of Newren, Fogelson,
+//                   Guy & Kirby (2007), markers moving with the corrected fluid.
+// c = dt^2/rho, A = Interp Spread at X^n. Measured limits and why lagged stays the default:
+// ibm/implicit_markers.hpp. backward_euler is not a scene key yet: the run loop's finish_step
+// hands the coupling a const state and no projector (io/immersed_run.cpp).
 enum class ImplicitVariant { lagged, consistent, backward_euler };
 
 inline const char* implicit_variant_name(ImplicitVariant v) {

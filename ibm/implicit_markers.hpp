@@ -12,12 +12,22 @@
 // response this would be the backward-Euler force of Newren, Fogelson, Guy & Kirby,
 // "Unconditionally stable discretizations of the immersed boundary equations", J. Comput. Phys.
 // 222 (2007) 702; the unprojected Schur complement is the approximation Ceniceros, Fisher & Roma,
-// J. Comput. Phys. 228 (2009) 7137, use to precondition theirs. Mode by mode (a projection that
-// scales the response by 0..1) the scheme is stable for every dt, but the projection couples the
-// modes, and the scheme is NOT unconditionally stable: on the stretched block of
-// tests/ibm/test_implicit_coupling its limit lies between 3 and 4 times the explicit per-stage
-// bound. Markers move by dX, not by dt times the final interpolated velocity: the slip is
-// (modelled - projected response) times the stiff part of the motion. In a steady state U* = 0
+// J. Comput. Phys. 228 (2009) 7137, use to precondition theirs. This is ImplicitVariant::lagged
+// (ibm/immersed_structure.hpp), the default. Its limit on the stretched block of
+// tests/ibm/test_implicit_coupling lies between 3.5 and 4 times the explicit per-stage bound;
+// with a 1.01 stretch (the linear regime) it runs at 16x: the limit at the 1.2 stretch is the
+// linearisation of the force at X^n (K of the stretched block, one step's displacement), not
+// the coupling. ImplicitVariant::backward_euler (the projected A_P = Interp P Spread and the
+// fluid's velocity and pressure corrected to the force F(X^n) - K dX; a pressure projection
+// per product) has the same limits there (3.5x / 16x+) for several times the cost.
+// ImplicitVariant::consistent (rhs dt U* + c A K dX^{n-1}, the unprojected solve, the fluid
+// uncorrected) is unstable from 2x even in the linear regime: the fluid keeps the response to
+// -K dX^{n-1} while the markers move as if it had felt -K dX, and the "double count" of the
+// lagged form is what damps that mismatch (a scalar model of one mode, with the fluid velocity
+// at the marker as a state, shows the same: lagged and backward_euler stable for every dt,
+// consistent growing once c A K > 1). Markers move by dX, not by dt times the final
+// interpolated velocity: the slip is (modelled - projected response) times the stiff part of
+// the motion (zero for backward_euler up to the solve tolerances). In a steady state U* = 0
 // and the markers do not move, so a loaded closed valve stays where its load puts it.
 #pragma once
 
