@@ -173,33 +173,26 @@ void ImmersedStructure::stage_force(int stage, double stage_time,
 }
 
 void ImmersedStructure::finish_step(flow::FlowState& state) {
-  if (options_.mode == CouplingMode::implicit &&
-      options_.implicit_variant == ImplicitVariant::backward_euler) {
-    const double dt = state.time - t_n_;
-    if (!(dt > 0))
-      throw std::logic_error(
-          "ibm::ImmersedStructure::finish_step: called without a flow step through the "
-          "body-force hook (time did not advance)");
-    interpolate(state.velocity);
-    implicit_finish(dt, &state);
-    return;
-  }
-  finish_step(static_cast<const flow::FlowState&>(state));
+  finish(state, &state);
 }
 
 void ImmersedStructure::finish_step(const flow::FlowState& state) {
+  finish(state, nullptr);
+}
+
+void ImmersedStructure::finish(const flow::FlowState& state, flow::FlowState* correctable) {
   const double dt = state.time - t_n_;
   if (!(dt > 0))
     throw std::logic_error(
         "ibm::ImmersedStructure::finish_step: called without a flow step through the body-force "
         "hook (time did not advance)");
   if (options_.mode == CouplingMode::implicit) {
-    if (options_.implicit_variant == ImplicitVariant::backward_euler)
+    if (options_.implicit_variant == ImplicitVariant::backward_euler && !correctable)
       throw std::logic_error(
           "ibm::ImmersedStructure::finish_step: implicit_variant backward_euler corrects the "
           "fluid velocity and needs the mutable flow state");
     interpolate(state.velocity);  // the transfer is still located at X^n
-    implicit_finish(dt, nullptr);
+    implicit_finish(dt, correctable);
     return;
   }
   if (options_.mode == CouplingMode::per_step) {

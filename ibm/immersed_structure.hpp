@@ -195,6 +195,8 @@ class ImmersedStructure {
   // markers (fixed nodes are Dirichlet: their rows and columns drop out).
   void assemble_stiffness(const Eigen::Matrix3Xd& x);
   void apply_coupled_stiffness(const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd& kv);
+  // finish_step; `correctable` (null from the const form) is the state backward_euler corrects.
+  void finish(const flow::FlowState& state, flow::FlowState* correctable);
   void implicit_finish(double dt, flow::FlowState* state);
   // out = Interp (P) Spread v on the coupled markers (P with `projected`). Collective.
   void coupled_response(const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd& out, bool projected);
