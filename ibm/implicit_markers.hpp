@@ -13,13 +13,15 @@
 // "Unconditionally stable discretizations of the immersed boundary equations", J. Comput. Phys.
 // 222 (2007) 702; the unprojected Schur complement is the approximation Ceniceros, Fisher & Roma,
 // J. Comput. Phys. 228 (2009) 7137, use to precondition theirs. This is ImplicitVariant::lagged
-// (ibm/immersed_structure.hpp), the default. Its limit on the stretched block of
-// tests/ibm/test_implicit_coupling lies between 3.5 and 4 times the explicit per-stage bound;
-// with a 1.01 stretch (the linear regime) it runs at 16x: the limit at the 1.2 stretch is the
-// linearisation of the force at X^n (K of the stretched block, one step's displacement), not
-// the coupling. ImplicitVariant::backward_euler (the projected A_P = Interp P Spread and the
-// fluid's velocity and pressure corrected to the force F(X^n) - K dX; a pressure projection
-// per product) has the same limits there (3.5x / 16x+) for several times the cost.
+// (ibm/immersed_structure.hpp), the default. On the block of tests/ibm/test_implicit_coupling
+// stretched by 1.2 it relaxes at 3.5 times the explicit per-stage bound, is marginal at 4x (the
+// speed still 0.3 of its peak after 100 steps) and fails within 3 steps from 5x; with a 1.01
+// stretch (the linear regime) it runs at every multiple up to 16x: the limit at the 1.2
+// stretch is the linearisation of the force at X^n (K of the stretched block over one step's
+// displacement), not the coupling. ImplicitVariant::backward_euler (the projected A_P = Interp
+// P Spread and the fluid's velocity and pressure corrected to the force F(X^n) - K dX; a
+// pressure projection per product) relaxes at 3.5x, inverts an element in 3 steps at 4x, and
+// runs up to 16x in the linear regime: no wider limit, for a projection per BiCGSTAB product.
 // ImplicitVariant::consistent (rhs dt U* + c A K dX^{n-1}, the unprojected solve, the fluid
 // uncorrected) is unstable from 2x even in the linear regime: the fluid keeps the response to
 // -K dX^{n-1} while the markers move as if it had felt -K dX, and the "double count" of the
