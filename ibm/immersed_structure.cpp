@@ -172,15 +172,27 @@ void ImmersedStructure::stage_force(int stage, double stage_time,
   }
 }
 
+void ImmersedStructure::finish_step(flow::FlowState& state) {
+  finish(state, &state);
+}
+
 void ImmersedStructure::finish_step(const flow::FlowState& state) {
+  finish(state, nullptr);
+}
+
+void ImmersedStructure::finish(const flow::FlowState& state, flow::FlowState* correctable) {
   const double dt = state.time - t_n_;
   if (!(dt > 0))
     throw std::logic_error(
         "ibm::ImmersedStructure::finish_step: called without a flow step through the body-force "
         "hook (time did not advance)");
   if (options_.mode == CouplingMode::implicit) {
+    if (options_.implicit_variant == ImplicitVariant::backward_euler && !correctable)
+      throw std::logic_error(
+          "ibm::ImmersedStructure::finish_step: implicit_variant backward_euler corrects the "
+          "fluid velocity and needs the mutable flow state");
     interpolate(state.velocity);  // the transfer is still located at X^n
-    implicit_finish(dt);
+    implicit_finish(dt, correctable);
     return;
   }
   if (options_.mode == CouplingMode::per_step) {
@@ -217,14 +229,70 @@ void ImmersedStructure::apply_coupled_stiffness(const Eigen::Matrix3Xd& v, Eigen
   gather(stiffness_out_, kv);
 }
 
-void ImmersedStructure::implicit_finish(double dt) {
-  // (I + dt^2/rho A K) dX = dt U(u^{n+1}, X^n) on the coupled markers, with A and K at X^n.
+void ImmersedStructure::coupled_response(const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd& out,
+                                         bool projected) {
+  Eigen::Matrix3Xd kv;
+  apply_coupled_stiffness(v, kv);
+  response_density_.resize(static_cast<std::size_t>(mesh_.num_local()));
+  transfer_.spread(as_points(kv), response_density_);
+  if (projected) {
+    response_potential_.resize(response_density_.size(), 0.0);
+    projector_(response_density_, response_potential_);
+  }
+  out.resize(3, v.cols());
+  transfer_.interpolate(std::span<Eigen::Vector3d>(response_density_), as_points(out));
+}
+
+void ImmersedStructure::implicit_finish(double dt, flow::FlowState* state) {
+  // (I + dt^2/rho A K) dX = dt U(u^{n+1}, X^n) [+ c A K dX^{n-1}] on the coupled markers, with A
+  // and K at X^n (ImplicitVariant).
   const auto apply = [this](const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd& kv) {
     apply_coupled_stiffness(v, kv);
   };
-  const auto solve = implicit_marker_displacement(transfer_, apply, dt * coupled_velocity_,
-                                                  dt * dt / options_.fluid_density);
+  const double c = dt * dt / options_.fluid_density;
+  const auto variant = options_.implicit_variant;
+  const bool projected = variant == ImplicitVariant::backward_euler;
+  if (projected && !projector_)
+    throw std::logic_error(
+        "ibm::ImmersedStructure: implicit_variant backward_euler without a projector "
+        "(set_projector)");
+  Eigen::Matrix3Xd b = dt * coupled_velocity_;
+  Eigen::Matrix3Xd previous;
+  if (variant != ImplicitVariant::lagged) {
+    gather(last_displacement_, previous);
+    Eigen::Matrix3Xd response;
+    coupled_response(previous, response, projected);
+    b += c * response;
+  }
+  ImplicitSolve solve;
+  if (projected) {
+    // The unprojected solve as the initial guess of the projected one (Ceniceros, Fisher & Roma
+    // 2009 precondition with it).
+    const auto guess = implicit_marker_displacement(transfer_, apply, b, c);
+    solve = implicit_marker_displacement(transfer_, apply, b, c, 1e-8, 1000, &projector_,
+                                         &guess.displacement);
+  } else {
+    solve = implicit_marker_displacement(transfer_, apply, b, c);
+  }
   implicit_iterations_ = solve.iterations;
+  if (projected) {
+    // The flow step felt -K dX^{n-1}; backward Euler has it feel -K dX: the velocity and the
+    // pressure get the flow's response to -K (dX - dX^{n-1}) held over the step, u += dt/rho P
+    // Spread(-K (dX - dX^{n-1})) and p += rho/dt q of that projection (the incremental pressure
+    // is part of the flow's state: without it the next steps feel the force change again).
+    Eigen::Matrix3Xd change = solve.displacement - previous, kv;
+    apply_coupled_stiffness(change, kv);
+    response_density_.resize(static_cast<std::size_t>(mesh_.num_local()));
+    transfer_.spread(as_points(kv), response_density_);
+    const double scale = dt / options_.fluid_density;
+    for (auto& f : response_density_) f *= -scale;
+    flow::ScalarField q(response_density_.size(), 0.0);
+    projector_(response_density_, q);
+    for (std::size_t i = 0; i < response_density_.size(); ++i) {
+      state->velocity[i] += response_density_[i];
+      state->pressure[i] += q[i] / scale;
+    }
+  }
   last_displacement_.setZero();
   for (std::size_t m = 0; m < coupled_.size(); ++m)
     last_displacement_.col(coupled_[m]) = solve.displacement.col(long(m));

@@ -38,10 +38,37 @@
 #include "flow/time_scheme.hpp"
 #include "ibm/dirac_transfer.hpp"
 #include "ibm/immersed_body.hpp"
+#include "ibm/implicit_markers.hpp"
 
 namespace valsalva::ibm {
 
 enum class CouplingMode { per_stage, per_step, implicit };
+
+// Mode implicit: what the marker solve of a step adds to the flow step (ibm/implicit_markers.hpp).
+//   lagged:         (I + c A K) dX = dt U*               (the fluid felt -K dX^{n-1}; the solve
+//                                                        adds -c A K dX on top of it)
+//   consistent:     (I + c A K) dX = dt U* + c A K dX^{n-1}  (only the correction beyond what
+//                                                        the flow felt; the fluid keeps its lag)
+//   backward_euler: (I + c A_P K) dX = dt U* + c A_P K dX^{n-1}, A_P = Interp P Spread (one
+//                   pressure projection per product), then the fluid velocity is corrected by
+//                   (dt/rho) P Spread(-K (dX - dX^{n-1})) and the pressure by that projection's
+//                   potential (rho/dt q): the linearised backward-Euler step of Newren, Fogelson,
+//                   Guy & Kirby (2007), markers moving with the corrected fluid.
+// c = dt^2/rho, A = Interp Spread at X^n. Measured limits and why lagged stays the default:
+// ibm/implicit_markers.hpp. backward_euler is not a scene key yet: the run loop's finish_step
+// hands the coupling a const state and no projector (io/immersed_run.cpp).
+enum class ImplicitVariant { lagged, consistent, backward_euler };
+
+inline const char* implicit_variant_name(ImplicitVariant v) {
+  switch (v) {
+    case ImplicitVariant::consistent:
+      return "consistent";
+    case ImplicitVariant::backward_euler:
+      return "backward_euler";
+    default:
+      return "lagged";
+  }
+}
 
 // The scene's name of a mode (immersed.coupling).
 inline const char* coupling_name(CouplingMode mode) {
@@ -78,6 +105,9 @@ struct ImmersedOptions {
   double fluid_density = 1.0;      // kg/m^3, for the stability bound
   std::optional<PeriodicBox> box;  // wrap markers across periodic directions
   double stability_safety = 1.0;   // dt is refused above safety * dt_max (ib_stability.hpp)
+  // Mode implicit: the marker solve (ImplicitVariant above); backward_euler needs set_projector
+  // and the mutable finish_step.
+  ImplicitVariant implicit_variant = ImplicitVariant::lagged;
 };
 
 class ImmersedStructure {
@@ -100,7 +130,12 @@ class ImmersedStructure {
   void stage_force(int stage, double stage_time, const flow::VectorField& stage_velocity,
                    flow::VectorField& force_density);
   // After ProjectionRK4::step: markers to X^{n+1} (state.time is t^{n+1}). Collective.
+  // ImplicitVariant::backward_euler corrects state.velocity and needs the second form.
   void finish_step(const flow::FlowState& state);
+  void finish_step(flow::FlowState& state);
+  // The flow's pressure projection of a nodal field in place (flow::ProjectionRK4::project),
+  // for ImplicitVariant::backward_euler.
+  void set_projector(Projector project) { projector_ = std::move(project); }
 
   // The force density the markers spread at their current positions (owned + ghosts,
   // overwritten), with the forces evaluated there: for output between steps (the next step
@@ -160,7 +195,11 @@ class ImmersedStructure {
   // markers (fixed nodes are Dirichlet: their rows and columns drop out).
   void assemble_stiffness(const Eigen::Matrix3Xd& x);
   void apply_coupled_stiffness(const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd& kv);
-  void implicit_finish(double dt);
+  // finish_step; `correctable` (null from the const form) is the state backward_euler corrects.
+  void finish(const flow::FlowState& state, flow::FlowState* correctable);
+  void implicit_finish(double dt, flow::FlowState* state);
+  // out = Interp (P) Spread v on the coupled markers (P with `projected`). Collective.
+  void coupled_response(const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd& out, bool projected);
 
   flow::LocalMesh& mesh_;
   ImmersedOptions options_;
@@ -180,6 +219,9 @@ class ImmersedStructure {
   Eigen::Matrix3Xd stiffness_in_, stiffness_out_;       // all markers, scratch
   Eigen::Matrix3Xd last_displacement_;                  // mode implicit: dX^{n-1}
   int implicit_iterations_ = 0;
+  Projector projector_;
+  flow::VectorField response_density_;
+  flow::ScalarField response_potential_;
 };
 
 }  // namespace valsalva::ibm

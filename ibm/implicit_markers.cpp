@@ -37,9 +37,10 @@ class ImplicitMarkerOperator : public Eigen::EigenBase<ImplicitMarkerOperator> {
   ImplicitMarkerOperator(
       DiracTransfer& transfer,
       const std::function<void(const Eigen::Matrix3Xd&, Eigen::Matrix3Xd&)>& apply_stiffness,
-      double c)
+      double c, const Projector* project)
       : transfer_(transfer),
         apply_stiffness_(apply_stiffness),
+        project_(project),
         c_(c),
         n_(transfer.num_markers()),
         v_(3, n_),
@@ -56,13 +57,17 @@ class ImplicitMarkerOperator : public Eigen::EigenBase<ImplicitMarkerOperator> {
     return Eigen::Product<ImplicitMarkerOperator, Rhs, Eigen::AliasFreeProduct>(*this, x.derived());
   }
 
-  // y = x + c A K x (flat vectors of 3 n). Collective.
+  // y = x + c A K x (flat vectors of 3 n), A = Interp (P) Spread. Collective.
   void apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
     v_ = Eigen::Map<const Eigen::Matrix3Xd>(x.data(), 3, n_);
     apply_stiffness_(v_, kv_);
     transfer_.spread(std::span<const Eigen::Vector3d>(
                          reinterpret_cast<const Eigen::Vector3d*>(kv_.data()), std::size_t(n_)),
                      density_);
+    if (project_ && *project_) {
+      potential_.resize(density_.size(), 0.0);
+      (*project_)(density_, potential_);
+    }
     transfer_.interpolate(std::span<Eigen::Vector3d>(density_),
                           std::span<Eigen::Vector3d>(reinterpret_cast<Eigen::Vector3d*>(av_.data()),
                                                      std::size_t(n_)));
@@ -72,10 +77,12 @@ class ImplicitMarkerOperator : public Eigen::EigenBase<ImplicitMarkerOperator> {
  private:
   DiracTransfer& transfer_;
   const std::function<void(const Eigen::Matrix3Xd&, Eigen::Matrix3Xd&)>& apply_stiffness_;
+  const Projector* project_;
   double c_;
   int n_;
   mutable Eigen::Matrix3Xd v_, kv_, av_;
   mutable std::vector<Eigen::Vector3d> density_;
+  mutable std::vector<double> potential_;  // warm start of the projections
 };
 
 }  // namespace valsalva::ibm
@@ -102,7 +109,8 @@ namespace valsalva::ibm {
 ImplicitSolve implicit_marker_displacement(
     DiracTransfer& transfer,
     const std::function<void(const Eigen::Matrix3Xd&, Eigen::Matrix3Xd&)>& apply_stiffness,
-    const Eigen::Matrix3Xd& b, double c, double tolerance, int max_iterations) {
+    const Eigen::Matrix3Xd& b, double c, double tolerance, int max_iterations,
+    const Projector* project, const Eigen::Matrix3Xd* guess) {
   const int n = transfer.num_markers();
   if (b.cols() != n)
     throw std::invalid_argument(fmt::format(
@@ -111,13 +119,15 @@ ImplicitSolve implicit_marker_displacement(
   out.displacement = Eigen::Matrix3Xd::Zero(3, n);
   const Eigen::Map<const Eigen::VectorXd> rhs(b.data(), 3 * n);
   if (n == 0 || rhs.norm() == 0) return out;
-  ImplicitMarkerOperator op(transfer, apply_stiffness, c);
+  ImplicitMarkerOperator op(transfer, apply_stiffness, c, project);
   Eigen::BiCGSTAB<ImplicitMarkerOperator, Eigen::IdentityPreconditioner> solver;
   solver.setTolerance(tolerance);
   solver.setMaxIterations(max_iterations);
   solver.compute(op);
   // The initial guess b (the explicit displacement): exact where A K vanishes.
-  const Eigen::VectorXd x = solver.solveWithGuess(rhs, rhs);
+  const Eigen::VectorXd x =
+      guess ? solver.solveWithGuess(rhs, Eigen::Map<const Eigen::VectorXd>(guess->data(), 3 * n))
+            : solver.solveWithGuess(rhs, rhs);
   out.iterations = static_cast<int>(solver.iterations());
   out.residual = solver.error();
   if (solver.info() != Eigen::Success || !x.allFinite())

@@ -25,6 +25,7 @@ struct IbBoxSpec {
   int elements = 3;      // Q2 elements per block side
   double stretch = 1.2;  // initial isochoric stretch along x
   ibm::CouplingMode mode = ibm::CouplingMode::per_stage;
+  ibm::ImplicitVariant implicit_variant = ibm::ImplicitVariant::lagged;
   flow::TimeScheme time_scheme = flow::TimeScheme::rk4_jameson;  // fluid and markers
   // The skew-symmetric convection conserves momentum up to the divergence the Poisson solve
   // leaves (flow/projection_rk4.hpp); tests of momentum at round-off tighten it.
@@ -92,11 +93,13 @@ struct IbBox {
     flow = std::make_unique<flow::ProjectionRK4>(local, fluid);
     ibm::ImmersedOptions options;
     options.mode = s.mode;
+    options.implicit_variant = s.implicit_variant;
     options.time_scheme = s.time_scheme;
     options.fluid_density = s.density;
     options.box = ibm::PeriodicBox{};
     options.box->periodic = {true, true, true};
     ib = std::make_unique<ibm::ImmersedStructure>(local, options);
+    ib->set_projector([this](flow::VectorField& v, flow::ScalarField& q) { flow->project(v, q); });
     ib->add_body(solid, *material, body);
     // Isochoric stretch about the box centre as the initial marker positions.
     const double stretch = s.contact_slabs ? 1.0 : s.stretch;
