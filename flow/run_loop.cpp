@@ -330,6 +330,11 @@ RunSummary RunLoop::run() {
     double remaining = t.end - state_.time;
     if (fields && !out.interval_in_steps && t.land_on_output)
       remaining = std::min(remaining, next_output - state_.time);
+    for (double stop : t.land_on)  // the first one ahead
+      if (stop - state_.time > eps) {
+        remaining = std::min(remaining, stop - state_.time);
+        break;
+      }
     dt = choose_dt(remaining);
     last_good_.velocity = state_.velocity;  // sizes match: no allocation
     last_good_.pressure = state_.pressure;
@@ -351,6 +356,7 @@ RunSummary RunLoop::run() {
       fail(bad.empty() ? std::string(e.what()) : bad + " (" + e.what() + ")");
     }
     ++step_;
+    if (hooks_.modify_velocity) hooks_.modify_velocity(state_, step_);
     if (auto bad =
             find_bad_state(local_, state_.velocity, state_.pressure, options_.velocity_limit);
         !bad.empty())

@@ -43,6 +43,9 @@ struct TimeOptions {
   // Shorten steps to land on every field output time; false = full steps only (fields at the
   // first step at or after each output time), so that output does not change the results.
   bool land_on_output = true;
+  // Times (s, ascending) the run lands on exactly, by shortening the step before each as for
+  // the end (e.g. the measuring stations of a validation case); empty = none.
+  std::vector<double> land_on;
   // > 0: stop once max over nodes and components of |u^{n+1} - u^n| / dt is below this (m/s^2):
   // a steady state; RunSummary::steady says whether it was reached before end or max_steps.
   double steady_tolerance = 0;
@@ -109,6 +112,11 @@ using FieldSink = std::function<void(const std::string& basename, double time, c
 // Checkpoint/restart hooks (app/ plugs in io::CheckpointWriter and io::StopSignal, so flow/ stays
 // independent of io/). Both are called on every rank after every step and must be collective.
 struct RunHooks {
+  // Right after each step, before the state checks and the other hooks: may change the velocity
+  // (e.g. a validation case's rescaling to a target spectrum during a spin-up). The solver's
+  // own arrays (pressure increment, face flux, nu_sgs) are left as the step made them.
+  // Collective; empty = none.
+  std::function<void(FlowState&, std::int64_t step)> modify_velocity;
   // After each step, before the checkpoint hook: measurements (app/ plugs in io::RunAnalysis).
   std::function<void(const FlowState&, std::int64_t step)> after_step;
   // After each step: the state, the step count, the step's dt and why: a regular step (the hook

@@ -147,6 +147,15 @@ void declare_flow_keys(Schema& s) {
           "Shorten a step to land on each field output time (output.interval in s); false = "
           "full steps only, the fields written at the first step at or after each output time, "
           "so that writing fields cannot change the results (e.g. a fixed-dt benchmark)");
+  s.real_list("time.land_on")
+      .def(std::vector<double>{})
+      .at_least(0)
+      .unit_of("s")
+      .doc(
+          "Times the run lands on exactly, in any order: the step before each is shortened as "
+          "the steps before time.end are (the last two share what remains when it is less than "
+          "two), e.g. the measuring stations of decaying turbulence (validation/cbc_decay); "
+          "times at or after time.end do nothing");
 
   s.section("poisson", "Pressure Poisson solver: hypre PCG preconditioned by BoomerAMG.");
   s.real("poisson.tolerance")
@@ -370,6 +379,8 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   o.projection.time_scheme = flow::parse_time_scheme(scene.get<std::string>("time.scheme"));
   o.projection.project_stages = scene.get<bool>("time.project_stages");
   o.time.land_on_output = scene.get<bool>("time.land_on_output");
+  o.time.land_on = scene.get<std::vector<double>>("time.land_on");
+  std::sort(o.time.land_on.begin(), o.time.land_on.end());
   o.time.stability_fraction = scene.get<double>("time.stability_fraction");
   o.time.steady_tolerance = scene.get<double>("time.steady_tolerance");
 

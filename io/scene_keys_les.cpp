@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <ctime>
 #include <stdexcept>
 
 #include "io/scene_keys.hpp"
@@ -58,7 +59,22 @@ struct LesSetup::Shared {
   flow::ScalarField ratio, resolved, fraction;
   flow::ScalarField pope;  // pope_sgs_fraction (from the mesh alone), empty when not asked
   const flow::LocalMesh* local = nullptr;
+  double cpu_seconds = 0;  // thread CPU time inside the model, all calls
 };
+
+namespace {
+// CPU time of the calling thread: on a shared machine the wall clock also counts the time the
+// process waits for a core.
+double thread_cpu() {
+  timespec c;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c);
+  return static_cast<double>(c.tv_sec) + 1e-9 * static_cast<double>(c.tv_nsec);
+}
+}  // namespace
+
+double LesSetup::cpu_seconds() const {
+  return shared ? shared->cpu_seconds : 0.0;
+}
 
 void LesSetup::add_fields(flow::FieldSet& set, double time, const flow::VectorField& velocity,
                           const std::vector<PhaseStatistics>& statistics) const {
@@ -142,7 +158,9 @@ LesSetup les_setup(const Scene& scene, const flow::LocalMesh& local) {
   }
   out.subgrid_viscosity = [sh = out.shared](int stage, const flow::TensorField& grad,
                                             flow::ScalarField& nu_sgs) {
+    const double t0 = thread_cpu();
     sh->model(stage, grad, nu_sgs);
+    sh->cpu_seconds += thread_cpu() - t0;
     sh->last = &nu_sgs;
   };
   return out;

@@ -30,6 +30,9 @@ struct LesSetup {
   // After a restart: `nu_sgs` (the solver's restored array, flow::RunLoop::subgrid_viscosity())
   // is the one the fields show until the first stage refills it.
   void resume(const flow::ScalarField& nu_sgs) const;
+  // Thread CPU time spent in the model so far, s (this rank; 0 for "none"): its share of a step
+  // (validation/bench les_cost).
+  double cpu_seconds() const;
 
   struct Shared;  // the model, the nu_sgs seen last and the output scratch
   std::shared_ptr<Shared> shared;

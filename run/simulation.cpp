@@ -108,6 +108,7 @@ struct Simulation::Parts {
   fs::path last_checkpoint;
   Clock::time_point t0 = Clock::now(), last_write = Clock::now();
   StepObserver observer;
+  VelocityModifier modifier;
   bool stop_requested = false;  // by the observer
 
   void write_fields(const std::string& stream, double time, const flow::FieldSet& set);
@@ -385,6 +386,10 @@ void Simulation::observe(StepObserver observer) {
   parts_->observer = std::move(observer);
 }
 
+void Simulation::modify_velocity(VelocityModifier modifier) {
+  parts_->modifier = std::move(modifier);
+}
+
 RunResult Simulation::run() {
   auto& p = *parts_;
   Phase phase("time stepping (fields, analysis and checkpoints written on the way)");
@@ -395,6 +400,10 @@ RunResult Simulation::run() {
     if (p.valve_monitor) p.valve_monitor->sample(state, step);
     if (p.observer) p.observer(*this, step);
   };
+  if (p.modifier)
+    hooks.modify_velocity = [this, &p](flow::FlowState& state, std::int64_t step) {
+      p.modifier(*this, state.velocity, step);
+    };
   if (p.writer)
     hooks.checkpoint = [&p](const flow::FlowState& state, std::int64_t step, double dt,
                             flow::RunHooks::Moment moment) {
@@ -451,6 +460,9 @@ const flow::FlowState& Simulation::state() const {
 }
 const io::RunAnalysis* Simulation::analysis() const {
   return parts_->analysis ? &*parts_->analysis : nullptr;
+}
+double Simulation::subgrid_cpu_seconds() const {
+  return parts_->les.cpu_seconds();
 }
 const std::filesystem::path& Simulation::run_path() const {
   return parts_->run_path;

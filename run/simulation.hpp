@@ -46,6 +46,11 @@ struct RunResult {
 class Simulation;
 // Called on every rank after every step, after the analysis sampled it (collective).
 using StepObserver = std::function<void(const Simulation&, std::int64_t step)>;
+// Called on every rank right after every step, before the checks, the analysis and the
+// observer: may change the velocity (all local nodes), e.g. a validation case's rescaling to a
+// target spectrum during a spin-up (validation/cbc_decay). Collective.
+using VelocityModifier =
+    std::function<void(const Simulation&, flow::VectorField& velocity, std::int64_t step)>;
 
 class Simulation {
  public:
@@ -63,6 +68,8 @@ class Simulation {
   void set_initial_velocity(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& u);
   // Something a validation case or benchmark measures on the way; nothing by default.
   void observe(StepObserver observer);
+  // Before run(): change the velocity after every step (nothing by default).
+  void modify_velocity(VelocityModifier modifier);
   // Runs to time.end (or time.max_steps, or a stop signal), writes the analysis results.
   // Throws flow::RunError as std::runtime_error with the scene key's location when it names one.
   RunResult run();
@@ -82,6 +89,8 @@ class Simulation {
   // What the scene measures ([wall_shear], [statistics], ...), null when it asks for nothing:
   // e.g. a validation case's observer reading the wall shear stress of the step.
   const io::RunAnalysis* analysis() const;
+  // Thread CPU time this rank spent in the subgrid model so far, s (0 without [les] model).
+  double subgrid_cpu_seconds() const;
 
  private:
   struct Parts;

@@ -75,6 +75,7 @@ run::RunResult run_scene_file(const std::filesystem::path& scene_file,
   run::Simulation simulation(scene, level_request(scratch ? scratch->path() : run_dir), comm);
   if (measure.initial_velocity) simulation.set_initial_velocity(measure.initial_velocity);
   if (measure.at_start) measure.at_start(simulation);
+  if (measure.modify_velocity) simulation.modify_velocity(measure.modify_velocity);
   if (measure.observer) simulation.observe(measure.observer);
   auto result = simulation.run();
   if (measure.at_end) measure.at_end(simulation);

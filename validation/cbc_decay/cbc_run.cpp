@@ -8,18 +8,14 @@
 #include <ctime>
 #include <stdexcept>
 
-#include "flow/dual_metrics.hpp"
 #include "flow/local_mesh.hpp"
-#include "flow/poisson_weights.hpp"
-#include "flow/projection_rk4.hpp"
 #include "flow/run_diagnostics.hpp"
-#include "io/box_generator.hpp"
 #include "les/cbc_data.hpp"
 #include "les/derivative_skewness.hpp"
 #include "les/energy_spectrum.hpp"
 #include "les/random_field.hpp"
 #include "les/spectrum_rescale.hpp"
-#include "les/subgrid_viscosity.hpp"
+#include "validation/scene_run.hpp"
 
 namespace valsalva::validation {
 
@@ -35,20 +31,6 @@ double thread_cpu() {
   timespec c;
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c);
   return static_cast<double>(c.tv_sec) + 1e-9 * static_cast<double>(c.tv_nsec);
-}
-
-// Grid index (k n + j) n + i of every local node (box nodes sit at multiples of h).
-std::vector<std::size_t> grid_index(const flow::LocalMesh& local, int n, double h) {
-  std::vector<std::size_t> idx(local.num_local());
-  for (int a = 0; a < local.num_local(); ++a) {
-    std::size_t id = 0;
-    for (int d = 2; d >= 0; --d) {
-      const long c = ((std::lround(local.position[a][d] / h) % n) + n) % n;
-      id = id * n + static_cast<std::size_t>(c);
-    }
-    idx[a] = id;
-  }
-  return idx;
 }
 
 // The owned velocities as three n^3 grid arrays (u, v, w one after the other) on every rank.
@@ -83,132 +65,160 @@ CbcStation measure(const flow::LocalMesh& local, const std::vector<std::size_t>&
   return s;
 }
 
+// The level as scene overrides of validation/cbc_decay/cbc_decay.toml: the box, the model, the
+// scheme, the time-step fraction, the end and the times landed on (spin-up end and stations).
+std::vector<std::string> level_overrides(const CbcSpec& spec, double length, double end,
+                                         const std::vector<double>& land_on) {
+  std::string times;
+  for (double t : land_on) times += fmt::format("{}{:.17g}", times.empty() ? "" : ", ", t);
+  return {fmt::format("mesh.box.cells=[{0}, {0}, {0}]", spec.n),
+          fmt::format("mesh.box.length=[{0:.17g}, {0:.17g}, {0:.17g}]", length),
+          fmt::format("flow.density={:.17g}", cbc_air_density),
+          fmt::format("flow.viscosity={:.17g}", cbc_air_density * cbc_air_viscosity),
+          fmt::format("flow.scheme={}", spec.scheme),
+          fmt::format("les.model={}", spec.model),
+          fmt::format("les.constant={:.17g}", spec.constant),
+          fmt::format("les.update={}", spec.update),
+          fmt::format("time.stability_fraction={:.17g}", spec.stability),
+          fmt::format("time.end={:.17g}", end),
+          fmt::format("time.land_on=[{}]", times)};
+}
+
 }  // namespace
 
+// One scene run (validation/cbc_decay/cbc_decay.toml through run::Simulation): the spin-up from
+// t = 0 to t_s, then the decay from the start station (at t_s) to the last station. The
+// private loop this replaces restarted the clock at t_s; here the stations sit at t_s +
+// (station - start) M / U0 and every time reported is counted from t_s, so the steps are the
+// same up to the rounding of t_s + (...) (the pressure, the solver's nu_sgs and its Poisson warm
+// start carry over from the spin-up as they did).
 CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
   const auto start = Clock::now();
   const double M = les::cbc_mesh_size, U0 = les::cbc_u0;
   const double length = spec.box_in_m * M, h = length / spec.n;
-  io::BoxSpec box;
-  box.cells = {spec.n, spec.n, spec.n};
-  box.length = Eigen::Vector3d::Constant(length);
-  box.periodic = {true, true, true};
-  const auto mesh = io::generate_box(box);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, comm, {2, "metis"});
-  const auto idx = grid_index(local, spec.n, h);
-
+  const double time_scale = M / U0;  // s per unit of tU0/M
+  const int start_station = spec.start_station;
+  for (int station : spec.stations)
+    if (station <= start_station)
+      throw std::invalid_argument(fmt::format(
+          "run_cbc: station {} is not after the start at tU0/M = {}", station, start_station));
+  const std::size_t n3 = static_cast<std::size_t>(spec.n) * spec.n * spec.n;
   const auto data = les::read_cbc_table3(spec.table.string());
   auto table = [&](int station) { return data.at(station).table(les::Extrapolation::power_law); };
 
   // Initial field: the start station's spectrum (42 unless a study asks otherwise) on shells
-  // 1 .. n/2 - 1, the same on every rank.
-  const std::size_t n3 = static_cast<std::size_t>(spec.n) * spec.n * spec.n;
+  // 1 .. n/2 - 1, the same on every rank; box nodes sit at multiples of h.
   std::vector<double> u0(n3), v0(n3), w0(n3);
-  const int start_station = spec.start_station;
   const auto start_spectrum = table(start_station);
   les::random_solenoidal_field([&](double k) { return start_spectrum(k); }, spec.n, length,
                                spec.seed, u0, v0, w0);
-  flow::FlowState state;
-  for (int a = 0; a < local.num_local(); ++a) {
-    state.velocity.emplace_back(u0[idx[a]], v0[idx[a]], w0[idx[a]]);
-    state.pressure.push_back(0.0);
-  }
-
-  flow::ProjectionOptions options;
-  options.density = 1.2;
-  options.viscosity = cbc_air_viscosity;
-  options.scheme = spec.scheme;
-  options.poisson.tolerance = 1e-8;
-  CbcResult r;
-  r.nodes = local.global_nodes;
-  std::unique_ptr<les::SubgridViscosity> sgs;
-  if (spec.model != "none") {
-    sgs = std::make_unique<les::SubgridViscosity>(spec.model, spec.constant, local.h,
-                                                  les::parse_sgs_update(spec.update));
-    options.subgrid_viscosity = [&](int stage, const flow::TensorField& g, flow::ScalarField& nu) {
-      const double t0 = thread_cpu();
-      (*sgs)(stage, g, nu);
-      r.sgs_seconds += thread_cpu() - t0;
-    };
-  }
-  flow::ProjectionRK4 solver(local, options, flow::poisson_weights(mesh, metrics, local));
-
-  std::vector<double> scratch;
-  const double time_scale = M / U0;  // s per unit of tU0/M
-  // Steps to t_end at `spec.stability` of the RK4 limit for nu + max nu_sgs; after_step runs
-  // after each step.
-  auto advance_to = [&](double t_end, const auto& after_step) {
-    while (t_end - state.time > 1e-12 * t_end) {
-      const double nu = options.viscosity + solver.max_subgrid_viscosity();
-      const auto rates =
-          flow::stability_rates(local, solver.laplacian_weights(), nu, state.velocity, scratch);
-      double dt = spec.stability / rates.stability;
-      const double remaining = t_end - state.time;
-      if (remaining <= dt * (1 + 1e-9))
-        dt = remaining;
-      else if (remaining < 2 * dt)
-        dt = remaining / 2;
-      const double t0 = thread_cpu();
-      solver.step(state, dt);
-      r.step_seconds += thread_cpu() - t0;
-      after_step();
+  auto node_index = [&](const Eigen::Vector3d& x) {
+    std::size_t id = 0;
+    for (int d = 2; d >= 0; --d) {
+      const long c = ((std::lround(x[d] / h) % spec.n) + spec.n) % spec.n;
+      id = id * spec.n + static_cast<std::size_t>(c);
     }
+    return id;
   };
+
+  CbcResult r;
   // Spin-up: the random phases have no triple correlations (no energy transfer); run and rescale
-  // back to the start spectrum after every step, then restart the clock at the start station.
+  // back to the start spectrum after every step up to t_s (see cbc_decay.cpp).
+  r.spinup_u0_over_m =
+      spec.spinup_turnovers * les::large_scales(start_spectrum).turnover_time / time_scale;
+  const double t_spin = r.spinup_u0_over_m * time_scale;
+  std::vector<double> land_on;
+  if (t_spin > 0) land_on.push_back(t_spin);
+  for (int station : spec.stations) land_on.push_back(t_spin + (station - start_station) * time_scale);
+  const double t_end = land_on.back();
+  const double eps = 1e-12 * t_end;  // the run loop's
+
+  std::vector<std::size_t> idx;  // grid index of every local node
   auto skewness = [&](const std::vector<double>& field) {
     return les::derivative_skewness({field.data(), n3}, {field.data() + n3, n3},
                                     {field.data() + 2 * n3, n3}, spec.n, length);
   };
-  r.spinup_u0_over_m =
-      spec.spinup_turnovers * les::large_scales(start_spectrum).turnover_time / time_scale;
-  if (r.spinup_u0_over_m > 0) {
-    advance_to(r.spinup_u0_over_m * time_scale, [&] {
-      auto field = gather(local, idx, spec.n, state.velocity);
+  auto energy = [&](const run::Simulation& sim) {
+    return flow::kinetic_energy(sim.local(), 1.0, sim.state().velocity) /
+           (length * length * length);
+  };
+  std::size_t next_station = 0;
+  double cpu_mark = 0;  // thread CPU at the end of the last measurement
+  // The start station's measurements (after the spin-up, or at t = 0 without one).
+  auto at_start_station = [&](const run::Simulation& sim) {
+    r.initial = measure(sim.local(), idx, spec.n, length, sim.state().velocity, start_spectrum,
+                        start_station);
+    r.time_u0_over_m.push_back(start_station);
+    r.energy.push_back(energy(sim));
+    if (spec.record_skewness)
+      r.skewness.push_back(skewness(gather(sim.local(), idx, spec.n, sim.state().velocity)));
+  };
+
+  SceneRun run;
+  run.initial_velocity = [&](const Eigen::Vector3d& x) {
+    const auto id = node_index(x);
+    return Eigen::Vector3d(u0[id], v0[id], w0[id]);
+  };
+  run.at_start = [&](const run::Simulation& sim) {
+    const auto& local = sim.local();
+    r.nodes = local.global_nodes;
+    idx.resize(local.num_local());
+    for (int a = 0; a < local.num_local(); ++a) idx[a] = node_index(local.position[a]);
+    if (t_spin <= 0) at_start_station(sim);
+    cpu_mark = thread_cpu();
+  };
+  if (t_spin > 0)
+    run.modify_velocity = [&](const run::Simulation& sim, flow::VectorField& u, std::int64_t) {
+      if (sim.state().time > t_spin + eps) return;
+      auto field = gather(sim.local(), idx, spec.n, u);
       if (spec.record_skewness) {
-        r.spinup_time_u0_over_m.push_back(state.time / time_scale);
+        r.spinup_time_u0_over_m.push_back(sim.state().time / time_scale);
         r.spinup_skewness.push_back(skewness(field));
       }
       les::rescale_to_spectrum([&](double k) { return start_spectrum(k); }, spec.n, length,
                                {field.data(), n3}, {field.data() + n3, n3},
                                {field.data() + 2 * n3, n3});
-      for (int a = 0; a < local.num_local(); ++a)
-        state.velocity[a] = {field[idx[a]], field[n3 + idx[a]], field[2 * n3 + idx[a]]};
+      for (std::size_t a = 0; a < u.size(); ++a)
+        u[a] = {field[idx[a]], field[n3 + idx[a]], field[2 * n3 + idx[a]]};
       ++r.spinup_steps;
-    });
-    state.time = 0;
-  }
-
-  r.initial = measure(local, idx, spec.n, length, state.velocity, start_spectrum, start_station);
-  auto energy = [&] {
-    return flow::kinetic_energy(local, 1.0, state.velocity) / (length * length * length);
+    };
+  run.observer = [&](const run::Simulation& sim, std::int64_t) {
+    r.step_seconds += thread_cpu() - cpu_mark;
+    const double t = sim.state().time;
+    if (t <= t_spin + eps) {  // a spin-up step
+      if (std::abs(t - t_spin) <= eps) at_start_station(sim);
+      cpu_mark = thread_cpu();
+      return;
+    }
+    ++r.steps;
+    r.time_u0_over_m.push_back(start_station + (t - t_spin) / time_scale);
+    r.energy.push_back(energy(sim));
+    if (spec.record_skewness)
+      r.skewness.push_back(skewness(gather(sim.local(), idx, spec.n, sim.state().velocity)));
+    if (!std::isfinite(r.energy.back()))
+      throw std::runtime_error(fmt::format("run_cbc: {} {}^3 blew up at tU0/M = {:.2f}",
+                                           spec.model, spec.n, r.time_u0_over_m.back()));
+    if (next_station < spec.stations.size() &&
+        std::abs(t - land_on[land_on.size() - spec.stations.size() + next_station]) <= eps) {
+      const int station = spec.stations[next_station++];
+      auto s = measure(sim.local(), idx, spec.n, length, sim.state().velocity, table(station),
+                       station);
+      s.max_nu_sgs_over_nu =
+          sim.loop().solver().max_subgrid_viscosity() / cbc_air_viscosity;
+      r.stations.push_back(std::move(s));
+    }
+    cpu_mark = thread_cpu();
   };
-  r.time_u0_over_m.push_back(start_station);
-  r.energy.push_back(energy());
-  if (spec.record_skewness)
-    r.skewness.push_back(skewness(gather(local, idx, spec.n, state.velocity)));
-  for (int station : spec.stations) {
-    if (station <= start_station)
-      throw std::invalid_argument(fmt::format(
-          "run_cbc: station {} is not after the start at tU0/M = {}", station, start_station));
-    advance_to((station - start_station) * time_scale, [&] {
-      ++r.steps;
-      r.time_u0_over_m.push_back(start_station + state.time / time_scale);
-      r.energy.push_back(energy());
-      if (spec.record_skewness)
-        r.skewness.push_back(skewness(gather(local, idx, spec.n, state.velocity)));
-      if (!std::isfinite(r.energy.back()))
-        throw std::runtime_error(fmt::format("run_cbc: {} {}^3 blew up at tU0/M = {:.2f}",
-                                             spec.model, spec.n, r.time_u0_over_m.back()));
-    });
-    auto s = measure(local, idx, spec.n, length, state.velocity, table(station), station);
-    s.max_nu_sgs_over_nu = solver.max_subgrid_viscosity() / options.viscosity;
-    r.stations.push_back(std::move(s));
-  }
-  r.step_seconds = local.comm.max(r.step_seconds);
-  r.sgs_seconds = local.comm.max(r.sgs_seconds);
-  r.wall_seconds = local.comm.max(seconds(start));
+  run.at_end = [&](const run::Simulation& sim) { r.sgs_seconds = sim.subgrid_cpu_seconds(); };
+  run_scene_file(case_scene("cbc_decay", "cbc_decay.toml"),
+                 level_overrides(spec, length, t_end, land_on), {}, comm, run);
+  if (r.stations.size() != spec.stations.size())
+    throw std::logic_error(fmt::format("run_cbc: {} of {} stations measured", r.stations.size(),
+                                       spec.stations.size()));
+  const flow::Comm c(comm);
+  r.sgs_seconds = c.max(r.sgs_seconds);
+  r.step_seconds = c.max(r.step_seconds);
+  r.wall_seconds = c.max(seconds(start));
   return r;
 }
 

@@ -26,6 +26,7 @@ namespace valsalva::validation {
 
 inline constexpr double cbc_box_in_m = 11.0;         // L / M
 inline constexpr double cbc_air_viscosity = 1.5e-5;  // m^2/s, air near 20 C
+inline constexpr double cbc_air_density = 1.2;       // kg/m^3
 
 struct CbcSpec {
   int n = 32;                       // nodes (cells) per side
@@ -61,10 +62,14 @@ struct CbcResult {
   int steps = 0, spinup_steps = 0;
   double spinup_u0_over_m = 0;  // the spin-up length in tU0/M
   double wall_seconds = 0;
-  double step_seconds = 0, sgs_seconds = 0;  // thread CPU time: steps, inside the subgrid hook
+  // Thread CPU time: steps (between the measurements after them, so with the run loop's own
+  // per-step work), inside the subgrid model (run::Simulation::subgrid_cpu_seconds).
+  double step_seconds = 0, sgs_seconds = 0;
   std::int64_t nodes = 0;
 };
 
+// Through the product's path: validation/cbc_decay/cbc_decay.toml with the spec as scene
+// overrides, run by run::Simulation in a scratch folder (validation/scene_run.hpp).
 CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm);
 
 }  // namespace valsalva::validation
