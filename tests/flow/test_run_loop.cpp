@@ -168,6 +168,28 @@ TEST_CASE("time.land_on_output = false: full steps only, fields at the first ste
   CHECK(landing.writes[1].second == doctest::Approx(0.2).epsilon(1e-14));
 }
 
+TEST_CASE("time.land_on: the step before each listed time is shortened to land on it") {
+  Setup s(16, MPI_COMM_WORLD);
+  auto options = tgv_options(0.5);
+  options.time.dt = 0.125;                  // full steps at 0.125, 0.25, 0.375, 0.5
+  options.time.land_on = {0.05, 0.3, 0.9};  // sorted as the scene reader does; 0.9 > end: ignored
+  std::vector<double> times;
+  flow::RunLoop loop(s.mesh, s.metrics, s.local, options);
+  flow::RunHooks hooks;
+  hooks.after_step = [&times](const flow::FlowState& state, std::int64_t) {
+    times.push_back(state.time);
+  };
+  loop.set_hooks(hooks);
+  const auto summary = loop.run();
+  // 0.05 (landed), 0.175, 0.3 (landed), then 0.2 left, less than two steps: 0.4 and 0.5 share it.
+  REQUIRE(times.size() == 5);
+  CHECK(summary.time == doctest::Approx(0.5).epsilon(1e-14));
+  CHECK(times[0] == doctest::Approx(0.05).epsilon(1e-14));
+  CHECK(times[1] == doctest::Approx(0.175).epsilon(1e-14));
+  CHECK(times[2] == doctest::Approx(0.3).epsilon(1e-14));
+  CHECK(times[3] == doctest::Approx(0.4).epsilon(1e-14));
+}
+
 TEST_CASE("vorticity of the Taylor-Green field is 2 U0/L sin x sin y to 2nd order") {
   Setup s(32, MPI_COMM_WORLD);
   auto options = tgv_options(0.0);

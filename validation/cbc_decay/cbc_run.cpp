@@ -129,7 +129,8 @@ CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
   const double t_spin = r.spinup_u0_over_m * time_scale;
   std::vector<double> land_on;
   if (t_spin > 0) land_on.push_back(t_spin);
-  for (int station : spec.stations) land_on.push_back(t_spin + (station - start_station) * time_scale);
+  for (int station : spec.stations)
+    land_on.push_back(t_spin + (station - start_station) * time_scale);
   const double t_end = land_on.back();
   const double eps = 1e-12 * t_end;  // the run loop's
 
@@ -196,15 +197,14 @@ CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
     if (spec.record_skewness)
       r.skewness.push_back(skewness(gather(sim.local(), idx, spec.n, sim.state().velocity)));
     if (!std::isfinite(r.energy.back()))
-      throw std::runtime_error(fmt::format("run_cbc: {} {}^3 blew up at tU0/M = {:.2f}",
-                                           spec.model, spec.n, r.time_u0_over_m.back()));
+      throw std::runtime_error(fmt::format("run_cbc: {} {}^3 blew up at tU0/M = {:.2f}", spec.model,
+                                           spec.n, r.time_u0_over_m.back()));
     if (next_station < spec.stations.size() &&
         std::abs(t - land_on[land_on.size() - spec.stations.size() + next_station]) <= eps) {
       const int station = spec.stations[next_station++];
-      auto s = measure(sim.local(), idx, spec.n, length, sim.state().velocity, table(station),
-                       station);
-      s.max_nu_sgs_over_nu =
-          sim.loop().solver().max_subgrid_viscosity() / cbc_air_viscosity;
+      auto s =
+          measure(sim.local(), idx, spec.n, length, sim.state().velocity, table(station), station);
+      s.max_nu_sgs_over_nu = sim.loop().solver().max_subgrid_viscosity() / cbc_air_viscosity;
       r.stations.push_back(std::move(s));
     }
     cpu_mark = thread_cpu();
