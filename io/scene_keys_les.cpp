@@ -7,6 +7,7 @@
 #include <ctime>
 #include <stdexcept>
 
+#include "flow/thread_cpu_time.hpp"
 #include "io/scene_keys.hpp"
 #include "io/sgs_energy_field.hpp"
 #include "les/pope_estimate.hpp"
@@ -61,16 +62,6 @@ struct LesSetup::Shared {
   const flow::LocalMesh* local = nullptr;
   double cpu_seconds = 0;  // thread CPU time inside the model, all calls
 };
-
-namespace {
-// CPU time of the calling thread: on a shared machine the wall clock also counts the time the
-// process waits for a core.
-double thread_cpu() {
-  timespec c;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c);
-  return static_cast<double>(c.tv_sec) + 1e-9 * static_cast<double>(c.tv_nsec);
-}
-}  // namespace
 
 double LesSetup::cpu_seconds() const {
   return shared ? shared->cpu_seconds : 0.0;
@@ -158,9 +149,9 @@ LesSetup les_setup(const Scene& scene, const flow::LocalMesh& local) {
   }
   out.subgrid_viscosity = [sh = out.shared](int stage, const flow::TensorField& grad,
                                             flow::ScalarField& nu_sgs) {
-    const double t0 = thread_cpu();
+    const double t0 = flow::thread_cpu_seconds();
     sh->model(stage, grad, nu_sgs);
-    sh->cpu_seconds += thread_cpu() - t0;
+    sh->cpu_seconds += flow::thread_cpu_seconds() - t0;
     sh->last = &nu_sgs;
   };
   return out;

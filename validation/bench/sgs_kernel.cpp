@@ -11,17 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "flow/thread_cpu_time.hpp"
 #include "les/sgs_kernels.hpp"
 #include "les/sgs_model.hpp"
 #include "validation/bench/bench_cli.hpp"
-
-namespace {
-double thread_cpu() {
-  timespec c;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c);
-  return static_cast<double>(c.tv_sec) + 1e-9 * static_cast<double>(c.tv_nsec);
-}
-}  // namespace
 
 int main(int argc, char** argv) {
   using namespace valsalva::les;
@@ -48,7 +41,7 @@ int main(int argc, char** argv) {
     for (int r = 0; r < repeats; ++r)
       for (const auto& g : grad) sum += kernel(g);
   };
-  const double t0 = thread_cpu();
+  const double t0 = valsalva::flow::thread_cpu_seconds();
   if (model == "sigma")
     run([&](const Eigen::Matrix3d& g) { return sigma_nu(g, delta, default_c_sigma); });
   else if (model == "wale")
@@ -57,6 +50,7 @@ int main(int argc, char** argv) {
     run([&](const Eigen::Matrix3d& g) { return smagorinsky_nu(g, delta, default_c_smagorinsky); });
   const double calls = static_cast<double>(n) * repeats;
   fmt::print("bench_sgs_kernel {}: {} calls, {:.1f} ns per call (thread CPU), checksum {:.17g}\n",
-             model, calls, calls > 0 ? 1e9 * (thread_cpu() - t0) / calls : 0.0, sum);
+             model, calls,
+             calls > 0 ? 1e9 * (valsalva::flow::thread_cpu_seconds() - t0) / calls : 0.0, sum);
   return 0;
 }

@@ -10,6 +10,7 @@
 
 #include "flow/local_mesh.hpp"
 #include "flow/run_diagnostics.hpp"
+#include "flow/thread_cpu_time.hpp"
 #include "les/cbc_data.hpp"
 #include "les/derivative_skewness.hpp"
 #include "les/energy_spectrum.hpp"
@@ -24,13 +25,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::time_point a) {
   return std::chrono::duration<double>(Clock::now() - a).count();
-}
-// CPU time of the calling thread: on a shared machine the wall clock also counts the time the
-// process waits for a core, which made the subgrid share of a step meaningless.
-double thread_cpu() {
-  timespec c;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c);
-  return static_cast<double>(c.tv_sec) + 1e-9 * static_cast<double>(c.tv_nsec);
 }
 
 // The owned velocities as three n^3 grid arrays (u, v, w one after the other) on every rank.
@@ -166,7 +160,7 @@ CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
     idx.resize(local.num_local());
     for (int a = 0; a < local.num_local(); ++a) idx[a] = node_index(local.position[a]);
     if (t_spin <= 0) at_start_station(sim);
-    cpu_mark = thread_cpu();
+    cpu_mark = flow::thread_cpu_seconds();
   };
   if (t_spin > 0)
     run.modify_velocity = [&](const run::Simulation& sim, flow::VectorField& u, std::int64_t) {
@@ -184,11 +178,11 @@ CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
       ++r.spinup_steps;
     };
   run.observer = [&](const run::Simulation& sim, std::int64_t) {
-    r.step_seconds += thread_cpu() - cpu_mark;
+    r.step_seconds += flow::thread_cpu_seconds() - cpu_mark;
     const double t = sim.state().time;
     if (t <= t_spin + eps) {  // a spin-up step
       if (std::abs(t - t_spin) <= eps) at_start_station(sim);
-      cpu_mark = thread_cpu();
+      cpu_mark = flow::thread_cpu_seconds();
       return;
     }
     ++r.steps;
@@ -207,7 +201,7 @@ CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
       s.max_nu_sgs_over_nu = sim.loop().solver().max_subgrid_viscosity() / cbc_air_viscosity;
       r.stations.push_back(std::move(s));
     }
-    cpu_mark = thread_cpu();
+    cpu_mark = flow::thread_cpu_seconds();
   };
   run.at_end = [&](const run::Simulation& sim) { r.sgs_seconds = sim.subgrid_cpu_seconds(); };
   run_scene_file(case_scene("cbc_decay", "cbc_decay.toml"),
