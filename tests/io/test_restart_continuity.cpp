@@ -51,3 +51,25 @@ TEST_CASE("continue_in_place cuts sections.csv by time and valve.csv by step") {
                     doctest::Contains("'valve_cycles.csv' is not among the appended series"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("restart_scene_change: keys added since the run was recorded are not a change") {
+  const fs::path dir =
+      fs::temp_directory_path() / ("valsalva_restart_scene_change_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const io::Scene scene = io::parse_scene("[mesh]\nsource = \"box\"\n", dir / "cube.toml");
+  // The run as an older valsalva recorded it: the resolved scene without time.land_on.
+  toml::table old_resolved = scene.table();
+  old_resolved["time"].as_table()->erase("land_on");
+  REQUIRE(!old_resolved["time"]["land_on"]);
+  std::ofstream(dir / "resolved_scene.toml") << old_resolved;
+  CHECK(io::restart_scene_change(dir / "resolved_scene.toml", scene).empty());
+
+  // A real change is still named, with both values.
+  const io::Scene changed =
+      io::parse_scene("[mesh]\nsource = \"box\"\n[flow]\nviscosity = 0.5\n", dir / "cube.toml");
+  const std::string message = io::restart_scene_change(dir / "resolved_scene.toml", changed);
+  CHECK(message.find("flow.viscosity") != std::string::npos);
+  CHECK(message.find("0.5 in") != std::string::npos);
+  fs::remove_all(dir);
+}
