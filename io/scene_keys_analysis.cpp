@@ -27,6 +27,25 @@ void declare_every_steps(Schema& s, const std::string& table, const std::string&
       .doc("Sample " + what + " every this many time steps");
 }
 
+template <class Inside>
+bool any_node(const flow::Mesh& mesh, Inside inside) {
+  return std::any_of(mesh.nodes.begin(), mesh.nodes.end(), inside);
+}
+
+std::string format_vector(const Eigen::Vector3d& v) {
+  return fmt::format("({:.4g}, {:.4g}, {:.4g})", v.x(), v.y(), v.z());
+}
+
+// "(x0, y0, z0) to (x1, y1, z1) m": the mesh's bounding box, for a region that misses it.
+std::string mesh_span(const flow::Mesh& mesh) {
+  Eigen::Vector3d lo = mesh.nodes.front(), hi = lo;
+  for (const auto& x : mesh.nodes) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  return format_vector(lo) + " to " + format_vector(hi) + " m";
+}
+
 }  // namespace
 
 void declare_analysis_keys(Schema& s) {
@@ -240,6 +259,16 @@ AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh
       s.b = scene_vector(scene, k + ".normal");
       if (!(s.b.norm() > 0)) throw scene.error(k + ".normal", "the normal is zero");
       s.half_thickness = scene.get<double>(k + ".half_thickness");
+      const Eigen::Vector3d n = s.b.normalized();
+      if (!any_node(mesh, [&](const Eigen::Vector3d& x) {
+            return std::abs((x - s.a).dot(n)) <= s.half_thickness;
+          }))
+        throw scene.error(
+            k + ".point",
+            fmt::format("the plane through {} (normal {}, half thickness {:g} m) "
+                        "misses the mesh: no node within reach; the mesh spans {}",
+                        format_vector(s.a), format_vector(s.b), s.half_thickness, mesh_span(mesh)),
+            "a point of a plane through the mesh");
     } else if (s.region == StatisticsOptions::Region::box) {
       s.a = scene_vector(scene, k + ".lo");
       s.b = scene_vector(scene, k + ".hi");
@@ -247,6 +276,14 @@ AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh
         throw scene.error(k + ".hi",
                           "the box's upper corner must exceed its lower corner in x, "
                           "y and z");
+      if (!any_node(mesh, [&](const Eigen::Vector3d& x) {
+            return (x.array() >= s.a.array()).all() && (x.array() <= s.b.array()).all();
+          }))
+        throw scene.error(k + ".lo",
+                          fmt::format("the box {} to {} holds no node of the mesh; the mesh "
+                                      "spans {}",
+                                      format_vector(s.a), format_vector(s.b), mesh_span(mesh)),
+                          "a box overlapping the mesh");
     } else if (s.region == StatisticsOptions::Region::line) {
       s.line = {scene_vector(scene, k + ".origin"), scene_vector(scene, k + ".end"),
                 scene.get<int>(k + ".points")};
