@@ -246,7 +246,7 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
   io::check_initial_state(scene, p.mesh);
   io::check_forcing(scene, boundary);
   io::check_step_count(scene, p.metrics);
-  p.run_path = p.in_place ? dir : io::RunDirectory::prepare(dir, wipe, scene, comm).path();
+  p.run_path = dir;  // prepared below, once a checkpoint to restart from has been opened
 
   p.partition.ghost_layers = scene.get<int>("partition.ghost_layers");
   p.partition.method = scene.get<std::string>("partition.method");
@@ -278,6 +278,10 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
                                     "nothing to continue",
                                     end, p.checkpoint->string(), in->info().time),
                         fmt::format(">= {:.9g}", in->info().time));
+  }
+  // A checkpoint of another mesh or time is refused before a new run directory is made.
+  if (!p.in_place) io::RunDirectory::prepare(dir, wipe, scene, comm);
+  if (in) {
     if (p.in_place) {
       std::vector<std::string> series{"log.csv"};
       if (!analysis_options.probes.points.empty()) series.push_back("probes.csv");

@@ -68,6 +68,13 @@ $expect "checkpoint '.*checkpoint_000000008\.h5': the state is not finite \(velo
   "$app" run scene.toml --out run --restart latest
 cp saved.h5 run/checkpoints/checkpoint_000000008.h5
 
+# A checkpoint of another mesh, continued into a new directory (issue 18, bad input): refused
+# naming both meshes, and the new directory is not made.
+sed 's/^cells = \[8, 8, 3\]/cells = [10, 8, 3]/' scene.toml > finer.toml
+$expect "checkpoint '.*checkpoint_000000008\.h5' was written for another mesh: 192 nodes, .*; this run's mesh has 240 nodes" \
+  "$app" run finer.toml --out elsewhere --restart run/checkpoints/checkpoint_000000008.h5
+test ! -e elsewhere || { echo "a refused restart made its run directory"; exit 1; }
+
 # Accepted changes: a later end time and another output interval; the restart's scene is kept.
 sed 's/^end = 4.0/end = 4.5/; s/^interval = 1.0/interval = 0.5/' scene.toml > longer.toml
 "$app" run longer.toml --out run --restart latest --quiet > longer.out
