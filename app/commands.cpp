@@ -15,6 +15,7 @@
 #include "io/mesh_info.hpp"
 #include "io/mesh_source.hpp"
 #include "io/scene.hpp"
+#include "io/scene_cycle_period.hpp"
 #include "io/scene_docs.hpp"
 #include "io/scene_keys_analysis.hpp"
 #include "io/scene_keys_boundary.hpp"
@@ -64,6 +65,7 @@ int check_scene(const std::filesystem::path& scene_file, const std::vector<std::
   io::flow_run_options(scene, {});                             // time step, output volume
   io::check_initial_state(scene, mesh);  // a Taylor-Green start on a 2 pi L-periodic mesh
   io::check_forcing(scene, boundary);    // a flow-rate drive on a domain closed by walls
+  io::check_cycle_periods(scene);        // valve and statistics cycles against the inlet table
   io::check_step_count(scene, metrics);  // the viscous bound on dt against time.end
   std::string coupling;
   if (!immersed.empty()) {  // every marker in the fluid, as the run places them

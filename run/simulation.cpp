@@ -19,6 +19,7 @@
 #include "io/restart_continuity.hpp"
 #include "io/run_analysis.hpp"
 #include "io/run_directory.hpp"
+#include "io/scene_cycle_period.hpp"
 #include "io/scene_keys_analysis.hpp"
 #include "io/scene_keys_boundary.hpp"
 #include "io/scene_keys_flow.hpp"
@@ -245,6 +246,7 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
   io::flow_run_options(scene, dir);  // its checks (time step, output volume), before any write
   io::check_initial_state(scene, p.mesh);
   io::check_forcing(scene, boundary);
+  io::check_cycle_periods(scene);
   io::check_step_count(scene, p.metrics);
   p.run_path = dir;  // prepared below, once a checkpoint to restart from has been opened
 
