@@ -59,8 +59,6 @@ void check_period(const Scene& scene, const std::string& period_key,
 void check_cycle_periods(const Scene& scene) {
   const auto tables = periodic_tables(scene);
   if (tables.empty()) return;
-  if (!scene.get<std::string>("valve.structure").empty())
-    check_period(scene, "valve.period", tables);
   for (const auto& name : scene.names("statistics"))
     if (scene.get<double>("statistics." + name + ".period") > 0)
       check_period(scene, "statistics." + name + ".period", tables);

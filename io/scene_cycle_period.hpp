@@ -1,6 +1,7 @@
-// The cycle of a scene against the periodic waveform tables that drive it: the valve monitor's
-// cycles (valve.period) and phase-averaged statistics (statistics.<name>.period) must span a
-// whole number of the table's periods, else the cycles drift against the imposed flow.
+// The cycle of phase-averaged statistics (statistics.<name>.period) against the periodic waveform
+// tables that drive the scene (boundary and forcing tables): it must span a whole number of the
+// tables' periods, else the phases drift against the imposed flow. (valve.period is checked
+// against the valve's inlet waveform by io/scene_keys_valve.cpp.)
 #pragma once
 
 #include "io/scene.hpp"
