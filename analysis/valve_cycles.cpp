@@ -37,18 +37,24 @@ CycleSummary summarise_cycle(int cycle, std::span<const ValveSample> s,
   c.end = c.start + options.period;
   c.tpg_max = c.tpg_min = nan;
   std::size_t peak = 0;
+  double least = s.front().opening_ratio;
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (s[i].flow > 0 && !(s[i].tpg <= c.tpg_max)) c.tpg_max = s[i].tpg;
     if (s[i].flow < 0 && !(s[i].tpg >= c.tpg_min)) c.tpg_min = s[i].tpg;
     if (s[i].opening_ratio > s[peak].opening_ratio) peak = i;
+    least = std::min(least, s[i].opening_ratio);
     c.max_von_mises = std::max(c.max_von_mises, s[i].max_von_mises);
   }
   c.max_opening_ratio = s[peak].opening_ratio;
+  c.min_opening_ratio = least;
   c.opening_start = c.fully_open = c.closing = nan;
-  const double open = options.open_fraction * c.max_opening_ratio;
-  const double full = options.full_fraction * c.max_opening_ratio;
+  // Fractions of the swing from the closed orifice (not zero when the leaflets are held apart by
+  // a contact clearance) to the largest opening.
+  const double swing = c.max_opening_ratio - least;
+  const double open = least + options.open_fraction * swing;
+  const double full = least + options.full_fraction * swing;
   std::size_t closed_at = s.size();  // first sample of the closed phase
-  if (c.max_opening_ratio > 0) {
+  if (swing > 0) {
     for (std::size_t i = 0; i <= peak; ++i)
       if (std::isnan(c.opening_start) && s[i].opening_ratio >= open) c.opening_start = s[i].time;
     for (std::size_t i = 0; i <= peak; ++i)

@@ -9,8 +9,10 @@
 //     closing instant: backflow before it passes while the valve closes, after it through the
 //     closed valve;
 //   opening start / fully open: the first samples whose opening ratio reaches open_fraction /
-//     full_fraction of the cycle's largest opening ratio; closing: the first sample after the
-//     largest opening whose ratio falls back to open_fraction of it (NaN when it does not);
+//     full_fraction of the cycle's swing, from its smallest ratio (the closed orifice; not zero
+//     when a contact clearance holds the leaflets apart) to its largest; closing: the first
+//     sample after the largest opening whose ratio falls back to open_fraction of the swing
+//     (NaN when it does not);
 //   TPG_max the largest gradient while Q > 0, TPG_min the smallest while Q < 0 (NaN without
 //     such samples).
 // Integrals use the trapezoidal rule between consecutive samples of the cycle.
@@ -37,7 +39,7 @@ struct CycleSummary {
   double start = 0, end = 0;  // s
   double tpg_max = 0, tpg_min = 0;
   double forward_volume = 0, regurgitant_volume = 0, closing_volume = 0, leakage_volume = 0;
-  double max_opening_ratio = 0;
+  double max_opening_ratio = 0, min_opening_ratio = 0;
   double opening_start = 0, fully_open = 0, closing = 0;  // s, NaN when not reached
   double max_von_mises = 0;
   int samples = 0;

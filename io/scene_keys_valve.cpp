@@ -75,9 +75,10 @@ void declare_valve_keys(Schema& s) {
       .below(1)
       .unit_of("-")
       .doc(
-          "The valve counts as open from the first sample whose opening ratio reaches this "
-          "fraction of the cycle's largest, and closed again from the first sample after the "
-          "largest that falls back to it (fully open: 0.9 of it)");
+          "The valve counts as open from the first sample whose opening ratio has risen by this "
+          "fraction of the cycle's swing (from its smallest ratio, the closed orifice, to its "
+          "largest), and closed again from the first sample after the largest that falls back "
+          "to it (fully open: 0.9 of the swing); valve_cycles.csv gives both ends of the swing");
   s.integer("valve.every_steps")
       .def(1)
       .at_least(1)

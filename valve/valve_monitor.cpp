@@ -93,8 +93,8 @@ ValveMonitor::ValveMonitor(const flow::LocalMesh& local, const ibm::ImmersedStru
   open(csv_, "valve.csv", header);
   open(cycles_csv_, "valve_cycles.csv",
        "cycle,start,end,samples,tpg_max_mmHg,tpg_min_mmHg,forward_volume,regurgitant_volume,"
-       "closing_volume,leakage_volume,max_opening_ratio,opening_start,fully_open,closing,"
-       "max_von_mises");
+       "closing_volume,leakage_volume,max_opening_ratio,min_opening_ratio,opening_start,fully_open,"
+       "closing,max_von_mises");
 }
 
 double ValveMonitor::patch_flux(const flow::VectorField& u, int patch) const {
@@ -152,11 +152,12 @@ void ValveMonitor::sample(const flow::FlowState& state, std::int64_t step) {
   if (done)
     cycles_csv_ << fmt::format(
                        "{},{:.9g},{:.9g},{},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},"
-                       "{:.6g},{:.6g},{:.6g},{:.6e}\n",
+                       "{:.6e},{:.6g},{:.6g},{:.6g},{:.6e}\n",
                        done->cycle, done->start, done->end, done->samples, done->tpg_max,
                        done->tpg_min, done->forward_volume, done->regurgitant_volume,
                        done->closing_volume, done->leakage_volume, done->max_opening_ratio,
-                       done->opening_start, done->fully_open, done->closing, done->max_von_mises)
+                       done->min_opening_ratio, done->opening_start, done->fully_open,
+                       done->closing, done->max_von_mises)
                 << std::flush;
 }
 

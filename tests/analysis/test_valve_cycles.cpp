@@ -87,3 +87,23 @@ TEST_CASE("the tracker closes each cycle at its boundary sample and survives a c
   CHECK_THROWS_AS(tracker.restore(std::vector<double>(7, 0.0)), std::invalid_argument);
   CHECK_THROWS_AS(CycleTracker(CycleOptions{0, 0, 0.05, 0.9}), std::invalid_argument);
 }
+
+TEST_CASE("instants count from the closed orifice when a clearance keeps it open") {
+  // The same cycle with the leaflets held apart: the opening ratio never falls below 0.1 (a
+  // closed orifice of 0.1, as a contact clearance leaves), the open one is 0.5. The instants
+  // are fractions of the swing 0.1 -> 0.5, so they are those of the clean cycle.
+  const int n = 4000;
+  std::vector<ValveSample> s;
+  for (int i = 0; i <= n; ++i) {
+    auto sample = synthetic(double(i) / n);
+    sample.opening_ratio += 0.1;
+    s.push_back(sample);
+  }
+  const CycleSummary c = summarise_cycle(0, s, CycleOptions{});
+  const double spacing = 1.0 / n + 1e-12;
+  CHECK(std::abs(c.opening_start - 0.105) <= spacing);
+  CHECK(std::abs(c.fully_open - 0.19) <= spacing);
+  CHECK(std::abs(c.closing - 0.595) <= spacing);
+  CHECK(c.min_opening_ratio == doctest::Approx(0.1));
+  CHECK(c.max_opening_ratio == doctest::Approx(0.5));
+}
