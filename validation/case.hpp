@@ -70,7 +70,7 @@ class Report {
 // level, a longer run, a timing run), so that the default stays within the CPU budget. The
 // value is checked when the command line is read, before the case runs.
 struct CaseOption {
-  enum class Kind { real, integer, choice };
+  enum class Kind { real, integer, choice, directory };
   std::string key;
   std::string help;  // what it does and the default
   Kind kind = Kind::choice;
@@ -80,6 +80,7 @@ struct CaseOption {
   static CaseOption real(std::string key, std::string help, double lo, double hi);
   static CaseOption integer(std::string key, std::string help, int lo, int hi);
   static CaseOption choice(std::string key, std::string help, std::vector<std::string> words);
+  static CaseOption directory(std::string key, std::string help);  // an existing folder
   // What the value must be ("a number in [0, 100]", "one of fsi1, fsi3").
   std::string accepted() const;
 };

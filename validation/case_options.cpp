@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
 
 #include "validation/case.hpp"
@@ -24,6 +25,7 @@ double whole_number(const std::string& text) {
 }
 
 bool accepts(const CaseOption& o, const std::string& value) {
+  if (o.kind == CaseOption::Kind::directory) return std::filesystem::is_directory(value);
   if (o.kind == CaseOption::Kind::choice)
     return std::find(o.choices.begin(), o.choices.end(), value) != o.choices.end();
   const double x = whole_number(value);
@@ -45,7 +47,12 @@ CaseOption CaseOption::choice(std::string key, std::string help, std::vector<std
   return {std::move(key), std::move(help), Kind::choice, 0, 0, std::move(words)};
 }
 
+CaseOption CaseOption::directory(std::string key, std::string help) {
+  return {std::move(key), std::move(help), Kind::directory, 0, 0, {}};
+}
+
 std::string CaseOption::accepted() const {
+  if (kind == Kind::directory) return "an existing folder";
   if (kind == Kind::real) return fmt::format("a number in [{}, {}]", lo, hi);
   if (kind == Kind::integer) return fmt::format("an integer in [{}, {}]", lo, hi);
   std::string list;
