@@ -142,9 +142,11 @@ void ValveMonitor::sample(const flow::FlowState& state, std::int64_t step) {
                        std::hypot(local.x(), local.y()));
   }
   const Eigen::Vector3d at = x.col(worst);
-  row += fmt::format(",{:.9e},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e}", stress.von_mises[worst],
-                     worst, at.x(), at.y(), at.z(),
-                     body.has_contact() ? contact.min_gap : std::nan(""), contact.area);
+  row += fmt::format(
+      ",{:.9e},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e}", stress.von_mises[worst], worst, at.x(),
+      at.y(), at.z(),
+      body.has_contact() && std::isfinite(contact.min_gap) ? contact.min_gap : std::nan(""),
+      contact.area);
   csv_ << row << '\n' << std::flush;
 
   const auto done =

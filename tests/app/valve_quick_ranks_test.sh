@@ -11,7 +11,10 @@ src=$2
 mpi=$3
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
-"$src/scripts/make-valve-quick" "$app" "$dir/runs/valve_quick" > "$dir/make.log"
+# The meshes of the fixture valve_quick_meshes (made here when run alone), where the scene looks.
+"$src/scripts/make-valve-quick" "$app" "$src/runs/valve_quick" > "$dir/make.log"
+mkdir -p "$dir/runs"
+ln -s "$src/runs/valve_quick" "$dir/runs/valve_quick"
 mkdir -p "$dir/scenes/data"
 cp "$src/scenes/data/valve_flow_rate.csv" "$dir/scenes/data/"
 sed 's/^end = 1.0$/end = 0.13/' "$src/scenes/valve_quick.toml" > "$dir/scenes/valve_quick.toml"

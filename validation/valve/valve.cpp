@@ -37,21 +37,22 @@ constexpr double kPeriod = 1.0;             // s, of scenes/data/valve_flow_rate
 constexpr double kQuickEnd = 0.13;          // s: the forward flow is 0.03 s old
 constexpr int kSettling = 2;                // cycles left out of the statistics
 
+// Both mesh scripts write geom/root.msh (and geom/leaflets.msh) and closed.msh.
+constexpr const char* kRootMesh = "geom/root.msh";
+
 struct Level {
-  std::string scene;      // in scenes/
-  fs::path meshes;        // folder of the generated meshes
-  std::string root_mesh;  // file names in it
-  std::string script;     // what makes them
+  std::string scene;   // in scenes/
+  fs::path meshes;     // folder of the generated meshes
+  std::string script;  // what makes them
 };
 
 Level level(const Context& ctx) {
   const fs::path data = run::data_dir();
-  Level l = ctx.quick ? Level{"valve_quick.toml", data / "runs" / "valve_quick", "root.msh",
+  Level l = ctx.quick ? Level{"valve_quick.toml", data / "runs" / "valve_quick",
                               "scripts/make-valve-quick"}
-                      : Level{"valve_m1.toml", data / "runs" / "valve_m1", "geom/root.msh",
-                              "scripts/make-valve-m1"};
+                      : Level{"valve_m1.toml", data / "runs" / "valve_m1", "scripts/make-valve-m1"};
   if (const auto dir = ctx.option("meshes"); !dir.empty()) l.meshes = dir;
-  for (const auto& file : {l.root_mesh, std::string("closed.msh")})
+  for (const auto& file : {kRootMesh, "closed.msh"})
     if (!fs::exists(l.meshes / file))
       throw std::runtime_error(fmt::format(
           "valve: {} is missing: make the meshes with `{} build/bin/valsalva {}` from the "
@@ -66,7 +67,7 @@ fs::path run_valve(const Context& ctx) {
   const Level l = level(ctx);
   const fs::path dir = ctx.out_dir / "run";
   std::vector<std::string> overrides{
-      fmt::format("mesh.file=\"{}\"", fs::absolute(l.meshes / l.root_mesh).string()),
+      fmt::format("mesh.file=\"{}\"", fs::absolute(l.meshes / kRootMesh).string()),
       fmt::format("structure.valve.file=\"{}\"", fs::absolute(l.meshes / "closed.msh").string())};
   overrides.push_back(ctx.quick
                           ? fmt::format("time.end={}", kQuickEnd)
@@ -82,7 +83,11 @@ struct Samples {
 };
 
 Samples read_valve_csv(const fs::path& file) {
-  const auto table = io::read_numeric_table(file, io::TableHeader::required);
+  io::TableFormat format;
+  format.header = io::TableHeader::required;
+  // nan: no contact pair within the contact search distance (valve/valve_monitor.cpp).
+  format.maskable = [](const std::string& column) { return column == "min_gap"; };
+  const auto table = io::read_numeric_table(file, format);
   Samples s{table.column("time"), table.column("inlet_flow"), table.column("outlet_flow"), {}, 0};
   const auto tpg = table.column("tpg_mmHg"), ratio = table.column("opening_ratio"),
              stress = table.column("max_von_mises");
