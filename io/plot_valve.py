@@ -1,11 +1,17 @@
 #!/usr/bin/python3
 """PNG plots of a run's valve.csv (and valve_cycles.csv): TPG, flow rate, opening area and
-ratio, leaflet tips, with the reference instants of the design note marked (valsalva plot-valve).
-Writes plotted.json (instants and ranges) next to the PNGs, for the tests."""
+ratio, leaflet tips, with the reference instants of the design note marked (valsalva plot-valve);
+and, when the run has phase-averaged line statistics statistics/p1.csv ... p3.csv (the PIV
+profiles of scenes/valve_*.toml), the mean and RMS streamwise velocity across them at ES, PS, MS
+and LS (profiles.png, profiles.csv). Writes plotted.json (instants and ranges) next to the PNGs,
+for the tests."""
 import argparse, csv, json, math, os, sys
 
 INSTANTS = [("t1 opening", 0.15), ("t2 ES", 0.20), ("t3 PS", 0.26), ("t4 MS", 0.35),
             ("t5 LS", 0.55), ("t6 closing", 0.80)]
+# The phases of the study's PIV profiles (valve_case.md): early, peak, mid and late systole.
+PROFILE_PHASES = [("ES", 0.20), ("PS", 0.26), ("MS", 0.35), ("LS", 0.55)]
+PROFILE_COLUMNS = ["bin", "phase_time", "y", "samples", "mean_w", "rms_w"]
 NEEDED = ["time", "inlet_flow", "outlet_flow", "tpg_mmHg", "orifice_area", "opening_ratio"] + \
     [f"tip{i}_{c}" for i in (1, 2, 3) for c in ("z", "r")]
 
@@ -36,6 +42,47 @@ def read_csv(path, needed, min_rows):
     if len(rows) - 1 < min_rows:
         fail(f"{path}: {len(rows) - 1} data rows, need at least {min_rows}")
     return data
+
+
+def profiles(run_dir, out_dir, plt, save):
+    """Streamwise (w) mean and RMS along the lines p1-p3 in the bins that hold the phases."""
+    stats = os.path.join(run_dir, "statistics")
+    names = [n for n in ("p1", "p2", "p3") if os.path.exists(os.path.join(stats, n + ".csv"))]
+    if not names:
+        return
+    fig, axes = plt.subplots(len(names), 2, figsize=(10, 3.2 * len(names)), squeeze=False)
+    rows, series = [], {}
+    for i, name in enumerate(names):
+        d = read_csv(os.path.join(stats, name + ".csv"), PROFILE_COLUMNS, 1)
+        count = int(max(d["bin"])) + 1
+        for label, phase in PROFILE_PHASES:
+            b = min(int(math.floor(phase * count + 1e-9)), count - 1)  # the bin holding it
+            at = [k for k, x in enumerate(d["bin"]) if x == b and d["samples"][k] > 0]
+            if not at:
+                continue  # the run has no sample of that phase yet
+            t = d["phase_time"][at[0]]
+            y = [d["y"][k] * 1e3 for k in at]
+            w = [d["mean_w"][k] for k in at]
+            r = [d["rms_w"][k] for k in at]
+            axes[i][0].plot(y, w, lw=1, label=f"{label} (phase {t:.3g} s)")
+            axes[i][1].plot(y, r, lw=1, label=label)
+            series[f"{name}_{label}_mean_w"] = w
+            rows += [(name, label, t, d["y"][k], d["mean_w"][k], d["rms_w"][k], d["samples"][k])
+                     for k in at]
+        axes[i][0].set(ylabel=f"{name.upper()}: mean w (m/s)")
+        axes[i][1].set(ylabel=f"{name.upper()}: RMS w (m/s)")
+        if axes[i][0].lines:
+            axes[i][0].legend(fontsize=7)
+    for ax in axes[-1]:
+        ax.set_xlabel("y (mm)")
+    if not series:
+        plt.close(fig)
+        return
+    save(fig, "profiles.png", series)
+    with open(os.path.join(out_dir, "profiles.csv"), "w") as f:
+        f.write("line,phase,phase_time_s,y_m,mean_w_m_s,rms_w_m_s,samples\n")
+        for row in rows:
+            f.write("{},{},{:.6g},{:.6e},{:.6e},{:.6e},{:.0f}\n".format(*row))
 
 
 def main():
@@ -127,6 +174,7 @@ def main():
             ax.legend()
             save(fig, "tpg_cycles.png",
                  {"tpg_max_mmHg": c["tpg_max_mmHg"], "tpg_min_mmHg": c["tpg_min_mmHg"]})
+    profiles(a.run_dir, a.out_dir, plt, save)
     with open(os.path.join(a.out_dir, "plotted.json"), "w") as f:
         json.dump(report, f, indent=1)
 

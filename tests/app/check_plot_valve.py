@@ -25,6 +25,26 @@ try:
     open(os.path.join(bad, "valve.csv"), "w").write(lines[0] + "\n")
     r = subprocess.run(["/usr/bin/python3", script, bad, bad], capture_output=True, text=True)
     assert r.returncode != 0 and "0 data rows" in r.stderr, r.stderr
+    # Line statistics of the PIV profiles (statistics/p1.csv): bins 20 and 26 of 100 sampled
+    # (phases 0.205 and 0.265 s, nearest ES and PS), three points each; MS and LS have none.
+    prof = os.path.join(out, "prof")
+    os.makedirs(os.path.join(prof, "statistics"))
+    shutil.copy(os.path.join(data, "valve.csv"), prof)
+    with open(os.path.join(prof, "statistics", "p1.csv"), "w") as f:
+        f.write("bin,phase_time,s,x,y,z,samples,mean_w,rms_w\n")
+        for b in range(100):
+            for j, y in enumerate((-0.01, 0.0, 0.01)):
+                n = 5 if b in (20, 26) else 0
+                f.write(f"{b},{(b + 0.5) / 100},{j * 0.01},0,{y},0.02,{n},{b / 10 + j},{0.01 * j}\n")
+    subprocess.run(["/usr/bin/python3", script, prof, prof], check=True)
+    with open(os.path.join(prof, "profiles.png"), "rb") as f:
+        assert f.read(8) == b"\x89PNG\r\n\x1a\n"
+    rows = open(os.path.join(prof, "profiles.csv")).read().splitlines()
+    assert rows[0].startswith("line,phase,phase_time_s,y_m,mean_w_m_s"), rows[0]
+    assert [r.split(",")[1] for r in rows[1:]] == ["ES"] * 3 + ["PS"] * 3, rows
+    assert abs(float(rows[4].split(",")[4]) - 2.6) < 1e-12, rows[4]  # bin 26, first point
+    plotted = json.load(open(os.path.join(prof, "plotted.json")))["plots"]["profiles.png"]
+    assert sorted(plotted) == ["p1_ES_mean_w", "p1_PS_mean_w"], plotted
     print("plot_valve script: ok")
 finally:
     shutil.rmtree(out)
