@@ -374,6 +374,7 @@ RunSummary RunLoop::run() {
     }
     summary.max_poisson_iterations =
         std::max(summary.max_poisson_iterations, report.poisson.iterations);
+    summary.total_poisson_iterations += report.poisson.iterations;
     // Boundary fluxes (outward, m^3/s) and their sum, the global mass imbalance.
     double imbalance = 0;
     if (boundary_) {

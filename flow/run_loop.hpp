@@ -161,6 +161,7 @@ struct RunSummary {
   Eigen::Vector3d max_free_divergence_position = Eigen::Vector3d::Zero();
   double max_free_divergence_time = 0;
   int max_poisson_iterations = 0;
+  std::int64_t total_poisson_iterations = 0;  // summed over the steps of this run
   double max_mass_imbalance = 0;  // max over steps of |sum of all boundary fluxes|, m^3/s
   std::optional<TaylorGreenError> taylor_green;
   bool stopped = false;    // ended early on a stop request (after the checkpoint hook)

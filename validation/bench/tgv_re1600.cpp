@@ -2,8 +2,11 @@
 // International Workshop on High-Order CFD Methods (box (2 pi)^3, V0 = L = 1, nu = 1/1600,
 // u = sin x cos y cos z, v = -cos x sin y cos z, w = 0,
 // p = (cos 2x + cos 2y)(cos 2z + 2)/16), run to t_end on an n^3 periodic hexahedral box with a
-// fixed time step from the CFL number. Measures what the flow-solver issue asks for:
-//   wall and CPU time, node-steps per second per core, the share of the Poisson solve, Poisson
+// fixed time step from the CFL number: validation/tgv_les/tgv_les.toml without a model, through
+// run::Simulation and its run loop (validation/tgv_les/tgv_les_run.hpp), as `valsalva run` runs
+// it. Measures what the flow-solver issue asks for:
+//   wall time (with set-up) and CPU time (of the time loop, all ranks), node-steps per second
+//   per core, Poisson
 //   iterations, peak resident memory per node, and the error of the dissipation rate -dE/dt
 //   against the 512^3 spectral reference (validation/refdata/tgv_re1600/spectral_Re1600_512.gdiag):
 //   max |eps - eps_ref| / max eps_ref over 0 <= t <= t_end, peak value and time.
@@ -18,25 +21,17 @@
 #include <mpi.h>
 #include <sys/resource.h>
 
-#include <chrono>
 #include <cmath>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
-#include <numbers>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "flow/comm.hpp"
 #include "flow/convection_scheme.hpp"
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
-#include "flow/poisson_weights.hpp"
-#include "flow/projection_rk4.hpp"
-#include "io/box_generator.hpp"
+#include "run/data_dir.hpp"
 #include "validation/bench/bench_cli.hpp"
-#include "validation/bench/bench_util.hpp"
 #include "validation/tgv_les/tgv_les_run.hpp"
 
 using namespace valsalva;
@@ -70,75 +65,37 @@ int main(int argc, char** argv) {
   return bench::mpi_main(app, argc, argv, [&](int rank, int size) {
     const bool order4 = args.operators == "order4";
     const std::string label = args.scheme + (order4 ? "+op4" : "");
-    const double two_pi = 2 * std::numbers::pi, nu = 1.0 / 1600;
-    io::BoxSpec spec;
-    spec.cells = {args.n, args.n, args.n};
-    spec.length = Eigen::Vector3d::Constant(two_pi);
-    spec.periodic = {true, true, true};
-    const auto mesh = io::generate_box(spec);
-    const auto metrics = flow::compute_dual_metrics(mesh);
-    flow::PartitionOptions partition;
-    partition.ghost_layers = 2;
-    const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, partition);
-
-    flow::ProjectionOptions options;
-    options.density = 1;
-    options.viscosity = nu;
-    options.scheme = args.scheme;
-    options.fourth_order_operators = order4;
-    options.poisson.tolerance = 1e-8;
-    flow::ProjectionRK4 solver(local, options, flow::poisson_weights(mesh, metrics, local));
-
-    auto state = validation::tgv_re1600_initial_state(local);
-    auto energy = [&] { return validation::tgv_mean_energy(local, state.velocity); };
-    const double h = two_pi / args.n;
-    const int steps = static_cast<int>(std::ceil(args.t_end / (args.cfl * h)));
-    const double dt = args.t_end / steps;
-
-    std::vector<double> times{0}, energies{energy()};
-    int max_its = 0;
-    long total_its = 0;
-    MPI_Barrier(MPI_COMM_WORLD);
-    const double cpu0 = bench::cpu_seconds();
-    const auto t0 = std::chrono::steady_clock::now();
-    for (int s = 0; s < steps; ++s) {
-      const auto report = solver.step(state, dt);
-      max_its = std::max(max_its, report.poisson.iterations);
-      total_its += report.poisson.iterations;
-      times.push_back(state.time);
-      energies.push_back(energy());
-      if (!std::isfinite(energies.back()))
-        throw std::runtime_error(fmt::format("kinetic energy not finite at step {}", s + 1));
-    }
-    const double wall =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const double cpu = local.comm.sum(bench::cpu_seconds() - cpu0);  // all ranks
+    // The scene of validation/tgv_les without a model, through run::Simulation (issue 20).
+    validation::TgvLesSpec spec;
+    spec.scheme = args.scheme;
+    spec.model = "none";
+    spec.cfl = args.cfl;
+    spec.t_end = args.t_end;
+    spec.fourth_order_operators = order4;
+    const auto r = validation::run_tgv_les(spec, args.n, MPI_COMM_WORLD);
+    if (r.blow_up_time > 0)
+      throw std::runtime_error(fmt::format(
+          "kinetic energy above its initial value or not finite at t = {}", r.blow_up_time));
 
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
-    const double peak_kb = local.comm.max(static_cast<double>(usage.ru_maxrss));
-    const double owned = static_cast<double>(local.num_owned);
-    const double bytes_per_node = local.comm.max(1024.0 * usage.ru_maxrss / owned);
+    const flow::Comm comm(MPI_COMM_WORLD);
+    const double peak_kb = comm.max(static_cast<double>(usage.ru_maxrss));
+    const double nodes = std::pow(double(args.n), 3);  // the periodic box's dual nodes
+    const double bytes_per_node = comm.max(1024.0 * usage.ru_maxrss / (nodes / size));
 
     if (rank == 0) {
-      const auto ref =
-          validation::read_tgv_reference(std::filesystem::path(VALSALVA_SOURCE_DIR) /
-                                         "validation/refdata/tgv_re1600/spectral_Re1600_512.gdiag");
-      double ref_peak = 0, peak = 0, peak_t = 0, worst = 0;
-      for (const auto& r : ref)
-        if (r[0] <= args.t_end) ref_peak = std::max(ref_peak, r[2]);
+      const auto ref = validation::read_tgv_reference(
+          run::data_dir() / "validation/refdata/tgv_re1600/spectral_Re1600_512.gdiag");
+      const auto d = validation::tgv_dissipation(r, ref, args.t_end);
       std::filesystem::create_directories(args.out);
       const auto csv = args.out / fmt::format("tgv_{}_{}_np{}.csv", label, args.n, size);
       std::ofstream out(csv);
       out << "t,E,dissipation,dissipation_reference\n";
-      for (std::size_t i = 1; i + 1 < times.size(); ++i) {
-        const double eps = -(energies[i + 1] - energies[i - 1]) / (times[i + 1] - times[i - 1]);
-        const double eps_ref = validation::interpolate_tgv_reference(ref, times[i], 2);
-        worst = std::max(worst, std::abs(eps - eps_ref));
-        if (eps > peak) peak = eps, peak_t = times[i];
-        out << fmt::format("{:.6f},{:.10e},{:.10e},{:.10e}\n", times[i], energies[i], eps, eps_ref);
-      }
-      const double node_steps = static_cast<double>(local.global_nodes) * steps;
+      for (std::size_t i = 0; i < d.time.size(); ++i)
+        out << fmt::format("{:.6f},{:.10e},{:.10e},{:.10e}\n", d.time[i], r.energy[i + 1],
+                           d.rate[i], d.reference[i]);
+      const double node_steps = nodes * r.steps;
       const auto summary = args.out / "summary.csv";
       const bool header = !std::filesystem::exists(summary);
       std::ofstream sum(summary, std::ios::app);
@@ -148,18 +105,20 @@ int main(int argc, char** argv) {
                "dissipation_error_max_rel,peak,peak_time\n";
       sum << fmt::format(
           "{},{},{},{},{:.6g},{:.3f},{:.3f},{:.4g},{:.2f},{},{:.0f},{:.0f},{:.5f},{:.6f},{:.3f}\n",
-          label, args.n, size, steps, dt, wall, cpu, node_steps / cpu, double(total_its) / steps,
-          max_its, peak_kb, bytes_per_node, worst / ref_peak, peak, peak_t);
+          label, args.n, size, r.steps, r.dt, r.wall_seconds, r.cpu_seconds,
+          node_steps / r.cpu_seconds, r.poisson_iterations_mean, r.poisson_iterations_max, peak_kb,
+          bytes_per_node, d.max_error, d.peak, d.peak_time);
       fmt::print(
           "TGV Re 1600, {}^3 hexahedra, {}, {} ranks: {} steps of dt {:.4g} to t = {}\n"
-          "  wall {:.1f} s, CPU {:.1f} s, {:.3g} node-steps/s/core, Poisson its mean {:.2f} max "
-          "{}\n"
+          "  wall {:.1f} s (with set-up), CPU {:.1f} s (time loop), {:.3g} node-steps/s/core, "
+          "Poisson its mean {:.2f} max {}\n"
           "  peak RSS {:.0f} MB per rank, {:.0f} B per owned node\n"
           "  -dE/dt: max error {:.4f} of the reference peak {:.6f}; peak {:.6f} at t = {:.2f} "
           "(reference 0.012858 at 8.97)\n  -> {}\n",
-          args.n, label, size, steps, dt, args.t_end, wall, cpu, node_steps / cpu,
-          double(total_its) / steps, max_its, peak_kb / 1024, bytes_per_node, worst / ref_peak,
-          ref_peak, peak, peak_t, csv.string());
+          args.n, label, size, r.steps, r.dt, args.t_end, r.wall_seconds, r.cpu_seconds,
+          node_steps / r.cpu_seconds, r.poisson_iterations_mean, r.poisson_iterations_max,
+          peak_kb / 1024, bytes_per_node, d.max_error, d.reference_peak, d.peak, d.peak_time,
+          csv.string());
     }
   });
 }

@@ -86,9 +86,14 @@ TgvLesResult run_tgv_les(const TgvLesSpec& spec, int n, MPI_Comm comm,
       {fmt::format("mesh.box.cells=[{0}, {0}, {0}]", n), fmt::format("flow.scheme={}", spec.scheme),
        fmt::format("les.model={}", spec.model), fmt::format("les.update={}", spec.update),
        fmt::format("les.constant={:.17g}", spec.constant),
-       fmt::format("time.end={:.17g}", spec.t_end), fmt::format("time.dt={:.17g}", r.dt)},
+       fmt::format("time.end={:.17g}", spec.t_end), fmt::format("time.dt={:.17g}", r.dt),
+       fmt::format("flow.fourth_order_operators={}", spec.fourth_order_operators)},
       run_dir, comm, measure);
   r.poisson_iterations_max = result.summary.max_poisson_iterations;
+  r.poisson_iterations_mean =
+      result.summary.steps > 0
+          ? double(result.summary.total_poisson_iterations) / double(result.summary.steps)
+          : 0.0;
   r.wall_seconds = flow::Comm(comm).max(
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count());
   return r;

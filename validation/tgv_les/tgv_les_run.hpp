@@ -32,6 +32,7 @@ struct TgvLesSpec {
   std::string update = "step";      // les.update: nu_sgs per "step" or per RK "stage"
   double cfl = 0.5;                 // dt = t_end / ceil(t_end / (cfl h / V0))
   double t_end = 10;
+  bool fourth_order_operators = false;  // flow.fourth_order_operators (refused with a model)
 };
 
 struct TgvLesResult {
@@ -45,6 +46,7 @@ struct TgvLesResult {
   // derived for central2; central4's convective spectral radius is ~1.37x larger).
   double max_stability_number = 0;
   int poisson_iterations_max = 0;
+  double poisson_iterations_mean = 0;  // per step
   // > 0: the run stopped at this time because the energy was no longer finite or exceeded its
   // initial value (it can only decay); time and energy end there.
   double blow_up_time = 0;
