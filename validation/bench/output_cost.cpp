@@ -1,6 +1,9 @@
 // Benchmark (opt-in, not a test): what the analysis outputs cost next to a flow step (issue 7).
-// A periodic n^3 hexahedral box (n = 100: 1 M nodes) with the Taylor-Green field steps with
-// flow::ProjectionRK4; in the same run it times, per call, phase statistics (io::PhaseStatistics)
+// A periodic n^3 hexahedral box (n = 100: 1 M nodes) with the Taylor-Green field steps through the
+// scene path as `valsalva run` runs it (validation/tgv_les/tgv_les.toml without a model, central2,
+// run::Simulation and its run loop; a step is timed from the end of one observer call to the start
+// of the next, so it includes the loop's own per-step work); in the same run, from the observer,
+// it times per call phase statistics (io::PhaseStatistics)
 // on the whole mesh and on 2 planes, io::Probes::sample, a field write (velocity, pressure,
 // vorticity), a checkpoint with and without the statistics arrays, and PhaseStatistics::write.
 // Times are process CPU seconds (the machine is shared; wall time is printed beside), the max over
@@ -18,24 +21,21 @@
 #include <fstream>
 #include <functional>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
 #include "flow/operators.hpp"
-#include "flow/poisson_weights.hpp"
-#include "flow/projection_rk4.hpp"
-#include "flow/run_diagnostics.hpp"
-#include "io/box_generator.hpp"
 #include "io/checkpoint.hpp"
 #include "io/field_output.hpp"
 #include "io/phase_statistics.hpp"
 #include "io/probes.hpp"
+#include "run/simulation.hpp"
 #include "validation/bench/bench_cli.hpp"
 #include "validation/bench/bench_util.hpp"
+#include "validation/scene_run.hpp"
 
 using namespace valsalva;
 
@@ -70,7 +70,9 @@ struct Cost {
     MPI_Barrier(MPI_COMM_WORLD);
     const Seconds a = now();
     f();
-    const Seconds b = now();
+    add(a, now());
+  }
+  void add(const Seconds& a, const Seconds& b) {
     total.cpu += b.cpu - a.cpu, total.wall += b.wall - a.wall, ++calls;
     fastest = std::min(fastest, b.cpu - a.cpu);
   }
@@ -92,6 +94,82 @@ std::vector<int> union_of(std::vector<int> a, const std::vector<int>& b) {
   return a;
 }
 
+// What is measured, set up on the run's mesh before its first step.
+struct Measured {
+  Measured(const run::Simulation& sim, const Args& args) {
+    const auto& local = sim.local();
+    const double L = 2 * std::numbers::pi;
+    h = L / args.n;
+    nodes = double(local.global_nodes);
+    // Whole-mesh statistics: resident size before and after (zero-filled, so all pages touched).
+    const io::PhaseStatisticsOptions so{args.bins * 0.5 * h, args.bins, 0, 1, "all"};
+    const double rss0 = status_kb("VmRSS");
+    all.emplace(local, so, io::all_owned_nodes(local));
+    stats_bytes = 1024 * local.comm.sum(status_kb("VmRSS") - rss0);
+    // Two planes through grid nodes, one node layer each.
+    const Eigen::Vector3d mid = Eigen::Vector3d::Constant(args.n / 2 * h);
+    auto plane_nodes = union_of(io::nodes_near_plane(local, mid, {0, 0, 1}, 0.25 * h),
+                                io::nodes_near_plane(local, mid, {1, 0, 0}, 0.25 * h));
+    plane_count = local.comm.sum(double(plane_nodes.size()));
+    planes.emplace(local, io::PhaseStatisticsOptions{so.period, so.bins, 0, 1, "planes"},
+                   std::move(plane_nodes));
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> inside(0.01 * L, 0.99 * L);
+    std::vector<io::ProbePoint> points;
+    for (int p = 0; p < args.probes; ++p)
+      points.push_back({fmt::format("p{}", p), {inside(random), inside(random), inside(random)}});
+    probes.emplace(sim.mesh(), sim.metrics(), local, points);
+    costs = {{"flow step (RK4 + Poisson)", nodes},
+             {"statistics add, whole mesh", nodes},
+             {"statistics add, 2 planes", plane_count},
+             {fmt::format("probes sample ({} probes)", args.probes), double(args.probes)},
+             {"field write u, p, vorticity", nodes},
+             {"checkpoint, state only", nodes},
+             {"checkpoint + statistics arrays", nodes},
+             {"statistics write, 2 planes", plane_count},
+             {"statistics write, whole mesh", nodes}};
+  }
+
+  // After a step: the per-step analyses on its state.
+  void per_step(const flow::FlowState& state) {
+    costs[1].time([&] { all->add(state.time, state.velocity, state.pressure); });
+    costs[2].time([&] { planes->add(state.time, state.velocity, state.pressure); });
+    for (int k = 0; k < 10; ++k) costs[3].time([&] { probes->sample(state); });
+  }
+
+  // At the end: one field write, two checkpoints, the statistics files.
+  void at_end(const run::Simulation& sim, const std::filesystem::path& out) {
+    const auto& local = sim.local();
+    const auto& state = sim.state();
+    io::FieldOutput output(sim.mesh(), sim.metrics(), local, out, "fields");
+    flow::TensorField grad;
+    flow::VectorField omega;
+    costs[4].time([&] {
+      flow::gradient(local, state.velocity, grad);
+      flow::vorticity(grad, omega);
+      output.write(state.time, {{"pressure", &state.pressure}},
+                   {{"velocity", &state.velocity}, {"vorticity", &omega}});
+    });
+    io::CheckpointWriter writer(local, io::mesh_hash(sim.mesh()), out / "checkpoints");
+    const double dt = 0.5 * h;
+    costs[5].time([&] { writer.write(state, 1, dt); });
+    hwm_before = local.comm.max(status_kb("VmHWM"));
+    costs[6].time([&] {
+      auto extras = all->checkpoint_arrays();
+      for (auto& a : planes->checkpoint_arrays()) extras.push_back(std::move(a));
+      writer.write(state, 2, dt, extras);
+    });
+    hwm_after = local.comm.max(status_kb("VmHWM"));
+    costs[7].time([&] { planes->write(sim.mesh(), sim.metrics(), out / "statistics"); });
+    costs[8].time([&] { all->write(sim.mesh(), sim.metrics(), out / "statistics"); });
+  }
+
+  double h = 0, nodes = 0, plane_count = 0, stats_bytes = 0, hwm_before = 0, hwm_after = 0;
+  std::optional<io::PhaseStatistics> all, planes;
+  std::optional<io::Probes> probes;
+  std::vector<Cost> costs;
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -107,94 +185,43 @@ int main(int argc, char** argv) {
   app.add_option("--out", args.out, "Folder of the files written");
   app.add_option("--keep", args.keep, "Keep the files written (else removed at the end)");
   return bench::mpi_main(app, argc, argv, [&](int rank, int size) {
-    const double L = 2 * std::numbers::pi, h = L / args.n;
-    io::BoxSpec spec;
-    spec.cells = {args.n, args.n, args.n};
-    spec.length = Eigen::Vector3d::Constant(L);
-    spec.periodic = {true, true, true};
-    const auto mesh = io::generate_box(spec);
-    const auto metrics = flow::compute_dual_metrics(mesh);
-    const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
-    flow::ProjectionOptions options;
-    options.viscosity = 1.0 / 1600;
-    options.poisson.tolerance = 1e-8;
-    flow::ProjectionRK4 solver(local, options, flow::poisson_weights(mesh, metrics, local));
-    flow::FlowState state;
-    for (const auto& x : local.position) {
-      state.velocity.push_back({std::sin(x.x()) * std::cos(x.y()) * std::cos(x.z()),
-                                -std::cos(x.x()) * std::sin(x.y()) * std::cos(x.z()), 0.0});
-      state.pressure.push_back((std::cos(2 * x.x()) + std::cos(2 * x.y())) *
-                               (std::cos(2 * x.z()) + 2) / 16);
-    }
-    const double dt = 0.5 * h, nodes = double(local.global_nodes);
     if (rank == 0) std::filesystem::create_directories(args.out);
+    const double h = 2 * std::numbers::pi / args.n, dt = 0.5 * h;
+    std::optional<Measured> m;
+    Seconds last;  // the end of the previous observer call: the next step starts there
+    validation::SceneRun measure;
+    measure.at_start = [&](const run::Simulation& sim) {
+      m.emplace(sim, args);
+      MPI_Barrier(MPI_COMM_WORLD);
+      last = now();
+    };
+    measure.observer = [&](const run::Simulation& sim, std::int64_t step) {
+      MPI_Barrier(MPI_COMM_WORLD);
+      // Step 1 is the warm-up: first touch and the Poisson set-up stay out of the figures.
+      if (step > 1) m->costs[0].add(last, now());
+      m->per_step(sim.state());
+      MPI_Barrier(MPI_COMM_WORLD);
+      last = now();
+    };
+    measure.at_end = [&](const run::Simulation& sim) { m->at_end(sim, args.out); };
+    validation::run_scene_file(
+        validation::case_scene("tgv_les", "tgv_les.toml"),
+        {fmt::format("mesh.box.cells=[{0}, {0}, {0}]", args.n), "flow.scheme=\"central2\"",
+         "les.model=\"none\"", fmt::format("time.dt={:.17g}", dt),
+         fmt::format("time.end={:.17g}", (args.steps + 1) * dt), "time.land_on_output=false"},
+        {}, MPI_COMM_WORLD, measure);
 
-    // Whole-mesh statistics: resident size before and after (zero-filled, so all pages touched).
-    const io::PhaseStatisticsOptions so{args.bins * dt, args.bins, 0, 1, "all"};
-    const double rss0 = status_kb("VmRSS");
-    io::PhaseStatistics all(local, so, io::all_owned_nodes(local));
-    const double rss1 = status_kb("VmRSS");
-    // Two planes through grid nodes, one node layer each.
-    const Eigen::Vector3d mid = Eigen::Vector3d::Constant(args.n / 2 * h);
-    auto plane_nodes = union_of(io::nodes_near_plane(local, mid, {0, 0, 1}, 0.25 * h),
-                                io::nodes_near_plane(local, mid, {1, 0, 0}, 0.25 * h));
-    const double plane_count = local.comm.sum(double(plane_nodes.size()));
-    io::PhaseStatistics planes(local, {so.period, so.bins, 0, 1, "planes"}, std::move(plane_nodes));
-    std::mt19937 random(7);
-    std::uniform_real_distribution<double> inside(0.01 * L, 0.99 * L);
-    std::vector<io::ProbePoint> points;
-    for (int p = 0; p < args.probes; ++p)
-      points.push_back({fmt::format("p{}", p), {inside(random), inside(random), inside(random)}});
-    const io::Probes probes(mesh, metrics, local, points);
-
-    Cost step{"flow step (RK4 + Poisson)", nodes}, add_all{"statistics add, whole mesh", nodes},
-        add_planes{"statistics add, 2 planes", plane_count},
-        sample{fmt::format("probes sample ({} probes)", args.probes), double(args.probes)},
-        fields{"field write u, p, vorticity", nodes}, ckpt{"checkpoint, state only", nodes},
-        ckpt_stats{"checkpoint + statistics arrays", nodes},
-        write_planes{"statistics write, 2 planes", plane_count},
-        write_all{"statistics write, whole mesh", nodes};
-    solver.step(state, dt);  // warm-up: first-touch and Poisson set-up stay out of the figures
-    for (int s = 0; s < args.steps; ++s) {
-      step.time([&] { solver.step(state, dt); });
-      add_all.time([&] { all.add(state.time, state.velocity, state.pressure); });
-      add_planes.time([&] { planes.add(state.time, state.velocity, state.pressure); });
-      for (int k = 0; k < 10; ++k) sample.time([&] { probes.sample(state); });
-    }
-    io::FieldOutput output(mesh, metrics, local, args.out, "fields");
-    flow::TensorField grad;
-    flow::VectorField omega;
-    fields.time([&] {
-      flow::gradient(local, state.velocity, grad);
-      flow::vorticity(grad, omega);
-      output.write(state.time, {{"pressure", &state.pressure}},
-                   {{"velocity", &state.velocity}, {"vorticity", &omega}});
-    });
-    io::CheckpointWriter writer(local, io::mesh_hash(mesh), args.out / "checkpoints");
-    ckpt.time([&] { writer.write(state, 1, dt); });
-    const double hwm0 = status_kb("VmHWM");
-    ckpt_stats.time([&] {
-      auto extras = all.checkpoint_arrays();
-      for (auto& a : planes.checkpoint_arrays()) extras.push_back(std::move(a));
-      writer.write(state, 2, dt, extras);
-    });
-    const double hwm1 = status_kb("VmHWM");
-    write_planes.time([&] { planes.write(mesh, metrics, args.out / "statistics"); });
-    write_all.time([&] { all.write(mesh, metrics, args.out / "statistics"); });
-
-    const double stats_bytes = 1024 * local.comm.sum(rss1 - rss0);
-    const double hwm_before = local.comm.max(hwm0), hwm_after = local.comm.max(hwm1);
-    const double step_cpu = local.comm.max(step.total.cpu) / step.calls;
-    const std::vector<const Cost*> costs{&step, &add_all,    &add_planes,   &sample,   &fields,
-                                         &ckpt, &ckpt_stats, &write_planes, &write_all};
+    const auto& costs = m->costs;
+    const flow::Comm comm(MPI_COMM_WORLD);
+    const double step_cpu = comm.max(costs[0].total.cpu) / costs[0].calls;
     std::string table;
-    for (const Cost* c : costs) {
-      const double cpu = local.comm.max(c->total.cpu) / c->calls;
-      const double wall = local.comm.max(c->total.wall) / c->calls;
-      const double ns = 1e9 * local.comm.sum(c->total.cpu) / c->calls / c->nodes;
+    for (const Cost& c : costs) {
+      const double cpu = comm.max(c.total.cpu) / c.calls;
+      const double wall = comm.max(c.total.wall) / c.calls;
+      const double ns = 1e9 * comm.sum(c.total.cpu) / c.calls / c.nodes;
       table +=
-          fmt::format("  {:<34} {:>5} {:>10.3g} {:>10.3g} {:>9.3g} {:>9.3g} {:>10.4g}\n", c->what,
-                      c->calls, cpu, local.comm.max(c->fastest), wall, 100 * cpu / step_cpu, ns);
+          fmt::format("  {:<34} {:>5} {:>10.3g} {:>10.3g} {:>9.3g} {:>9.3g} {:>10.4g}\n", c.what,
+                      c.calls, cpu, comm.max(c.fastest), wall, 100 * cpu / step_cpu, ns);
     }
     if (rank == 0) {
       std::uintmax_t bytes = 0;
@@ -202,10 +229,10 @@ int main(int argc, char** argv) {
         if (f.is_regular_file()) bytes += f.file_size();
       fmt::print(
           "bench_output_cost: {}^3 periodic hexahedra, {:.0f} nodes, {} rank(s); {}\n  {} timed "
-          "steps of dt {:.4g}; statistics {} bins; planes {:.0f} "
+          "steps of dt {:.4g} through run::Simulation; statistics {} bins; planes {:.0f} "
           "nodes; {} probes\n"
           "  {:<34} {:>5} {:>10} {:>10} {:>9} {:>9} {:>10}\n{}",
-          args.n, nodes, size, bench::machine(), step.calls, dt, args.bins, plane_count,
+          args.n, m->nodes, size, bench::machine(), costs[0].calls, dt, args.bins, m->plane_count,
           args.probes, "per call", "calls", "cpu s", "min cpu s", "wall s", "% step", "ns/node",
           table);
       fmt::print(
@@ -215,9 +242,9 @@ int main(int argc, char** argv) {
           "node and bin (documented 88)\n          = {:.1f} MB per phase bin for {:.0f} nodes; "
           "peak resident per rank {:.0f} MB before the checkpoint with statistics, {:.0f} MB "
           "after\n  files written: {:.1f} MB in {}{}\n",
-          stats_bytes / 1e6, stats_bytes / nodes / args.bins, stats_bytes / args.bins / 1e6, nodes,
-          hwm_before / 1024, hwm_after / 1024, bytes / 1e6, args.out.string(),
-          args.keep ? "" : " (removed)");
+          m->stats_bytes / 1e6, m->stats_bytes / m->nodes / args.bins,
+          m->stats_bytes / args.bins / 1e6, m->nodes, m->hwm_before / 1024, m->hwm_after / 1024,
+          bytes / 1e6, args.out.string(), args.keep ? "" : " (removed)");
       if (!args.keep) std::filesystem::remove_all(args.out);
     }
   });
