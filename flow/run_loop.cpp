@@ -237,12 +237,16 @@ void RunLoop::print_progress(const StepReport& report, double dt, double energy,
                              double eta, const std::string& flux_text) const {
   const auto& out = options_.output;
   const double cfl = dt * rates_.convective, fourier = dt * rates_.viscous;
+  // Node-steps per second over all ranks: the throughput a user compares between runs.
+  const double rate = per_step > 0 ? double(local_.global_nodes) / per_step : 0.0;
   if (out.progress == Progress::lines) {
     fmt::print(
         "step {:>7} t {:.6e} s dt {:.3e} s CFL {:.3f} Fo {:.3f} max|div| {:.2e} 1/s "
-        "KE {:.6e} J Poisson {} it {:.1e}{} wall/step {:.3e} s ETA {:.1f} s\n",
+        "KE {:.6e} J Poisson {} it {:.1e}{} wall/step {:.3e} s ({:.3g} node-steps/s) ETA {:.1f} "
+        "s\n",
         step_, state_.time, dt, cfl, fourier, report.max_divergence, energy,
-        report.poisson.iterations, report.poisson.relative_residual, flux_text, per_step, eta);
+        report.poisson.iterations, report.poisson.relative_residual, flux_text, per_step, rate,
+        eta);
   } else if (out.progress == Progress::status) {
     std::string cycle;
     if (out.cycle_period > 0) {
@@ -250,8 +254,6 @@ void RunLoop::print_progress(const StepReport& report, double dt, double energy,
       cycle = fmt::format("cycle {} phase {:.3f} ", static_cast<std::int64_t>(std::floor(c)),
                           c - std::floor(c));
     }
-    // Node-steps per second over all ranks: the throughput a user compares between runs.
-    const double rate = per_step > 0 ? double(local_.global_nodes) / per_step : 0.0;
     fmt::print(
         "\r\x1b[K{}t {:.6g} s step {} CFL {:.2f} Poisson {} it | {:.3g} node-steps/s | "
         "ETA {:.0f} s",
