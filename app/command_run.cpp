@@ -23,6 +23,11 @@ int run_scene(const std::filesystem::path& scene_file, const std::vector<std::st
   if (rank == 0 && !request.quiet)
     fmt::print("# resolved scene {}\n{}\n", scene_file.string(), scene.resolved());
   run::Simulation simulation(scene, request);
+  if (rank == 0 && !request.quiet)
+    fmt::print(
+        "set-up: {:.2f} s (scene, mesh, dual metrics, partition, structures and analysis; the "
+        "Poisson hierarchy is built in the first step)\n",
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   const auto result = simulation.run();
   const auto& summary = result.summary;
   if (rank != 0) return 0;
