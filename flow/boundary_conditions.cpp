@@ -12,6 +12,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "flow/patch_fluxes.hpp"
+
 namespace valsalva::flow {
 
 namespace {
@@ -499,11 +501,7 @@ void BoundaryConditions::drop_outlet_viscous_flux(const TensorField& grad, doubl
 }
 
 std::vector<double> BoundaryConditions::patch_fluxes(const VectorField& u) const {
-  std::vector<double> flux(patches_.size(), 0.0);
-  for (const auto& b : mesh_.boundary)
-    if (b.node < mesh_.num_owned) flux[b.patch] += u[b.node].dot(b.area);
-  allreduce(flux, mesh_.comm);
-  return flux;
+  return flow::patch_fluxes(mesh_, u);
 }
 
 }  // namespace valsalva::flow

@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "flow/patch_fluxes.hpp"
 #include "io/hdf5_file.hpp"
 #include "io/restart_continuity.hpp"
 #include "structure/contact.hpp"
@@ -97,18 +98,11 @@ ValveMonitor::ValveMonitor(const flow::LocalMesh& local, const ibm::ImmersedStru
        "closing,max_von_mises");
 }
 
-double ValveMonitor::patch_flux(const flow::VectorField& u, int patch) const {
-  double flux = 0;
-  for (const auto& b : local_->boundary)
-    if (b.patch == patch && b.node < local_->num_owned) flux += u[b.node].dot(b.area);
-  return local_->comm.sum(flux);
-}
-
 void ValveMonitor::sample(const flow::FlowState& state, std::int64_t step) {
   if (step % options_.every_steps != 0) return;
   // Collective parts first, on every rank; the leaflets are replicated.
-  const double inflow = -patch_flux(state.velocity, inlet_);
-  const double outflow = patch_flux(state.velocity, outlet_);
+  const auto fluxes = flow::patch_fluxes(*local_, state.velocity);
+  const double inflow = -fluxes[inlet_], outflow = fluxes[outlet_];
   const double tpg =
       (upstream_(state.pressure) - downstream_(state.pressure)) / io::pascal_per_mmhg;
   if (!local_->comm.root()) return;

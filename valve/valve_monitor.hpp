@@ -50,7 +50,6 @@ class ValveMonitor {
     std::vector<int> nodes;     // structure node of each of its nodes
     int tip = -1;               // structure node at the free-edge midpoint
   };
-  double patch_flux(const flow::VectorField& u, int patch) const;
   void cut_cycles_csv();  // rank 0, restart in place
 
   const flow::LocalMesh* local_;
