@@ -23,31 +23,9 @@
 #include "ibm/immersed_structure.hpp"
 #include "structure/material.hpp"
 #include "structure/solid_mesh.hpp"
+#include "validation/ib_leakage/leakage_setup.hpp"
 
 namespace valsalva::validation {
-
-struct LeakageSetup {
-  double h = 1e-3;             // fluid mesh size [m]
-  double kernel_width = 4.0;   // support width in units of h (Peskin 4-point, RKPM-corrected)
-  double thickness = 0.15e-3;  // membrane thickness [m]
-  double height = 10e-3;       // channel height = membrane span [m]
-  double upstream = 8e-3;      // inlet to membrane [m]
-  double downstream = 16e-3;   // membrane to outlet [m]
-  int depth_cells = 8;         // slab depth in cells (the kernel must fit in the period)
-  double density = 1100, viscosity = 3.6e-3;  // blood analogue: kg/m^3, Pa s
-  double G = 2.4e6, K = 1.6e6;                // neo-Hookean leaflet [Pa]
-  double pressure = 13332.2;                  // imposed p_in - p_out [Pa] (100 mmHg)
-  double ramp = 0.02;                         // smooth ramp of p_in [s]
-  double t_end = 0.04;                        // [s]; averages over the last half of the hold
-  double dt_fraction = 0.5;                   // of the coupling's stability bound
-  // Tether stiffness per clamped node = G * h * factor [N/m]: holds the clamped nodes within
-  // about 1 % of h under the full load at every h (the node count per wall does not change).
-  double tether_factor = 1.0;
-
-  double depth() const { return depth_cells * h; }
-  double membrane_x() const { return upstream; }
-  double length() const { return upstream + downstream; }
-};
 
 // Fluid mesh, flow solver, membrane and coupling of one setup, wired together (the flow has the
 // immersed body force installed). Built in place: the coupling refers to the local mesh.
@@ -74,15 +52,5 @@ struct LeakageChannel {
   // a window of the hold instead of waiting for it to decay).
   double inlet_pressure(double t) const;
 };
-
-// The membrane's static equilibrium under a uniform follower pressure `p` on its upstream face
-// (clamped at both walls, z held: the slab is periodic), by structure::solve_static: the
-// deflection the immersed membrane should reach under the jump it sustains. Returns the
-// positions; throws when Newton does not converge.
-Eigen::Matrix3Xd membrane_static_shape(const structure::SolidMesh& membrane,
-                                       const structure::Material& material, double p);
-
-// Largest downstream displacement of the membrane's nodes from x_m.
-double membrane_deflection(const structure::SolidMesh& membrane, const Eigen::Matrix3Xd& x);
 
 }  // namespace valsalva::validation
