@@ -57,13 +57,6 @@ struct Args {
   std::vector<std::string> settings;  // scene overrides of the coupled run
 };
 
-// Ghost layers for a kernel of `width` h: its support reaches floor(width / 2 + 1/2) cells per
-// axis from the marker's nearest (owned) node, breadth-first on the edge graph (Manhattan
-// distance on hexahedra), so 3 times that, plus one layer the support must not touch.
-int ghost_layers(double width) {
-  return 3 * static_cast<int>(std::floor(width / 2 + 0.5)) + 1;
-}
-
 struct TransferCost {
   double locate = 0, spread = 0, interpolate = 0;  // CPU s per call
   double support = 0;                              // mean nodes per marker
@@ -99,7 +92,8 @@ void marker_clouds(const Args& args, bool root) {
   const auto metrics = valsalva::flow::compute_dual_metrics(mesh);
   auto local = valsalva::flow::distribute(
       mesh, metrics, MPI_COMM_WORLD,
-      {ghost_layers(*std::max_element(args.widths.begin(), args.widths.end())), "metis"});
+      {v::leakage_ghost_layers(*std::max_element(args.widths.begin(), args.widths.end())),
+       "metis"});
   if (root)
     fmt::print(
         "1. marker clouds in the leakage channel, h = {:g} m ({} fluid nodes); CPU us per marker "
@@ -159,7 +153,7 @@ void coupled_step(const Args& args, bool root) {
       z -= s.depth() * std::floor(z / s.depth());
     }
     auto local = valsalva::flow::distribute(sim.mesh(), sim.metrics(), comm.get(),
-                                            {ghost_layers(s.kernel_width), "metis"});
+                                            {v::leakage_ghost_layers(s.kernel_width), "metis"});
     tc = time_transfer(local, ib.options().transfer, markers, repeat);
     Eigen::Matrix3Xd f(3, m);
     const double t = cpu_seconds();

@@ -48,7 +48,7 @@ class ForceSplit {
   ForceSplit(const LeakageSetup& s, const run::Simulation& sim, const ibm::TransferOptions& o)
       : s_(s),
         local_(flow::distribute(sim.mesh(), sim.metrics(), sim.local().comm.get(),
-                                {ghost_layers(s.kernel_width), "metis"})),
+                                {leakage_ghost_layers(s.kernel_width), "metis"})),
         transfer_(local_, o) {
     double v[2] = {0, 0};
     for (int j = 0; j < local_.num_owned; ++j) {
@@ -81,13 +81,6 @@ class ForceSplit {
   }
 
  private:
-  // Ghost layers are breadth-first on the edge graph (Manhattan distance on hexahedra): a
-  // marker's support reaches floor(width / 2 + 1/2) cells per axis from its nearest (owned)
-  // node, so 3 times that, plus one layer that the support must not touch.
-  static int ghost_layers(double width) {
-    return 3 * static_cast<int>(std::floor(width / 2 + 0.5)) + 1;
-  }
-
   const LeakageSetup& s_;
   flow::LocalMesh local_;
   ibm::DiracTransfer transfer_;
@@ -169,7 +162,7 @@ class Sampler {
     sample(sim);
   }
 
-  void step(const run::Simulation& sim) {
+  void observe(const run::Simulation& sim) {
     const double t = sim.state().time, dt = t - last_time_;
     last_time_ = t;
     r_.dt_min = r_.steps == 0 ? dt : std::min(r_.dt_min, dt);
@@ -219,7 +212,7 @@ LeakageResult run_leakage(const LeakageSetup& setup, const std::filesystem::path
   Sampler sampler(s, r);
   SceneRun measure;
   measure.at_start = [&](const run::Simulation& sim) { sampler.start(sim); };
-  measure.observer = [&](const run::Simulation& sim, std::int64_t) { sampler.step(sim); };
+  measure.observer = [&](const run::Simulation& sim, std::int64_t) { sampler.observe(sim); };
   measure.at_end = [&](const run::Simulation& sim) {
     const auto& ib = *sim.immersed();
     const auto& membrane = ib.body(0).mesh();

@@ -57,6 +57,10 @@ std::vector<std::string> leakage_overrides(const LeakageSetup& s) {
       fmt::format("time.end={:.17g}", s.t_end)};
 }
 
+int leakage_ghost_layers(double width) {
+  return 3 * static_cast<int>(std::floor(width / 2 + 0.5)) + 1;
+}
+
 double leakage_inlet_pressure(const LeakageSetup& setup, double t) {
   if (t >= setup.ramp) return setup.pressure;
   const double s = t / setup.ramp;

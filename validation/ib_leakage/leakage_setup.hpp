@@ -51,6 +51,13 @@ std::filesystem::path leakage_scene();
 // a ramp without its table, pressure other than the tables' 100 mmHg).
 std::vector<std::string> leakage_overrides(const LeakageSetup& setup);
 
+// Ghost layers of a partition of the channel's fluid mesh on which a kernel of `width` h spreads
+// and interpolates (the case's force split, the benchmark's transfers): a marker's support
+// reaches floor(width / 2 + 1/2) cells per axis from its nearest (owned) node, breadth-first on
+// the edge graph (Manhattan distance on hexahedra), so 3 times that, plus one layer that the
+// support must not touch.
+int leakage_ghost_layers(double width);
+
 // p_in at time t, as the ramp tables sample it: pressure * (10 s^3 - 15 s^4 + 6 s^5),
 // s = t / ramp, during the ramp, then pressure. The load excites the oscillation of the fluid
 // columns on the membrane's spring (period 7-8 ms, barely damped by viscosity); two continuous
