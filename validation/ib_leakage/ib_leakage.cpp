@@ -1,5 +1,5 @@
 // Leakage of the immersed membrane (issue 6, item 4): a thick membrane clamped across a 2D
-// channel and loaded by 100 mmHg, the closed aortic valve in diastole (leakage_channel.hpp,
+// channel and loaded by 100 mmHg, the closed aortic valve in diastole (leakage_setup.hpp,
 // leakage_run.hpp), for several fluid mesh sizes h and kernel widths. The known weakness of
 // immersed methods: the membrane is only a force spread over a few cells, so fluid can pass
 // through it, and the pressure jump it holds is smeared over the kernel. The ITBM study this
@@ -12,7 +12,9 @@
 // reaction, the deflection and the static finite-element deflection under the same jump.
 // Metrics: force balance (tether reaction = jump x span), the sustained jump on the finest mesh,
 // the leak fraction bound and its trend with h, the deflection against the static solution, and
-// the steadiness of the leak at the end. Data: runs.csv, history.csv, profile.csv, membrane.csv.
+// the steadiness of the leak at the end. Each run is ib_leakage.toml with the run's overrides
+// (leakage_setup.hpp), run by run::Simulation like `valsalva run`. Data: runs.csv, history.csv,
+// profile.csv, membrane.csv; each run's own outputs (log.csv, structures.csv) in runs/<label>/.
 #include <fmt/format.h>
 #include <fmt/os.h>
 
@@ -40,7 +42,7 @@ std::string label_of(const LeakageSetup& s) {
 void write_data(const Context& ctx, const std::vector<Run>& runs) {
   auto table = fmt::output_file((ctx.out_dir / "runs.csv").string());
   table.print(
-      "label,h,kernel_width,thickness,nodes,markers,dt,dt_bound,steps,leak,leak_reference,"
+      "label,h,kernel_width,thickness,nodes,markers,dt,dt_min,dt_max,steps,leak,leak_reference,"
       "leak_fraction,leak_change,ramp_leak,jump_mmhg,imposed_mmhg,tether,interior,wall,force_"
       "balance,"
       "deflection,static_deflection,wall_seconds\n");
@@ -55,10 +57,11 @@ void write_data(const Context& ctx, const std::vector<Run>& runs) {
   for (const auto& [label, r] : runs) {
     const auto& s = r.setup;
     table.print(
-        "{},{:g},{:g},{:g},{},{},{:.6e},{:.6e},{},{:.6e},{:.6e},{:.6e},{:.3e},{:.4f},{:.6f},{:.6f},"
+        "{},{:g},{:g},{:g},{},{},{:.6e},{:.6e},{:.6e},{},{:.6e},{:.6e},{:.6e},{:.3e},{:.4f},{:.6f},"
+        "{:.6f},"
         "{:.6e},{:.6e},{:.6e},{:.6f},{:.6e},{:.6e},{:.1f}\n",
-        label, s.h, s.kernel_width, s.thickness, r.nodes, r.markers, r.dt, r.dt_bound, r.steps,
-        r.leak, r.leak_reference, r.leak / r.leak_reference, r.leak_change, r.ramp_leak,
+        label, s.h, s.kernel_width, s.thickness, r.nodes, r.markers, r.dt, r.dt_min, r.dt_max,
+        r.steps, r.leak, r.leak_reference, r.leak / r.leak_reference, r.leak_change, r.ramp_leak,
         r.jump / io::pascal_per_mmhg, s.pressure / io::pascal_per_mmhg, r.tether, r.interior,
         r.wall, r.interior / (r.jump * r.interior_span), r.deflection, r.static_deflection,
         r.wall_seconds);
@@ -133,17 +136,18 @@ void run(const Context& ctx, Report& report) {
     setups = {setup(1e-3, 4), setup(2e-3 / 3, 4), setup(0.5e-3, 4), setup(1e-3, 3), setup(1e-3, 6)};
   std::vector<Run> runs;
   for (const auto& s : setups) {
-    runs.push_back({label_of(s), run_leakage(s, ctx.comm)});
+    const auto label = label_of(s);
+    runs.push_back({label, run_leakage(s, ctx.out_dir / "runs" / label, ctx.comm)});
     const auto& r = runs.back().result;
     if (rank == 0)
       fmt::print(
-          "ib_leakage {}: {} nodes, {} markers, dt {:.3e} s (bound {:.3e}), {} steps, leak "
+          "ib_leakage {}: {} nodes, {} markers, dt {:.3e} s ({:.3e} .. {:.3e}), {} steps, leak "
           "{:.4e} m^2/s ({:.3e} of Bernoulli, change {:.1e}; leaked in the ramp {:.3f} of the "
           "displaced area), jump {:.2f} mmHg, force on "
           "interior nodes / (jump (H - h)) {:.4f}, on wall nodes / interior {:.4f}, tether / "
           "interior "
           "{:.4f}, deflection {:.4f} mm (static {:.4f}), {:.0f} s\n",
-          runs.back().label, r.nodes, r.markers, r.dt, r.dt_bound, r.steps, r.leak,
+          runs.back().label, r.nodes, r.markers, r.dt, r.dt_min, r.dt_max, r.steps, r.leak,
           r.leak / r.leak_reference, r.leak_change, r.ramp_leak, r.jump / io::pascal_per_mmhg,
           r.interior / (r.jump * r.interior_span), r.wall / r.interior, r.tether / r.interior,
           r.deflection * 1e3, r.static_deflection * 1e3, r.wall_seconds);

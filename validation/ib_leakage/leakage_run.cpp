@@ -1,14 +1,20 @@
-// One leakage run; see leakage_run.hpp.
+// One leakage run through the scene; see leakage_run.hpp.
 #include "validation/ib_leakage/leakage_run.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
-#include "flow/run_diagnostics.hpp"
+#include "ibm/dirac_transfer.hpp"
+#include "ibm/immersed_structure.hpp"
 #include "io/pressure_drop.hpp"
+#include "structure/solid_forces.hpp"
+#include "validation/ib_leakage/leakage_membrane.hpp"
+#include "validation/scene_run.hpp"
 
 namespace valsalva::validation {
 
@@ -17,16 +23,16 @@ namespace {
 constexpr double region_distance = 5e-3, region_radius = 1.5e-3;  // m, see the header
 
 // Pressure on the node row nearest y = H/2 (z = 0), indexed by round(x / h), all ranks.
-void centre_line_pressure(const LeakageChannel& c, const flow::ScalarField& p, LeakageResult& r) {
-  const auto& s = c.setup;
+void centre_line_pressure(const LeakageSetup& s, const flow::LocalMesh& local,
+                          const flow::ScalarField& p, LeakageResult& r) {
   const int n = static_cast<int>(std::lround(s.length() / s.h)) + 1;
   std::vector<double> sum(static_cast<std::size_t>(n), 0.0);
-  for (int j = 0; j < c.local.num_owned; ++j) {
-    const auto& x = c.local.position[j];
+  for (int j = 0; j < local.num_owned; ++j) {
+    const auto& x = local.position[j];
     if (std::abs(x.y() - s.height / 2) > 0.51 * s.h || std::abs(x.z()) > s.h / 4) continue;
     sum[static_cast<std::size_t>(std::lround(x.x() / s.h))] = p[j];
   }
-  MPI_Allreduce(MPI_IN_PLACE, sum.data(), n, MPI_DOUBLE, MPI_SUM, c.local.comm.get());
+  MPI_Allreduce(MPI_IN_PLACE, sum.data(), n, MPI_DOUBLE, MPI_SUM, local.comm.get());
   for (int i = 0; i < n; ++i) {
     r.profile_x.push_back(i * s.h);
     r.profile_p.push_back(sum[static_cast<std::size_t>(i)]);
@@ -35,41 +41,48 @@ void centre_line_pressure(const LeakageChannel& c, const flow::ScalarField& p, L
 
 // The membrane's force on the fluid, split between interior nodes and wall nodes (whose
 // velocity is imposed, so the force spread there never reaches the fluid): spreads the last
-// marker forces again through a transfer of the same kernel. Returns {interior, wall} x sums.
-struct ForceSplit {
-  explicit ForceSplit(LeakageChannel& c) : c_(c), transfer_(c.local, c.ib->options().transfer) {
+// marker forces again through a transfer of the same kernel, on a partition of the run's fluid
+// mesh of its own (the run's is read-only to its observers). Returns {interior, wall} x sums.
+class ForceSplit {
+ public:
+  ForceSplit(const LeakageSetup& s, const run::Simulation& sim, const ibm::TransferOptions& o)
+      : s_(s),
+        local_(flow::distribute(sim.mesh(), sim.metrics(), sim.local().comm.get(),
+                                {leakage_ghost_layers(s.kernel_width), "metis"})),
+        transfer_(local_, o) {
     double v[2] = {0, 0};
-    for (int j = 0; j < c.local.num_owned; ++j) {
-      const double y = c.local.position[j].y();
-      wall_.push_back(y < 1e-9 * c.setup.height || y > (1 - 1e-9) * c.setup.height);
-      v[wall_.back() ? 1 : 0] += c.local.volume[j];
+    for (int j = 0; j < local_.num_owned; ++j) {
+      const double y = local_.position[j].y();
+      wall_.push_back(y < 1e-9 * s.height || y > (1 - 1e-9) * s.height);
+      v[wall_.back() ? 1 : 0] += local_.volume[j];
     }
-    const double interior = c.local.comm.sum(v[0]);
-    span_ = c.setup.height * interior / (interior + c.local.comm.sum(v[1]));
+    const double interior = local_.comm.sum(v[0]);
+    span_ = s.height * interior / (interior + local_.comm.sum(v[1]));
   }
   // Height of the interior nodes' dual volumes (H - h on the uniform mesh): the pressure
   // gradient over the wall nodes' half cells meets their imposed velocity, not the membrane.
   double interior_span() const { return span_; }
-  std::array<double, 2> operator()() {
-    const double depth = c_.setup.depth();
-    wrapped_ = c_.ib->positions();
+  std::array<double, 2> operator()(const ibm::ImmersedStructure& ib) {
+    const double depth = s_.depth();
+    wrapped_ = ib.positions();
     for (int a = 0; a < wrapped_.cols(); ++a)
       wrapped_(2, a) -= depth * std::floor(wrapped_(2, a) / depth);
     transfer_.locate({reinterpret_cast<const Eigen::Vector3d*>(wrapped_.data()),
                       static_cast<std::size_t>(wrapped_.cols())});
-    force_ = c_.ib->forces();
-    density_.resize(static_cast<std::size_t>(c_.local.num_local()));
+    force_ = ib.forces();
+    density_.resize(static_cast<std::size_t>(local_.num_local()));
     transfer_.spread({reinterpret_cast<const Eigen::Vector3d*>(force_.data()),
                       static_cast<std::size_t>(force_.cols())},
                      density_);
     std::array<double, 2> sum{0, 0};
-    for (int j = 0; j < c_.local.num_owned; ++j)
-      sum[wall_[j] ? 1 : 0] += c_.local.volume[j] * density_[j].x();
-    return {c_.local.comm.sum(sum[0]), c_.local.comm.sum(sum[1])};
+    for (int j = 0; j < local_.num_owned; ++j)
+      sum[wall_[j] ? 1 : 0] += local_.volume[j] * density_[j].x();
+    return {local_.comm.sum(sum[0]), local_.comm.sum(sum[1])};
   }
 
  private:
-  LeakageChannel& c_;
+  const LeakageSetup& s_;
+  flow::LocalMesh local_;
   ibm::DiracTransfer transfer_;
   std::vector<char> wall_;
   double span_ = 0;
@@ -113,120 +126,130 @@ void window_means(const std::vector<LeakageSample>& h, double t1, double t2, Lea
   r.wall = wall / span, r.deflection = deflection / span;
 }
 
+// What the run's hooks measure: set up at the start (the simulation's mesh and membrane), a
+// sample every t_end / 400 of simulated time and at the end.
+class Sampler {
+ public:
+  Sampler(const LeakageSetup& s, LeakageResult& r) : s_(s), r_(r) {}
+
+  void start(const run::Simulation& sim) {
+    const auto& ib = *sim.immersed();
+    const auto& membrane = ib.body(0).mesh();
+    r_.nodes = sim.local().global_nodes;
+    r_.markers = ib.num_markers();
+    line_ = membrane_centre_line(membrane, s_.membrane_x(), s_.thickness);
+    const double expected = membrane_deflection(
+        membrane,
+        membrane_static_shape(membrane, ib.body(0).solid_forces().material(), s_.pressure));
+    const Eigen::Vector3d mid(0, s_.height / 2, s_.depth() / 2);
+    const double x_up = s_.membrane_x() - s_.thickness / 2 - region_distance;
+    const double x_down = s_.membrane_x() + s_.thickness / 2 + expected + region_distance;
+    if (x_up - region_radius < 0 || x_down + region_radius > s_.length())
+      throw std::invalid_argument(fmt::format(
+          "ib_leakage: pressure regions at x = {:.4g} and {:.4g} m (radius {:.3g} m) do not fit "
+          "in the channel [0, {:.4g}] m; lengthen `upstream` or `downstream`",
+          x_up, x_down, region_radius, s_.length()));
+    up_ = std::make_unique<io::RegionMean>(sim.local(), mid + Eigen::Vector3d(x_up, 0, 0),
+                                           region_radius, "upstream");
+    down_ = std::make_unique<io::RegionMean>(sim.local(), mid + Eigen::Vector3d(x_down, 0, 0),
+                                             region_radius, "downstream");
+    split_ = std::make_unique<ForceSplit>(s_, sim, ib.options().transfer);
+    r_.interior_span = split_->interior_span();
+    const auto& mesh = sim.mesh();
+    inlet_ = static_cast<std::size_t>(mesh.patch_index("xmin"));
+    outlet_ = static_cast<std::size_t>(mesh.patch_index("xmax"));
+    last_time_ = sim.state().time;
+    sample(sim);
+  }
+
+  void observe(const run::Simulation& sim) {
+    const double t = sim.state().time, dt = t - last_time_;
+    last_time_ = t;
+    r_.dt_min = r_.steps == 0 ? dt : std::min(r_.dt_min, dt);
+    r_.dt_max = std::max(r_.dt_max, dt);
+    ++r_.steps;
+    if (t >= next_ * (1 - 1e-12) || t >= s_.t_end * (1 - 1e-12)) sample(sim);
+  }
+
+  const std::vector<int>& line() const { return line_; }
+
+ private:
+  void sample(const run::Simulation& sim) {
+    const auto& state = sim.state();
+    const auto& ib = *sim.immersed();
+    const auto& membrane = ib.body(0).mesh();
+    const double depth = s_.depth();
+    const auto flux = sim.loop().boundary()->patch_fluxes(state.velocity);
+    const auto& x = ib.positions();
+    const auto force = (*split_)(ib);
+    r_.history.push_back({state.time, leakage_inlet_pressure(s_, state.time), -flux[inlet_] / depth,
+                          flux[outlet_] / depth, displaced_area(line_, x, s_.membrane_x()),
+                          membrane_deflection(membrane, x),
+                          (*up_)(state.pressure) - (*down_)(state.pressure),
+                          -ib.tether_force(0).x() / depth, -force[0] / depth, -force[1] / depth,
+                          ib.velocities().colwise().norm().maxCoeff()});
+    next_ = state.time + s_.t_end / 400;
+  }
+
+  const LeakageSetup& s_;
+  LeakageResult& r_;
+  std::vector<int> line_;
+  std::unique_ptr<io::RegionMean> up_, down_;
+  std::unique_ptr<ForceSplit> split_;
+  std::size_t inlet_ = 0, outlet_ = 0;
+  double next_ = 0, last_time_ = 0;
+};
+
 }  // namespace
 
-std::vector<int> membrane_centre_line(const LeakageSetup& s, const structure::SolidMesh& m) {
-  std::vector<int> line;
-  for (int a = 0; a < m.num_nodes(); ++a)
-    if (std::abs(m.X(0, a) - s.membrane_x()) < 1e-6 * s.thickness && std::abs(m.X(2, a)) < 1e-9)
-      line.push_back(a);
-  std::sort(line.begin(), line.end(), [&](int a, int b) { return m.X(1, a) < m.X(1, b); });
-  return line;
-}
-
-LeakageResult run_leakage(const LeakageSetup& setup, MPI_Comm comm) {
+LeakageResult run_leakage(const LeakageSetup& setup, const std::filesystem::path& run_dir,
+                          MPI_Comm comm) {
   const double t0 = MPI_Wtime();
-  LeakageChannel c(setup, comm);
-  const auto& s = c.setup;
+  const auto& s = setup;
   LeakageResult r;
   r.setup = s;
-  r.nodes = c.local.global_nodes;
-  r.markers = c.ib->num_markers();
   r.leak_reference = s.height * std::sqrt(2 * s.pressure / s.density);
-  if (!(s.ramp > 0) || !(s.t_end > s.ramp))
-    throw std::invalid_argument(fmt::format(
-        "ib_leakage: ramp {} s and t_end {} s: need 0 < ramp < t_end", s.ramp, s.t_end));
-
-  // Time step: a fraction of the coupling bound at the flat start, within RK4's viscous limit
-  // (7-point Laplacian eigenvalue 12/h^2); the whole RK4 stability limit is checked on every
-  // sample.
-  const double nu = s.viscosity / s.density;
-  r.dt_bound = c.ib->stable_time_step();
-  r.dt = std::min(s.dt_fraction * r.dt_bound, 0.5 * flow::rk4_real_limit * s.h * s.h / (12 * nu));
-  c.ib->check_time_step(r.dt);
-  const int steps = static_cast<int>(std::ceil(s.t_end / r.dt - 1e-9));
-  const int every = std::max(1, steps / 400);
-
-  const double depth = s.depth();
-  const auto line = membrane_centre_line(s, c.membrane);
-  const double expected =
-      membrane_deflection(c.membrane, membrane_static_shape(c.membrane, *c.material, s.pressure));
-  const Eigen::Vector3d mid(0, s.height / 2, depth / 2);
-  const double x_up = s.membrane_x() - s.thickness / 2 - region_distance;
-  const double x_down = s.membrane_x() + s.thickness / 2 + expected + region_distance;
-  if (x_up - region_radius < 0 || x_down + region_radius > s.length())
-    throw std::invalid_argument(fmt::format(
-        "ib_leakage: pressure regions at x = {:.4g} and {:.4g} m (radius {:.3g} m) do not fit "
-        "in the channel [0, {:.4g}] m; lengthen `upstream` or `downstream`",
-        x_up, x_down, region_radius, s.length()));
-  const io::RegionMean up(c.local, mid + Eigen::Vector3d(x_up, 0, 0), region_radius, "upstream");
-  const io::RegionMean down(c.local, mid + Eigen::Vector3d(x_down, 0, 0), region_radius,
-                            "downstream");
-  ForceSplit split(c);
-  r.interior_span = split.interior_span();
-
-  flow::FlowState state{flow::VectorField(c.local.num_local(), Eigen::Vector3d::Zero()),
-                        flow::ScalarField(c.local.num_local(), 0.0), 0.0};
-  const auto weights = flow::laplacian_weights(c.local);
-  std::vector<double> scratch;
-  auto sample = [&]() {
-    const auto flux = c.bc->patch_fluxes(state.velocity);
-    const auto& x = c.ib->positions();
-    const auto force = split();
-    r.history.push_back(
-        {state.time, c.inlet_pressure(state.time),
-         -flux[static_cast<std::size_t>(c.inlet_patch)] / depth,
-         flux[static_cast<std::size_t>(c.outlet_patch)] / depth,
-         displaced_area(line, x, s.membrane_x()), membrane_deflection(c.membrane, x),
-         up(state.pressure) - down(state.pressure), -c.ib->tether_force(0).x() / depth,
-         -force[0] / depth, -force[1] / depth, c.ib->velocities().colwise().norm().maxCoeff()});
-    const auto rates = flow::stability_rates(c.local, weights, nu, state.velocity, scratch);
-    if (r.dt * rates.stability > 1)
-      throw std::runtime_error(fmt::format(
-          "ib_leakage: dt {:.4g} s beyond the RK4 stability limit {:.4g} s at t = {:.4g} s", r.dt,
-          1 / rates.stability, state.time));
+  Sampler sampler(s, r);
+  SceneRun measure;
+  measure.at_start = [&](const run::Simulation& sim) { sampler.start(sim); };
+  measure.observer = [&](const run::Simulation& sim, std::int64_t) { sampler.observe(sim); };
+  measure.at_end = [&](const run::Simulation& sim) {
+    const auto& ib = *sim.immersed();
+    const auto& membrane = ib.body(0).mesh();
+    const double t2 = r.history.back().time, t1 = t2 - (s.t_end - s.ramp) / 2;
+    const double tm = (t1 + t2) / 2;
+    double first = 0, second = 0;
+    LeakageResult halves;
+    window_means(r.history, t1, tm, halves, first);
+    window_means(r.history, tm, t2, halves, second);
+    window_means(r.history, t1, t2, r, r.leak);
+    // Volume that crossed the moving membrane while the load was ramped: int Q_in - [A].
+    double inflow = 0;
+    const LeakageSample* ramp_end = &r.history.front();
+    for (std::size_t i = 1; i < r.history.size() && r.history[i].time <= s.ramp + 1e-12; ++i) {
+      inflow += (r.history[i].time - r.history[i - 1].time) *
+                (r.history[i].flow_in + r.history[i - 1].flow_in) / 2;
+      ramp_end = &r.history[i];
+    }
+    r.ramp_leak = (inflow - ramp_end->area) / ramp_end->area;
+    r.leak_change = std::abs(first - second) / r.leak_reference;
+    centre_line_pressure(s, sim.local(), sim.state().pressure, r);
+    const Eigen::Matrix3Xd statics =
+        membrane_static_shape(membrane, ib.body(0).solid_forces().material(), r.jump);
+    r.static_deflection = membrane_deflection(membrane, statics);
+    const auto& line = sampler.line();
+    for (const auto& [from, to] :
+         {std::pair{&ib.positions(), &r.final_line}, std::pair{&statics, &r.static_line}}) {
+      to->resize(3, static_cast<Eigen::Index>(line.size()));
+      for (std::size_t i = 0; i < line.size(); ++i)
+        to->col(static_cast<Eigen::Index>(i)) = from->col(line[i]);
+    }
   };
-  sample();
-  for (int n = 1; n <= steps; ++n) {
-    const double p_in = c.inlet_pressure(state.time + r.dt);
-    for (int j : c.inlet_nodes) state.pressure[j] = p_in;
-    const auto report = c.flow->step(state, r.dt);
-    c.ib->finish_step(state);
-    // |div u| stays near round-off / h in a sane run; 1e6 1/s is a blow-up.
-    if (!std::isfinite(report.max_divergence) || report.max_divergence > 1e6)
-      throw std::runtime_error(fmt::format(
-          "ib_leakage: the run blew up at step {} (t = {:.4g} s, max |div u| {:.3g} 1/s)", n,
-          state.time, report.max_divergence));
-    if (n % every == 0 || n == steps) sample();
-  }
-  r.steps = steps;
-
-  const double t2 = r.history.back().time, t1 = t2 - (s.t_end - s.ramp) / 2, tm = (t1 + t2) / 2;
-  double first = 0, second = 0;
-  LeakageResult halves;
-  window_means(r.history, t1, tm, halves, first);
-  window_means(r.history, tm, t2, halves, second);
-  window_means(r.history, t1, t2, r, r.leak);
-  // Volume that crossed the moving membrane while the load was ramped: int Q_in - [A].
-  double inflow = 0;
-  const LeakageSample* ramp_end = &r.history.front();
-  for (std::size_t i = 1; i < r.history.size() && r.history[i].time <= s.ramp + 1e-12; ++i) {
-    inflow += (r.history[i].time - r.history[i - 1].time) *
-              (r.history[i].flow_in + r.history[i - 1].flow_in) / 2;
-    ramp_end = &r.history[i];
-  }
-  r.ramp_leak = (inflow - ramp_end->area) / ramp_end->area;
-  r.leak_change = std::abs(first - second) / r.leak_reference;
-  centre_line_pressure(c, state.pressure, r);
-  const auto statics = membrane_static_shape(c.membrane, *c.material, r.jump);
-  r.static_deflection = membrane_deflection(c.membrane, statics);
-  for (const auto& [from, to] :
-       {std::pair{&c.ib->positions(), &r.final_line}, std::pair{&statics, &r.static_line}}) {
-    to->resize(3, static_cast<Eigen::Index>(line.size()));
-    for (std::size_t i = 0; i < line.size(); ++i)
-      to->col(static_cast<Eigen::Index>(i)) = from->col(line[i]);
-  }
-  r.wall_seconds = c.local.comm.max(MPI_Wtime() - t0);
+  const auto result = run_scene_file(leakage_scene(), leakage_overrides(s), run_dir, comm, measure);
+  r.dt = result.summary.time / static_cast<double>(result.summary.steps);
+  double wall = MPI_Wtime() - t0;
+  MPI_Allreduce(MPI_IN_PLACE, &wall, 1, MPI_DOUBLE, MPI_MAX, comm);
+  r.wall_seconds = wall;
   return r;
 }
 

@@ -1,8 +1,10 @@
-// One run of the leakage channel (leakage_channel.hpp): the pressure is ramped to the full load
-// and held. Sampled: the flow through the ends, the area the membrane displaces, the pressure
-// jump between two region means (io::RegionMean: spheres of radius 1.5 mm on the centre line,
-// 5 mm upstream of the membrane and 5 mm downstream of the static solution's most deflected point
-// under the imposed load, beyond the widest kernel's reach of 3 mm), the tether reaction and the
+// One run of the leakage channel (leakage_setup.hpp): ib_leakage.toml with the setup's
+// overrides, run by run::Simulation like `valsalva run` (validation/scene_run.hpp); the pressure
+// is ramped to the full load and held. Sampled by the run's observer, every t_end / 400 and at
+// the end: the flow through the ends, the area the membrane displaces, the pressure jump between
+// two region means (io::RegionMean: spheres of radius 1.5 mm on the centre line, 5 mm upstream
+// of the membrane and 5 mm downstream of the static solution's most deflected point under the
+// imposed load, beyond the widest kernel's reach of 3 mm), the tether reaction and the
 // membrane's force on the fluid split between interior and wall nodes.
 // The leak is measured by mass balance, not from the instantaneous flow: the fluid upstream of
 // the membrane gains D dA/dt (A the area between the membrane's mid-surface and its flat start,
@@ -13,9 +15,11 @@
 
 #include <mpi.h>
 
+#include <Eigen/Core>
+#include <filesystem>
 #include <vector>
 
-#include "validation/ib_leakage/leakage_channel.hpp"
+#include "validation/ib_leakage/leakage_setup.hpp"
 
 namespace valsalva::validation {
 
@@ -33,8 +37,11 @@ struct LeakageSample {
 struct LeakageResult {
   LeakageSetup setup;
   long long nodes = 0;
-  int markers = 0, steps = 0;
-  double dt = 0, dt_bound = 0, wall_seconds = 0;
+  int markers = 0;
+  long long steps = 0;
+  // Mean, smallest and largest time step of the run loop (a fraction of the coupling's bound,
+  // re-evaluated as the membrane deforms, within the viscous limit: ib_leakage.toml).
+  double dt = 0, dt_min = 0, dt_max = 0, wall_seconds = 0;
   std::vector<LeakageSample> history;
   // Window means (see above).
   double leak = 0;            // per depth [m^2/s]
@@ -51,11 +58,9 @@ struct LeakageResult {
   Eigen::Matrix3Xd final_line, static_line;  // membrane centre line at the end, static
 };
 
-// Collective; throws when the run blows up (non-finite or huge divergence), naming the step.
-LeakageResult run_leakage(const LeakageSetup& setup, MPI_Comm comm);
-
-// Mid-surface nodes of the z = 0 layer sorted by y (the membrane's centre line).
-std::vector<int> membrane_centre_line(const LeakageSetup& setup,
-                                      const structure::SolidMesh& membrane);
+// Collective; the run goes to `run_dir` (log.csv, structures.csv, ...; empty: a scratch folder).
+// Throws what the run loop throws when the run blows up.
+LeakageResult run_leakage(const LeakageSetup& setup, const std::filesystem::path& run_dir,
+                          MPI_Comm comm);
 
 }  // namespace valsalva::validation
