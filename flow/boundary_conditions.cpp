@@ -146,6 +146,11 @@ BoundaryConditions::BoundaryConditions(const LocalMesh& mesh, std::vector<Bounda
             "inlet '{}': the Womersley profile is the exact solution for a sine flow rate; use "
             "waveform sine (or a flat or Poiseuille profile)",
             spec.patch));
+      if (spec.flow_rate.ramp != 0)
+        throw std::invalid_argument(fmt::format(
+            "inlet '{}': the Womersley profile is the periodic state of a sine flow rate, not "
+            "its start from rest; use ramp = 0 (or a flat or Poiseuille profile)",
+            spec.patch));
       if (!(nu > 0))
         throw std::invalid_argument(fmt::format(
             "inlet '{}': the Womersley profile needs a positive viscosity", spec.patch));

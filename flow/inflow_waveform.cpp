@@ -10,24 +10,37 @@
 
 namespace valsalva::flow {
 
-double Waveform::operator()(double time) const {
-  switch (kind) {
-    case Kind::constant:
-      return mean;
-    case Kind::sine:
-      return mean + amplitude * std::sin(2 * std::numbers::pi * time / period + phase);
-    case Kind::table: {
+namespace {
+
+double unramped(const Waveform& w, double time) {
+  const auto& t = w.t;
+  const auto& q = w.q;
+  switch (w.kind) {
+    case Waveform::Kind::constant:
+      return w.mean;
+    case Waveform::Kind::sine:
+      return w.mean + w.amplitude * std::sin(2 * std::numbers::pi * time / w.period + w.phase);
+    case Waveform::Kind::table: {
       const double span = t.back() - t.front();
       double s = std::fmod(time - t.front(), span);
       if (s < 0) s += span;
       s += t.front();
       const auto it = std::upper_bound(t.begin(), t.end(), s);
       const std::size_t k = std::clamp<std::size_t>(it - t.begin(), 1, t.size() - 1);
-      const double w = (s - t[k - 1]) / (t[k] - t[k - 1]);
-      return (1 - w) * q[k - 1] + w * q[k];
+      const double a = (s - t[k - 1]) / (t[k] - t[k - 1]);
+      return (1 - a) * q[k - 1] + a * q[k];
     }
   }
   return 0;
+}
+
+}  // namespace
+
+double Waveform::operator()(double time) const {
+  const double q = unramped(*this, time);
+  if (!(ramp > 0) || time >= ramp) return q;
+  if (time <= 0) return 0;
+  return q * 0.5 * (1 - std::cos(std::numbers::pi * time / ramp));
 }
 
 Waveform table_waveform(std::vector<double> t, std::vector<double> q) {

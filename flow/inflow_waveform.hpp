@@ -2,7 +2,9 @@
 //   Q(t) = mean + amplitude sin(2 pi t / period + phase),
 // or a table of (t, Q) rows (from a CSV file, io/waveform_table.hpp), linearly interpolated and
 // repeated with the period t_last - t_first (the table covers one cycle; its last row should
-// repeat the first Q, else Q jumps at the wrap).
+// repeat the first Q, else Q jumps at the wrap). Any of them may start smoothly from rest: with
+// ramp > 0, Q(t) is multiplied by (1 - cos(pi t / ramp)) / 2 for t < ramp (0 at t <= 0), the
+// inflow ramp of the Turek-Hron benchmark.
 #pragma once
 
 #include <stdexcept>
@@ -19,6 +21,7 @@ struct Waveform {
   double period = 1;         // s (sine; tables: t_last - t_first)
   double phase = 0;          // rad (sine)
   std::vector<double> t, q;  // table rows, t strictly increasing
+  double ramp = 0;           // s; > 0: the smooth start (1 - cos(pi t / ramp)) / 2; 0 = none
 
   double operator()(double time) const;
 };

@@ -106,6 +106,12 @@ flow::Mesh build_mesh(const Scene& scene, MPI_Comm comm) {
     spec.centre_x = scene.get<double>(k + "centre_x");
     spec.centre_y = scene.get<double>(k + "centre_y");
     spec.split = scene.get<std::string>(k + "cells") == "tetra";
+    spec.box_size = scene.get<double>(k + "box_size");
+    spec.box_x0 = scene.get<double>(k + "box_x0");
+    spec.box_x1 = scene.get<double>(k + "box_x1");
+    spec.box_y0 = scene.get<double>(k + "box_y0");
+    spec.box_y1 = scene.get<double>(k + "box_y1");
+    spec.box_transition = scene.get<double>(k + "box_transition");
     try {
       mesh = generate_cylinder_channel_mesh(spec);
     } catch (const std::invalid_argument& e) {

@@ -243,6 +243,15 @@ void declare_boundary_keys(Schema& s) {
           "first to the last time, linearly interpolated, repeated");
   s.when(b + ".file", b + ".type", {"inlet"});
   s.when(b + ".file", b + ".waveform", {"table"});
+  s.real(b + ".ramp")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("s")
+      .doc(
+          "Smooth start from rest: Q(t) times (1 - cos(pi t / ramp)) / 2 for t < ramp (the "
+          "Turek-Hron inflow ramp); 0 = the full waveform from t = 0; not with profile = "
+          "womersley");
+  s.when(b + ".ramp", b + ".type", {"inlet"});
   s.string(b + ".swap_with")
       .def("")
       .unit_of("-")
@@ -359,6 +368,12 @@ std::vector<flow::BoundarySpec> read_boundary_conditions(const Scene& scene,
           q.phase = scene.get<double>(key + ".phase");
         }
       }
+      q.ramp = scene.get<double>(key + ".ramp");
+      if (spec.profile == flow::InletProfile::womersley && q.ramp != 0)
+        throw scene.error(key + ".ramp",
+                          "the Womersley profile is the periodic state of a sine flow rate, not "
+                          "its start from rest",
+                          "0 with profile = \"womersley\"");
       if (spec.profile == flow::InletProfile::womersley && waveform != "sine")
         throw scene.error(key + ".profile",
                           "the Womersley profile is the exact solution for a sine flow rate: "

@@ -186,6 +186,24 @@ void declare_mesh_keys(Schema& s) {
       .def(0.2)
       .unit_of("m")
       .doc("Cylinder centre, y (from the lower wall)");
+  s.real("mesh.cylinder_channel.box_size")
+      .def(0.0)
+      .at_least(0)
+      .unit_of("m")
+      .doc(
+          "Triangle edge length inside the refinement box [box_x0, box_x1] x [box_y0, box_y1] "
+          "(an immersed structure and its swing, e.g. the Turek-Hron bar), growing linearly to "
+          "size_far over box_transition outside it; the finer of the cylinder's and the box's "
+          "size applies; 0 = no refinement box");
+  s.real("mesh.cylinder_channel.box_x0").def(0.0).unit_of("m").doc("Refinement box, lower x");
+  s.real("mesh.cylinder_channel.box_x1").def(0.0).unit_of("m").doc("Refinement box, upper x");
+  s.real("mesh.cylinder_channel.box_y0").def(0.0).unit_of("m").doc("Refinement box, lower y");
+  s.real("mesh.cylinder_channel.box_y1").def(0.0).unit_of("m").doc("Refinement box, upper y");
+  s.real("mesh.cylinder_channel.box_transition")
+      .def(0.1)
+      .above(0)
+      .unit_of("m")
+      .doc("Distance outside the refinement box over which the size grows to size_far");
 
   s.section("mesh.periodic.<pair>",
             "Periodic patch pair (any table name): every node of `slave` sits at a node of "

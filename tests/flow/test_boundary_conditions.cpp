@@ -11,6 +11,9 @@
 
 #include "field_test_utils.hpp"
 #include "flow/run_loop.hpp"
+#include "io/mesh_source.hpp"
+#include "io/scene.hpp"
+#include "io/scene_keys_boundary.hpp"
 
 using namespace valsalva;
 
@@ -347,4 +350,47 @@ TEST_CASE("pressure outlets take out the viscous boundary flux (do-nothing, trac
     CHECK(total.x() == doctest::Approx(-(stress ? 2 : 1) * nu * area).epsilon(1e-12));
     CHECK(std::abs(total.y()) + std::abs(total.z()) < 1e-15);
   }
+}
+
+TEST_CASE("inflow ramp: (1 - cos(pi t / ramp)) / 2 times Q(t) until t = ramp, from the scene key") {
+  auto q = sine(2.0, 0.5, 0.3);
+  q.ramp = 1.0;
+  for (double t : {0.1, 0.25, 0.5, 0.9}) {
+    auto plain = q;
+    plain.ramp = 0;
+    CHECK(q(t) == doctest::Approx(plain(t) * 0.5 * (1 - std::cos(std::numbers::pi * t))));
+  }
+  CHECK(q(0.0) == 0.0);
+  CHECK(q(-0.2) == 0.0);
+  CHECK(q(1.0) == doctest::Approx(2.0 + 0.5 * std::sin(2 * std::numbers::pi / 0.3)));
+  CHECK(q(1.7) == doctest::Approx(2.0 + 0.5 * std::sin(2 * std::numbers::pi * 1.7 / 0.3)));
+
+  const std::string scene_text = R"(
+[mesh]
+source = "box"
+[mesh.box]
+cells = [4, 4, 4]
+periodic = ["z"]
+[boundary.xmin]
+type = "inlet"
+flow_rate = 3.0
+ramp = 0.5
+[boundary.xmax]
+type = "pressure_outlet"
+[boundary.ymin]
+type = "wall"
+[boundary.ymax]
+type = "wall"
+)";
+  const auto scene = io::parse_scene(scene_text, "t.toml");
+  const auto specs = io::read_boundary_conditions(scene, io::build_mesh(scene));
+  bool found = false;
+  for (const auto& spec : specs)
+    if (spec.patch == "xmin") {
+      found = true;
+      CHECK(spec.flow_rate.ramp == 0.5);
+      CHECK(spec.flow_rate(0.25) == doctest::Approx(1.5));
+      CHECK(spec.flow_rate(0.6) == doctest::Approx(3.0));
+    }
+  CHECK(found);
 }

@@ -12,7 +12,9 @@
 #include "flow/mesh_check.hpp"
 #include "io/box_generator.hpp"
 #include "io/cylinder_channel_generator.hpp"
+#include "io/mesh_source.hpp"
 #include "io/prism_split.hpp"
+#include "io/scene.hpp"
 
 using namespace valsalva;
 
@@ -22,6 +24,19 @@ double total_volume(const flow::Mesh& mesh) {
   double v = 0;
   for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) v += flow::cell_volume(mesh, c);
   return v;
+}
+
+// A coarse channel with a refinement box behind the cylinder.
+io::CylinderChannelSpec refined_spec() {
+  io::CylinderChannelSpec spec;
+  spec.size_near = 0.02;
+  spec.size_far = 0.08;
+  spec.box_size = 0.01;
+  spec.box_x0 = 0.3;
+  spec.box_x1 = 0.7;
+  spec.box_y0 = 0.15;
+  spec.box_y1 = 0.25;
+  return spec;
 }
 
 }  // namespace
@@ -120,14 +135,7 @@ TEST_CASE("cylinder channel: every layer's prisms are cut alike") {
 }
 
 TEST_CASE("cylinder channel: refinement box") {
-  io::CylinderChannelSpec spec;
-  spec.size_near = 0.02;
-  spec.size_far = 0.08;
-  spec.box_size = 0.01;
-  spec.box_x0 = 0.3;
-  spec.box_x1 = 0.7;
-  spec.box_y0 = 0.15;
-  spec.box_y1 = 0.25;
+  auto spec = refined_spec();
   const auto mesh = io::generate_cylinder_channel_mesh(spec);
   CHECK_NOTHROW(flow::check_mesh(mesh));
   // Node spacing inside the box: the mean length of the in-plane edges (z-extrusion edges
@@ -154,4 +162,33 @@ TEST_CASE("cylinder channel: refinement box") {
   spec.box_x1 = 3.0;  // outside the channel
   CHECK_THROWS_WITH_AS(io::generate_cylinder_channel_mesh(spec),
                        doctest::Contains("refinement box"), std::invalid_argument);
+}
+
+TEST_CASE("cylinder channel scene keys: the refinement box reaches the generator") {
+  const std::string head = R"(
+[mesh]
+source = "cylinder_channel"
+[mesh.cylinder_channel]
+size_near = 0.02
+size_far = 0.08
+)";
+  const std::string box = R"(box_size = 0.01
+box_x0 = 0.3
+box_y0 = 0.15
+box_y1 = 0.25
+box_transition = 0.15
+)";
+  auto spec = refined_spec();
+  spec.box_transition = 0.15;
+  const auto direct = io::generate_cylinder_channel_mesh(spec);
+  const auto scene = io::parse_scene(head + box + "box_x1 = 0.7\n", "t.toml");
+  const auto from_scene = io::build_mesh(scene);
+  CHECK(from_scene.nodes.size() == direct.nodes.size());
+  CHECK(from_scene.num_cells() == direct.num_cells());
+  // Without the box keys the mesh is the plain (coarser) channel.
+  const auto plain = io::build_mesh(io::parse_scene(head, "t.toml"));
+  CHECK(plain.nodes.size() < direct.nodes.size());
+  // A box outside the channel is refused with the scene table named.
+  const auto bad = io::parse_scene(head + box + "box_x1 = 3.0\n", "t.toml");
+  CHECK_THROWS_WITH(io::build_mesh(bad), doctest::Contains("mesh.cylinder_channel"));
 }
