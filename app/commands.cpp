@@ -7,12 +7,12 @@
 #include <cmath>
 #include <iostream>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
-#include "flow/mesh_check.hpp"
-#include "io/gmsh_reader.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
+#include "mesh/mesh_check.hpp"
+#include "mesh/gmsh_reader.hpp"
 #include "io/immersed_coupling.hpp"
-#include "io/mesh_info.hpp"
+#include "mesh/mesh_info.hpp"
 #include "io/mesh_source.hpp"
 #include "io/scene.hpp"
 #include "io/scene_cycle_period.hpp"

@@ -13,7 +13,7 @@
 #include "app/command_plot_valve.hpp"
 #include "app/command_psd.hpp"
 #include "app/commands.hpp"
-#include "io/allocation_limit.hpp"
+#include "core/allocation_limit.hpp"
 #include "run/phase.hpp"
 
 int main(int argc, char** argv) {

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "flow/inflow_waveform.hpp"
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
 
 namespace valsalva::flow {

@@ -47,7 +47,7 @@
 
 #include "flow/elastance.hpp"
 #include "flow/inflow_waveform.hpp"
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
 #include "flow/womersley.hpp"
 

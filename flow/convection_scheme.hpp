@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "flow/face_flux.hpp"
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
 
 namespace valsalva::flow {

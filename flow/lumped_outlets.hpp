@@ -49,7 +49,7 @@
 
 #include "flow/boundary_conditions.hpp"
 #include "flow/face_flux.hpp"
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 
 namespace valsalva::flow {
 

@@ -22,7 +22,7 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 
 namespace valsalva::flow {
 

@@ -34,7 +34,7 @@
 #include <array>
 #include <vector>
 
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
 
 namespace valsalva::flow {

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "flow/compensated_sum.hpp"
+#include "core/compensated_sum.hpp"
 
 namespace valsalva::flow {
 

@@ -50,7 +50,7 @@
 
 #include "flow/boundary_conditions.hpp"
 #include "flow/convection_scheme.hpp"
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/lumped_outlets.hpp"
 #include "flow/operators.hpp"
 #include "flow/operators_order4.hpp"

@@ -19,7 +19,7 @@
 #include <Eigen/Dense>
 #include <string>
 
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
 
 namespace valsalva::flow {

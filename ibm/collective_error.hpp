@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "flow/comm.hpp"
+#include "core/comm.hpp"
 
 namespace valsalva::ibm {
 

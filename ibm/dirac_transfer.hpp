@@ -27,7 +27,7 @@
 #include <span>
 #include <vector>
 
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 #include "ibm/kernels.hpp"
 #include "structure/bucket_grid.hpp"
 

@@ -33,7 +33,7 @@
 #include <optional>
 #include <vector>
 
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/projection_rk4.hpp"
 #include "flow/time_scheme.hpp"
 #include "ibm/dirac_transfer.hpp"

@@ -28,8 +28,8 @@
 #include <string>
 #include <vector>
 
-#include "flow/local_mesh.hpp"
-#include "flow/mesh.hpp"
+#include "mesh/local_mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "flow/projection_rk4.hpp"
 #include "io/hdf5_file.hpp"
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
 #include "io/xdmf_writer.hpp"
 
 namespace valsalva::io {

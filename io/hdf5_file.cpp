@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include "flow/comm.hpp"
+#include "core/comm.hpp"
 
 namespace valsalva::io::h5 {
 

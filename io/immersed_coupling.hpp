@@ -5,7 +5,7 @@
 
 #include <memory>
 
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 #include "ibm/immersed_structure.hpp"
 #include "io/scene_keys_structure.hpp"
 

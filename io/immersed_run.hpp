@@ -22,7 +22,7 @@
 #include <memory>
 #include <vector>
 
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/run_loop.hpp"
 #include "ibm/immersed_structure.hpp"
 #include "io/checkpoint.hpp"

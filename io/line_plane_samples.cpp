@@ -5,7 +5,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "io/point_locator.hpp"
+#include "mesh/point_locator.hpp"
 
 namespace valsalva::io {
 

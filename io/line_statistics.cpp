@@ -6,7 +6,7 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "io/point_locator.hpp"
+#include "mesh/point_locator.hpp"
 
 namespace valsalva::io {
 

@@ -6,14 +6,14 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "flow/mesh_check.hpp"
-#include "io/allocation_limit.hpp"
-#include "io/box_generator.hpp"
-#include "io/cylinder_channel_generator.hpp"
-#include "io/extruded_pipe_generator.hpp"
-#include "io/gmsh_reader.hpp"
-#include "io/periodic_pipe_generator.hpp"
-#include "io/pipe_generator.hpp"
+#include "mesh/mesh_check.hpp"
+#include "core/allocation_limit.hpp"
+#include "mesh/box_generator.hpp"
+#include "mesh/cylinder_channel_generator.hpp"
+#include "mesh/extruded_pipe_generator.hpp"
+#include "mesh/gmsh_reader.hpp"
+#include "mesh/periodic_pipe_generator.hpp"
+#include "mesh/pipe_generator.hpp"
 
 namespace valsalva::io {
 

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "flow/mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "io/scene.hpp"
 
 namespace valsalva::io {

@@ -8,7 +8,7 @@
 #include <regex>
 #include <stdexcept>
 
-#include "io/allocation_limit.hpp"
+#include "core/allocation_limit.hpp"
 
 namespace valsalva::io {
 

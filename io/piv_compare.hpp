@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "io/piv_data.hpp"
-#include "io/point_locator.hpp"
+#include "mesh/point_locator.hpp"
 
 namespace valsalva::io {
 

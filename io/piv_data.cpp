@@ -9,7 +9,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "io/numeric_table.hpp"
+#include "core/numeric_table.hpp"
 
 namespace valsalva::io {
 
@@ -31,7 +31,7 @@ int known_column(const std::string& name) {
   return -1;
 }
 
-// The velocity columns, where an empty field or nan is a masked vector (io/numeric_table.hpp).
+// The velocity columns, where an empty field or nan is a masked vector (core/numeric_table.hpp).
 TableFormat piv_format(bool blank_separated) {
   TableFormat f;
   f.header = TableHeader::required;

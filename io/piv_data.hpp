@@ -11,7 +11,7 @@
 // Tecplot ASCII: TITLE (ignored), VARIABLES = "x" "y" "u" "v" ... (same names), then one ZONE per
 //   frame: ZONE T="...", I=.., J=.. [, K=1] [, F=POINT | DATAPACKING=POINT] [, SOLUTIONTIME=..],
 //   followed by I*J lines of one point each.
-// Both are read with the strict table reader (io/numeric_table.hpp): every malformed input
+// Both are read with the strict table reader (core/numeric_table.hpp): every malformed input
 // throws TableError "<path>:<line>:<column>: <what>"; x, y, valid and phase/time must be finite
 // numbers, u, v, u_rms, v_rms finite or masked (empty or nan; inf and 1e999 are refused); column
 // names are unique (case-insensitively); a zone holds exactly its I*J points.

@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "flow/comm.hpp"
-#include "io/numeric_table.hpp"
+#include "core/comm.hpp"
+#include "core/numeric_table.hpp"
 
 namespace valsalva::io {
 
@@ -117,7 +117,7 @@ std::vector<double> ProbeSeries::column(const std::string& name) const {
   return out;
 }
 
-// The shared strict reader (io/numeric_table.hpp): header required, finite values, unique
+// The shared strict reader (core/numeric_table.hpp): header required, finite values, unique
 // column names, errors at FILE:LINE:COLUMN.
 ProbeSeries read_probe_csv(const std::filesystem::path& path) {
   if (!std::ifstream(path))

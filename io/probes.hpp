@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/projection_rk4.hpp"
-#include "io/point_locator.hpp"
+#include "mesh/point_locator.hpp"
 
 namespace valsalva::io {
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "flow/comm.hpp"
+#include "core/comm.hpp"
 #include "io/scene.hpp"
 
 namespace valsalva::io {

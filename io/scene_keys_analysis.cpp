@@ -11,7 +11,7 @@
 #include <regex>
 #include <set>
 
-#include "io/allocation_limit.hpp"
+#include "core/allocation_limit.hpp"
 #include "io/scene_keys.hpp"
 #include "io/scene_keys_sections.hpp"
 

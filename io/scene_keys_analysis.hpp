@@ -3,7 +3,7 @@
 // declare_analysis_keys (io/scene_keys_analysis.cpp).
 #pragma once
 
-#include "flow/mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "io/analysis_options.hpp"
 #include "io/scene.hpp"
 

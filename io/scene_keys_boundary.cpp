@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <set>
 
-#include "io/numeric_table.hpp"
-#include "io/patch_shape.hpp"
+#include "core/numeric_table.hpp"
+#include "mesh/patch_shape.hpp"
 #include "io/scene_keys.hpp"
 #include "io/waveform_table.hpp"
 

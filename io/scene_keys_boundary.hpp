@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "flow/boundary_conditions.hpp"
-#include "flow/mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "io/scene.hpp"
 
 namespace valsalva::io {

@@ -7,7 +7,7 @@
 #include <ctime>
 #include <stdexcept>
 
-#include "flow/thread_cpu_time.hpp"
+#include "core/thread_cpu_time.hpp"
 #include "io/scene_keys.hpp"
 #include "io/sgs_energy_field.hpp"
 #include "les/pope_estimate.hpp"

@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
 #include "flow/run_loop.hpp"
 #include "io/phase_statistics.hpp"

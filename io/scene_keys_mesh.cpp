@@ -68,7 +68,7 @@ void declare_mesh_keys(Schema& s) {
 
   s.section("mesh.extruded_pipe",
             "Pipe along +z from an inlet (z = 0) to an outlet (z = length) "
-            "(io/extruded_pipe_generator.hpp): a triangulated disk about the z axis, optionally "
+            "(mesh/extruded_pipe_generator.hpp): a triangulated disk about the z axis, optionally "
             "refined towards the wall, extruded into prism layers split into tetrahedra; patches "
             "inlet, outlet, wall, region fluid.");
   s.when("mesh.extruded_pipe", "mesh.source", {"extruded_pipe"});
@@ -111,7 +111,7 @@ void declare_mesh_keys(Schema& s) {
       .doc("Total thickness of the wall rows");
 
   s.section("mesh.periodic_pipe",
-            "Streamwise-periodic circular pipe along +z (io/periodic_pipe_generator.hpp): a "
+            "Streamwise-periodic circular pipe along +z (mesh/periodic_pipe_generator.hpp): a "
             "triangulated disk about the z axis extruded into identical layers from z = 0 to "
             "length; patches wall, zmin, zmax (zmin/zmax paired as periodic), region fluid.");
   s.when("mesh.periodic_pipe", "mesh.source", {"periodic_pipe"});

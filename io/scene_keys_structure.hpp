@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "flow/mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "ibm/immersed_structure.hpp"
 #include "io/scene.hpp"
 #include "structure/material.hpp"

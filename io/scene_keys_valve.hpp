@@ -4,7 +4,7 @@
 
 #include <optional>
 
-#include "flow/mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "io/scene.hpp"
 #include "io/scene_schema.hpp"
 #include "io/valve_monitor_options.hpp"

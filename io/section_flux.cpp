@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-#include "flow/compensated_sum.hpp"
+#include "core/compensated_sum.hpp"
 
 namespace valsalva::io {
 

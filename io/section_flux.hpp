@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "flow/face_flux.hpp"
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 
 namespace valsalva::io {
 

@@ -10,7 +10,7 @@
 
 #include <vector>
 
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
 #include "io/phase_statistics.hpp"
 

@@ -8,8 +8,8 @@
 #include <map>
 #include <unordered_map>
 
-#include "io/gmsh_reader.hpp"
-#include "io/msh_counts.hpp"
+#include "mesh/gmsh_reader.hpp"
+#include "mesh/msh_counts.hpp"
 
 namespace valsalva::io {
 

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <system_error>
 
-#include "io/gmsh_reader.hpp"
+#include "mesh/gmsh_reader.hpp"
 
 namespace valsalva::io {
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "io/hdf5_file.hpp"
-#include "io/numeric_table.hpp"
+#include "core/numeric_table.hpp"
 #include "io/xdmf_writer.hpp"
 
 namespace valsalva::io {

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "flow/mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "io/piv_compare.hpp"
 
 namespace valsalva::io {

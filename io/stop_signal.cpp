@@ -3,7 +3,7 @@
 #include <csignal>
 #include <stdexcept>
 
-#include "flow/comm.hpp"
+#include "core/comm.hpp"
 
 namespace valsalva::io {
 

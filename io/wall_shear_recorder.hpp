@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
 #include "flow/projection_rk4.hpp"
 #include "flow/wall_shear.hpp"

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "io/numeric_table.hpp"
+#include "core/numeric_table.hpp"
 
 namespace valsalva::io {
 

@@ -8,8 +8,8 @@
 #include <set>
 #include <stdexcept>
 
-#include "flow/comm.hpp"
-#include "flow/mesh.hpp"
+#include "core/comm.hpp"
+#include "mesh/mesh.hpp"
 #include "io/hdf5_file.hpp"
 
 namespace valsalva::io {

@@ -11,7 +11,7 @@
 #include <map>
 #include <optional>
 
-#include "flow/dual_metrics.hpp"
+#include "mesh/dual_metrics.hpp"
 #include "io/checkpoint.hpp"
 #include "io/field_output.hpp"
 #include "io/immersed_run.hpp"

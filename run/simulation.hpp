@@ -12,8 +12,8 @@
 #include <memory>
 #include <string>
 
-#include "flow/local_mesh.hpp"
-#include "flow/mesh.hpp"
+#include "mesh/local_mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "flow/run_loop.hpp"
 #include "io/scene.hpp"
 

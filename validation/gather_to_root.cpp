@@ -1,7 +1,7 @@
 // Gathering sampled values on rank 0; see gather_to_root.hpp.
 #include "validation/gather_to_root.hpp"
 
-#include "flow/comm.hpp"
+#include "core/comm.hpp"
 
 namespace valsalva::validation {
 

@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
 
 namespace valsalva::validation {

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <unordered_map>
 
-#include "io/gmsh_reader.hpp"
+#include "mesh/gmsh_reader.hpp"
 #include "io/solid_gmsh_reader.hpp"
 #include "structure/mesh_generators.hpp"
 #include "valve/leaflet_groups.hpp"

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "io/gmsh_reader.hpp"
-#include "io/point_locator.hpp"
+#include "mesh/gmsh_reader.hpp"
+#include "mesh/point_locator.hpp"
 #include "valve/leaflet_mesh.hpp"
 
 namespace valsalva::valve {

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <map>
 
-#include "io/gmsh_reader.hpp"
+#include "mesh/gmsh_reader.hpp"
 
 namespace valsalva::valve {
 

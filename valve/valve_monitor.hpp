@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "analysis/valve_cycles.hpp"
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/projection_rk4.hpp"
 #include "ibm/immersed_structure.hpp"
 #include "io/checkpoint.hpp"

@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
-#include "io/box_generator.hpp"
-#include "io/pipe_generator.hpp"
+#include "mesh/box_generator.hpp"
+#include "mesh/pipe_generator.hpp"
 
 namespace valsalva::test {
 

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "flow/compensated_sum.hpp"
-#include "flow/dual_metrics.hpp"
-#include "io/box_generator.hpp"
+#include "core/compensated_sum.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/box_generator.hpp"
 
 using namespace valsalva;
 

@@ -20,7 +20,7 @@
 #include "flow/face_flux.hpp"
 #include "flow/poisson_weights.hpp"
 #include "flow/projection_rk4.hpp"
-#include "io/pipe_generator.hpp"
+#include "mesh/pipe_generator.hpp"
 
 using namespace valsalva;
 

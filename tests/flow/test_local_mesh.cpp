@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
-#include "flow/metric_identities.hpp"
-#include "io/box_generator.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
+#include "mesh/metric_identities.hpp"
+#include "mesh/box_generator.hpp"
 
 using namespace valsalva;
 

@@ -11,8 +11,8 @@
 #include "field_test_utils.hpp"
 #include "flow/operators.hpp"
 #include "flow/poisson_weights.hpp"
-#include "io/box_generator.hpp"
-#include "io/periodic_pipe_generator.hpp"
+#include "mesh/box_generator.hpp"
+#include "mesh/periodic_pipe_generator.hpp"
 
 using namespace valsalva;
 using flow::ScalarField;

@@ -25,7 +25,7 @@
 #include "flow/poisson_weights.hpp"
 #include "flow/pressure_poisson.hpp"
 #include "flow/projection_rk4.hpp"
-#include "io/pipe_generator.hpp"
+#include "mesh/pipe_generator.hpp"
 
 using namespace valsalva;
 

@@ -12,11 +12,11 @@
 #include <numbers>
 #include <random>
 
-#include "flow/compensated_sum.hpp"
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
+#include "core/compensated_sum.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
 #include "ibm/dirac_transfer.hpp"
-#include "io/box_generator.hpp"
+#include "mesh/box_generator.hpp"
 
 using namespace valsalva;
 using Vec = Eigen::Vector3d;

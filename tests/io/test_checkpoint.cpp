@@ -10,9 +10,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
-#include "io/box_generator.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
+#include "mesh/box_generator.hpp"
 #include "io/checkpoint.hpp"
 #include "io/stop_signal.hpp"
 

@@ -8,12 +8,12 @@
 #include <tuple>
 #include <vector>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/mesh_check.hpp"
-#include "io/box_generator.hpp"
-#include "io/cylinder_channel_generator.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/mesh_check.hpp"
+#include "mesh/box_generator.hpp"
+#include "mesh/cylinder_channel_generator.hpp"
 #include "io/mesh_source.hpp"
-#include "io/prism_split.hpp"
+#include "mesh/prism_split.hpp"
 #include "io/scene.hpp"
 
 using namespace valsalva;

@@ -1,4 +1,4 @@
-// Extruded inlet/outlet pipe (io/extruded_pipe_generator.hpp): positive tetrahedra, patches on
+// Extruded inlet/outlet pipe (mesh/extruded_pipe_generator.hpp): positive tetrahedra, patches on
 // their surfaces, inlet/outlet areas and volume against the inscribed chord polygon of the
 // circle, and the wall grading's first row of nodes where it was asked for.
 #include <doctest/doctest.h>
@@ -7,8 +7,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "flow/mesh_check.hpp"
-#include "io/extruded_pipe_generator.hpp"
+#include "mesh/mesh_check.hpp"
+#include "mesh/extruded_pipe_generator.hpp"
 
 using namespace valsalva;
 

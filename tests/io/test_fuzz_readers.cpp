@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "io/numeric_table.hpp"
+#include "core/numeric_table.hpp"
 #include "io/piv_data.hpp"
 #include "io/probes.hpp"
 #include "io/scene.hpp"

@@ -12,8 +12,8 @@
 #include <numeric>
 #include <string>
 
-#include "flow/mesh_check.hpp"
-#include "io/gmsh_reader.hpp"
+#include "mesh/mesh_check.hpp"
+#include "mesh/gmsh_reader.hpp"
 
 using namespace valsalva;
 namespace fs = std::filesystem;

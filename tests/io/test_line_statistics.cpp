@@ -13,9 +13,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
-#include "io/box_generator.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
+#include "mesh/box_generator.hpp"
 #include "io/line_statistics.hpp"
 #include "io/run_analysis.hpp"
 #include "io/scene_keys_analysis.hpp"

@@ -5,7 +5,7 @@
 #include <Eigen/Geometry>
 #include <string>
 
-#include "flow/mesh_check.hpp"
+#include "mesh/mesh_check.hpp"
 
 using namespace valsalva;
 using flow::CellType;

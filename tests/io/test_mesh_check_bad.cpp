@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "flow/mesh_check.hpp"
-#include "io/gmsh_reader.hpp"
+#include "mesh/mesh_check.hpp"
+#include "mesh/gmsh_reader.hpp"
 
 using namespace valsalva;
 

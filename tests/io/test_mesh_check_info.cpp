@@ -5,10 +5,10 @@
 #include <cmath>
 #include <filesystem>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/mesh_check.hpp"
-#include "io/gmsh_reader.hpp"
-#include "io/mesh_info.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/mesh_check.hpp"
+#include "mesh/gmsh_reader.hpp"
+#include "mesh/mesh_info.hpp"
 
 using namespace valsalva;
 using flow::CellType;

@@ -1,4 +1,4 @@
-// Circularity of boundary patches (io/patch_shape.hpp), the test behind refusing a Poiseuille or
+// Circularity of boundary patches (mesh/patch_shape.hpp), the test behind refusing a Poiseuille or
 // Womersley profile on a non-circular inlet: Gmsh pipe inlets down to a few elements per
 // diameter stay below the limit, box faces (squares, rectangles) and the pipe's closed wall are
 // above it.
@@ -7,9 +7,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "io/box_generator.hpp"
-#include "io/patch_shape.hpp"
-#include "io/pipe_generator.hpp"
+#include "mesh/box_generator.hpp"
+#include "mesh/patch_shape.hpp"
+#include "mesh/pipe_generator.hpp"
 
 using namespace valsalva;
 

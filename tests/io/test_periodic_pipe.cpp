@@ -1,13 +1,13 @@
-// Periodic extruded pipe mesh (io/periodic_pipe_generator.hpp): valid prisms and split
+// Periodic extruded pipe mesh (mesh/periodic_pipe_generator.hpp): valid prisms and split
 // tetrahedra, the inscribed-polygon volume, wall nodes on the circle, identical layers.
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/mesh_check.hpp"
-#include "io/periodic_pipe_generator.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/mesh_check.hpp"
+#include "mesh/periodic_pipe_generator.hpp"
 
 using namespace valsalva;
 

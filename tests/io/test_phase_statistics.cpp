@@ -9,9 +9,9 @@
 #include <cmath>
 #include <filesystem>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
-#include "io/box_generator.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
+#include "mesh/box_generator.hpp"
 #include "io/phase_statistics.hpp"
 #include "io/xdmf_writer.hpp"
 

@@ -5,8 +5,8 @@
 #include <numbers>
 #include <set>
 
-#include "flow/mesh_check.hpp"
-#include "io/pipe_generator.hpp"
+#include "mesh/mesh_check.hpp"
+#include "mesh/pipe_generator.hpp"
 
 using namespace valsalva;
 

@@ -11,7 +11,7 @@
 #include <fstream>
 #include <random>
 
-#include "io/box_generator.hpp"
+#include "mesh/box_generator.hpp"
 #include "io/piv_compare.hpp"
 
 using namespace valsalva;

@@ -82,7 +82,7 @@ TEST_CASE("PIV readers: malformed files name file, line and problem") {
       // A zone with no points followed by a complete one (issue 23, item 10).
       {"tecplot_empty_zone.dat",
        "tecplot_empty_zone.dat:2:1: zone 'phase 1' has no data (the next ZONE is on line 3)"},
-      // Through the shared strict reader (io/numeric_table.hpp): inf and overflow are not masked
+      // Through the shared strict reader (core/numeric_table.hpp): inf and overflow are not masked
       // vectors (they were, silently), names are unique case-insensitively, a zone's size is
       // checked at the end of the file too, and I*J stays a sane integer.
       {"inf_velocity.csv", "inf_velocity.csv:4:9: 'inf' (column 'u') is not a finite number"},

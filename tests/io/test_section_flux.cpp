@@ -12,12 +12,12 @@
 #include <fstream>
 #include <string>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/run_loop.hpp"
-#include "io/box_generator.hpp"
-#include "io/periodic_pipe_generator.hpp"
-#include "io/pipe_generator.hpp"
+#include "mesh/box_generator.hpp"
+#include "mesh/periodic_pipe_generator.hpp"
+#include "mesh/pipe_generator.hpp"
 #include "io/run_analysis.hpp"
 #include "io/section_flux.hpp"
 

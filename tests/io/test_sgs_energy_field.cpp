@@ -3,9 +3,9 @@
 #include <doctest/doctest.h>
 #include <mpi.h>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
-#include "io/box_generator.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
+#include "mesh/box_generator.hpp"
 #include "io/sgs_energy_field.hpp"
 
 using namespace valsalva;

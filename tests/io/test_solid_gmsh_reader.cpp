@@ -10,7 +10,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "io/gmsh_reader.hpp"
+#include "mesh/gmsh_reader.hpp"
 #include "io/solid_gmsh_reader.hpp"
 #include "structure/loads.hpp"
 #include "structure/solid_forces.hpp"

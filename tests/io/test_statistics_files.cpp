@@ -8,9 +8,9 @@
 #include <filesystem>
 #include <string>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
-#include "io/box_generator.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
+#include "mesh/box_generator.hpp"
 #include "io/phase_statistics.hpp"
 #include "io/statistics_files.hpp"
 

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include "io/numeric_table.hpp"
+#include "core/numeric_table.hpp"
 #include "io/waveform_table.hpp"
 
 using namespace valsalva;

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "io/gmsh_reader.hpp"
+#include "mesh/gmsh_reader.hpp"
 #include "tests/structure/solid_volume.hpp"
 #include "valve/leaflet_mesh.hpp"
 

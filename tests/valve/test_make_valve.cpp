@@ -9,8 +9,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "io/gmsh_reader.hpp"
-#include "io/mesh_info.hpp"
+#include "mesh/gmsh_reader.hpp"
+#include "mesh/mesh_info.hpp"
 #include "valve/leaflet_mesh.hpp"
 #include "valve/make_valve.hpp"
 

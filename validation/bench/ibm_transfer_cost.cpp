@@ -32,8 +32,8 @@
 #include <string>
 #include <vector>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
 #include "ibm/immersed_structure.hpp"
 #include "io/mesh_source.hpp"
 #include "io/scene.hpp"

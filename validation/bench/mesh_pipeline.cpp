@@ -11,9 +11,9 @@
 #include <filesystem>
 #include <string>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
-#include "io/gmsh_reader.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
+#include "mesh/gmsh_reader.hpp"
 #include "validation/bench/bench_cli.hpp"
 
 namespace {

@@ -10,11 +10,11 @@
 #include <stdexcept>
 
 #include "flow/boundary_conditions.hpp"
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/poisson_weights.hpp"
 #include "flow/projection_rk4.hpp"
-#include "io/periodic_pipe_generator.hpp"
+#include "mesh/periodic_pipe_generator.hpp"
 #include "les/subgrid_viscosity.hpp"
 #include "validation/bench/womersley_run.hpp"
 

@@ -1,7 +1,7 @@
 // One streamwise-periodic Womersley pipe run with its own time loop, for bench_womersley_study's
 // set-up choices (the validation case validation/womersley_periodic runs its scene through
 // run::Simulation instead) (Womersley, J. Physiol. 127, 553-563, 1955, in its
-// own form): a pipe periodic in z (io/periodic_pipe_generator.hpp: a triangulated disk extruded
+// own form): a pipe periodic in z (mesh/periodic_pipe_generator.hpp: a triangulated disk extruded
 // into identical layers, prisms or split tetrahedra), no-slip wall, driven by the oscillating
 // body force rho G(t) e_z with the kinematic pressure gradient G(t) of the Womersley solution
 // whose flow rate is Q(t) = Q0 (1 + sin(2 pi t / T)) (flow::Womersley::pressure_gradient).

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "flow/thread_cpu_time.hpp"
+#include "core/thread_cpu_time.hpp"
 #include "les/sgs_kernels.hpp"
 #include "les/sgs_model.hpp"
 #include "validation/bench/bench_cli.hpp"

@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "flow/comm.hpp"
+#include "core/comm.hpp"
 #include "flow/convection_scheme.hpp"
 #include "run/data_dir.hpp"
 #include "validation/bench/bench_cli.hpp"

@@ -9,14 +9,14 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/poisson_weights.hpp"
 #include "flow/projection_rk4.hpp"
 #include "flow/run_diagnostics.hpp"
 #include "flow/womersley.hpp"
-#include "io/extruded_pipe_generator.hpp"
-#include "io/pipe_generator.hpp"
+#include "mesh/extruded_pipe_generator.hpp"
+#include "mesh/pipe_generator.hpp"
 #include "les/subgrid_viscosity.hpp"
 
 namespace valsalva::validation {

@@ -1,8 +1,8 @@
 // One Womersley pipe run with its own time loop, for bench_womersley_study's set-up choices and
 // test_rank_agreement (the validation case validation/womersley runs its scenes through
 // run::Simulation instead): a rigid straight pipe
-// (Gmsh tetrahedra: 3D Delaunay, io/pipe_generator.hpp, or an extruded disk,
-// io/extruded_pipe_generator.hpp) with a Womersley-profile sine inflow
+// (Gmsh tetrahedra: 3D Delaunay, mesh/pipe_generator.hpp, or an extruded disk,
+// mesh/extruded_pipe_generator.hpp) with a Womersley-profile sine inflow
 // Q(t) = Q0 (1 + sin(2 pi t / T)), no-slip wall and an outlet, started from the exact solution
 // (flow/womersley.hpp; velocity and the linear pressure of G(0)) so that the viscous transient
 // of a start from rest, R^2 / (14.7 nu) = 3.1 s at Wo = 17, does not hide the discretisation
@@ -21,10 +21,10 @@
 #include <vector>
 
 #include "flow/boundary_conditions.hpp"
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/womersley.hpp"
-#include "io/extruded_pipe_generator.hpp"
-#include "io/pipe_generator.hpp"
+#include "mesh/extruded_pipe_generator.hpp"
+#include "mesh/pipe_generator.hpp"
 #include "validation/gather_to_root.hpp"
 
 namespace valsalva::validation {
@@ -47,8 +47,8 @@ struct WomersleySetup {
   bool unscaled_inlet = false;     // flow::BoundarySpec::unscaled_profile
   double mesh_size_factor = 1;     // Gmsh's size = factor * D / nodes_per_diameter
   io::PipeMeshOptions mesh;        // wall sizes are given in units of that Gmsh size
-  // The mesh: false = Gmsh's 3D Delaunay tetrahedra (io/pipe_generator.hpp, `mesh`), true = a
-  // Gmsh disk extruded into prism layers split into tetrahedra (io/extruded_pipe_generator.hpp).
+  // The mesh: false = Gmsh's 3D Delaunay tetrahedra (mesh/pipe_generator.hpp, `mesh`), true = a
+  // Gmsh disk extruded into prism layers split into tetrahedra (mesh/extruded_pipe_generator.hpp).
   bool extruded = false;
   double layer_height = 1;      // extruded: the layers' height in units of the Gmsh size
   io::DiskWallGrading grading;  // extruded: sizes in units of the Gmsh size

@@ -13,7 +13,7 @@
 //                         [--extruded 0 [--dz 1] [--bl_first 0 --bl_ratio 1.2 --bl_thickness 0]]
 //   (--size_factor scales Gmsh's size D / npd; wall sizes, the layer height --dz and the
 //   boundary-layer rows --bl_* are in units of that scaled size; --extruded 1: the disk extruded
-//   into split prism layers, io/extruded_pipe_generator.hpp, graded by --wall_size/--bl_*)
+//   into split prism layers, mesh/extruded_pipe_generator.hpp, graded by --wall_size/--bl_*)
 #include <fmt/format.h>
 #include <mpi.h>
 

@@ -28,7 +28,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "io/numeric_table.hpp"
+#include "core/numeric_table.hpp"
 #include "io/scene.hpp"
 #include "run/simulation.hpp"
 #include "validation/case.hpp"

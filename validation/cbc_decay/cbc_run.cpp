@@ -8,9 +8,9 @@
 #include <ctime>
 #include <stdexcept>
 
-#include "flow/local_mesh.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/run_diagnostics.hpp"
-#include "flow/thread_cpu_time.hpp"
+#include "core/thread_cpu_time.hpp"
 #include "les/cbc_data.hpp"
 #include "les/derivative_skewness.hpp"
 #include "les/energy_spectrum.hpp"

@@ -13,7 +13,7 @@
 #include <numbers>
 
 #include "flow/womersley.hpp"
-#include "io/numeric_table.hpp"
+#include "core/numeric_table.hpp"
 #include "validation/case.hpp"
 #include "validation/scene_run.hpp"
 

@@ -10,7 +10,7 @@
 #include <memory>
 
 #include "flow/boundary_conditions.hpp"
-#include "flow/dual_metrics.hpp"
+#include "mesh/dual_metrics.hpp"
 #include "flow/projection_rk4.hpp"
 #include "flow/wall_force.hpp"
 

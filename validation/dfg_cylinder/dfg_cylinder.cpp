@@ -37,10 +37,10 @@
 #include <utility>
 #include <vector>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/run_diagnostics.hpp"
-#include "io/cylinder_channel_generator.hpp"
+#include "mesh/cylinder_channel_generator.hpp"
 #include "io/probes.hpp"
 #include "io/scene.hpp"
 #include "run/simulation.hpp"

@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
-#include "flow/mesh.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "flow/projection_rk4.hpp"
 #include "flow/wall_force.hpp"
 

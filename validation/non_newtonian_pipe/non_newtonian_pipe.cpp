@@ -21,7 +21,7 @@
 #include <fstream>
 #include <functional>
 
-#include "io/numeric_table.hpp"
+#include "core/numeric_table.hpp"
 #include "io/run_directory.hpp"
 #include "io/scene.hpp"
 #include "io/scene_keys_rheology.hpp"

@@ -29,7 +29,7 @@
 #include <fstream>
 #include <numbers>
 
-#include "io/numeric_table.hpp"
+#include "core/numeric_table.hpp"
 #include "run/simulation.hpp"
 #include "validation/case.hpp"
 #include "validation/scene_run.hpp"

@@ -14,7 +14,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "io/numeric_table.hpp"
+#include "core/numeric_table.hpp"
 #include "io/pressure_drop.hpp"
 #include "io/scene.hpp"
 #include "run/simulation.hpp"

@@ -20,7 +20,7 @@
 #include <numbers>
 
 #include "flow/lumped_outlets.hpp"
-#include "io/numeric_table.hpp"
+#include "core/numeric_table.hpp"
 #include "run/simulation.hpp"
 #include "validation/case.hpp"
 #include "validation/scene_run.hpp"

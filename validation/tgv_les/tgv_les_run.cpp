@@ -11,7 +11,7 @@
 #include <stdexcept>
 
 #include "flow/run_diagnostics.hpp"
-#include "io/numeric_table.hpp"
+#include "core/numeric_table.hpp"
 #include "run/simulation.hpp"
 #include "validation/scene_run.hpp"
 

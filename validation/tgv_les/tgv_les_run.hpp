@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
-#include "flow/mesh.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "flow/projection_rk4.hpp"
 
 namespace valsalva::validation {

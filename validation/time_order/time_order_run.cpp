@@ -7,7 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "flow/comm.hpp"
+#include "core/comm.hpp"
 #include "io/scene.hpp"
 #include "run/simulation.hpp"
 #include "validation/bench/bench_util.hpp"

@@ -9,11 +9,11 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/run_diagnostics.hpp"
 #include "ibm/immersed_structure.hpp"
-#include "io/cylinder_channel_generator.hpp"
+#include "mesh/cylinder_channel_generator.hpp"
 #include "structure/material.hpp"
 #include "structure/mesh_generators.hpp"
 #include "validation/dfg_cylinder/cylinder_channel_flow.hpp"

@@ -7,14 +7,14 @@
 #include <stdexcept>
 #include <vector>
 
-#include "io/numeric_table.hpp"
+#include "core/numeric_table.hpp"
 
 namespace valsalva::validation {
 
 namespace {
 
 // A number of field i of a row; NaN for an empty field (or "rigid") when `optional`. Errors name
-// FILE:LINE:COLUMN and the column (io/numeric_table.hpp).
+// FILE:LINE:COLUMN and the column (core/numeric_table.hpp).
 double parse(const io::TableLines& lines, const std::vector<io::TableField>& f, std::size_t i,
              const std::string& what, bool optional = false) {
   if (i >= f.size())

@@ -18,7 +18,7 @@
 #include <cmath>
 
 #include "analysis/valve_cycles.hpp"
-#include "io/numeric_table.hpp"
+#include "core/numeric_table.hpp"
 #include "io/waveform_table.hpp"
 #include "run/data_dir.hpp"
 #include "validation/case.hpp"

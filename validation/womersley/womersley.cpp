@@ -11,7 +11,7 @@
 // initial field (the model evaluated on the initial state before the first step, as the first
 // stage does); at the end the change of the velocity against the laminar run on the same mesh.
 // The mesh: a Gmsh 2D disk triangulation extruded into prism layers of height h and split into
-// tetrahedra (mesh.source = "extruded_pipe", io/extruded_pipe_generator.hpp), with Gmsh
+// tetrahedra (mesh.source = "extruded_pipe", mesh/extruded_pipe_generator.hpp), with Gmsh
 // BoundaryLayer rows along the wall at Wo 17 (first 0.2 h, ratio 1.2, to 1.5 h: they resolve the
 // Stokes layer, 0.83 h thick at D/20, and the curved profile just inside it); Gmsh's 3D
 // Delaunay tetrahedra of the same size h are the comparison rows (and carry the LES and

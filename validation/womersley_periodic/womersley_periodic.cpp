@@ -11,7 +11,7 @@
 // of the horizontal edges carry no z flux, the two vertical edges cancel), so dp and the
 // transverse velocity stay at round-off. The Sigma operator is zero for a velocity gradient of
 // rank one (sigma2 = sigma3 = 0), so with sigma the run must repeat the laminar one: both within
-// 1e-8 (issue 4, item 2). Split prisms (io/prism_split.hpp, the same diagonals in every layer)
+// 1e-8 (issue 4, item 2). Split prisms (mesh/prism_split.hpp, the same diagonals in every layer)
 // keep it too: each of a prism's three tetrahedra holds one vertical edge, so the linear
 // interpolant of z-invariant nodal data has no z derivative, and the median-dual operators on
 // tetrahedra are the P1 ones (Barth, VKI LS 1994-05); the split mesh also gets the consistent P1
@@ -36,7 +36,7 @@
 #include <set>
 
 #include "flow/womersley.hpp"
-#include "io/numeric_table.hpp"
+#include "core/numeric_table.hpp"
 #include "run/simulation.hpp"
 #include "validation/case.hpp"
 #include "validation/gather_to_root.hpp"

@@ -23,7 +23,7 @@
 #include <numbers>
 
 #include "flow/womersley.hpp"
-#include "io/numeric_table.hpp"
+#include "core/numeric_table.hpp"
 #include "io/run_analysis.hpp"
 #include "run/simulation.hpp"
 #include "validation/case.hpp"

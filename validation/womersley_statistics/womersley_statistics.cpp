@@ -23,11 +23,11 @@
 #include <fstream>
 #include <random>
 
-#include "flow/dual_metrics.hpp"
-#include "flow/local_mesh.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
 #include "flow/run_loop.hpp"
 #include "flow/womersley.hpp"
-#include "io/pipe_generator.hpp"
+#include "mesh/pipe_generator.hpp"
 #include "io/piv_compare.hpp"
 #include "io/run_analysis.hpp"
 #include "io/xdmf_writer.hpp"

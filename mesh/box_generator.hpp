@@ -1,0 +1,29 @@
+// Built-in structured box meshes: hexahedra, or the same grid split into tetrahedra (Kuhn's
+// 6-tetrahedra split, conforming across cells), prisms, pyramids (6 per hexahedron around a
+// centre node) or a conforming mix of all four; optional random node perturbation and periodic
+// pairs. Patches: xmin, xmax, ymin, ymax, zmin, zmax; region "fluid".
+#pragma once
+
+#include <Eigen/Dense>
+#include <array>
+#include <cstdint>
+#include <string>
+
+#include "mesh/mesh.hpp"
+
+namespace valsalva::io {
+
+struct BoxSpec {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  Eigen::Vector3d length = Eigen::Vector3d::Ones();
+  std::array<int, 3> cells{8, 8, 8};
+  std::string cell_type = "hexa";  // hexa | tetra | prism | pyramid | mixed
+  double perturbation = 0.0;       // amplitude per component, as a fraction of the cell size
+  std::uint64_t seed = 1;
+  std::array<bool, 3> periodic{false, false, false};
+};
+
+// Throws std::invalid_argument naming the bad parameter.
+flow::Mesh generate_box(const BoxSpec& spec);
+
+}  // namespace valsalva::io

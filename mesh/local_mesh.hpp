@@ -1,0 +1,71 @@
+// The part of the mesh one rank works on: its owned dual nodes (a contiguous range of the global
+// numbering, so hypre's IJ interface can use it directly), then ghost copies in layers, with
+// the median-dual metrics restricted to them and the halo that keeps ghosts up to date.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/comm.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/halo.hpp"
+#include "mesh/mesh.hpp"
+
+namespace valsalva::flow {
+
+struct PartitionOptions {
+  int ghost_layers = 2;          // the 4th-order scheme and the IBM kernels need >= 2
+  std::string method = "metis";  // metis | block
+};
+
+struct LocalMesh {
+  Comm comm;
+  int num_owned = 0;                   // local nodes [0, num_owned) are owned
+  std::vector<GlobalIndex> global_id;  // hypre numbering; owned ids are contiguous
+  GlobalIndex first_owned = 0;         // global id of local node 0
+  GlobalIndex global_nodes = 0;
+  std::vector<int> ghost_layer;        // 0 for owned nodes
+  std::vector<GlobalIndex> dual_node;  // index in the replicated DualMetrics
+
+  std::vector<Eigen::Vector3d> position;
+  std::vector<double> volume;
+  std::vector<double> h;
+  std::vector<Eigen::Vector3d> first_moment;
+  std::vector<SymTensor> second_moment;
+  std::vector<Eigen::Matrix3d> gradient_correction;
+
+  // Edges with both ends local; the first `num_owned_edges` touch at least one owned node,
+  // which is all an owned node's fluxes need.
+  std::vector<std::array<int, 2>> edges;
+  std::vector<Eigen::Vector3d> edge_normal;
+  std::vector<Eigen::Vector3d> edge_vector;
+  int num_owned_edges = 0;
+  // Index of each local edge in DualMetrics::edges, and whether the local orientation (lower to
+  // higher local index) is the reverse of the global one (lower to higher dual node): edge data
+  // such as the face mass flux is stored by global edge in checkpoints.
+  std::vector<GlobalIndex> global_edge;
+  std::vector<char> edge_flipped;
+
+  struct BoundaryFace {
+    int node = 0;
+    int patch = 0;
+    Eigen::Vector3d area{0, 0, 0};
+  };
+  std::vector<BoundaryFace> boundary;  // for every local node
+  std::vector<std::string> patch_names;
+
+  Halo halo;
+
+  int num_local() const { return static_cast<int>(global_id.size()); }
+};
+
+// Partitions the dual-node graph (METIS k-way on rank 0, broadcast) and builds this rank's part.
+LocalMesh distribute(const Mesh& mesh, const DualMetrics& metrics, MPI_Comm comm,
+                     const PartitionOptions& options = {});
+
+// Owner rank of every dual node (same on all ranks); exposed for tests and output.
+std::vector<int> partition_nodes(const DualMetrics& metrics, const Comm& comm,
+                                 const std::string& method);
+
+}  // namespace valsalva::flow

@@ -1,0 +1,66 @@
+// Point location in the replicated hybrid mesh: the containing cell of a point and the
+// isoparametric weights of its nodes, so that a nodal field interpolates as sum_k w_k f(node_k).
+// Tetrahedra: barycentric coordinates; hexahedra: trilinear; prisms: linear triangle x linear
+// segment; pyramids: the rational (Bedrosian) shape functions, which reproduce linear fields
+// (G. Bedrosian, "Shape functions and integration formulas for three-dimensional finite element
+// analysis", IJNME 35, 1992). Non-affine cells are inverted by Newton's method on the reference
+// coordinates (Zienkiewicz & Taylor, The Finite Element Method, vol. 1, ch. 9).
+// Candidate cells come from a uniform bin grid of cell bounding boxes; a point on a face shared
+// by two cells goes to the lower cell id, the same on every rank.
+#pragma once
+
+#include <Eigen/Dense>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+
+namespace valsalva::io {
+
+struct PointLocation {
+  flow::GlobalIndex cell = -1;
+  int count = 0;                             // nodes of the cell
+  std::array<flow::GlobalIndex, 8> nodes{};  // mesh node ids
+  std::array<double, 8> weights{};           // sum to 1
+  Eigen::Vector3d reference{0, 0, 0};        // reference coordinates in the cell
+
+  // Interpolates a nodal field given as value_of_node(mesh node). Nodes with a negligible
+  // weight (|w| <= 1e-14) are skipped, so a point on a face or a node does not read the
+  // off-face nodes (which may be NaN, e.g. outside a statistics subset).
+  template <class Get>
+  double interpolate(Get&& value_of_node) const {
+    double s = 0;
+    for (int k = 0; k < count; ++k)
+      if (std::abs(weights[k]) > 1e-14) s += weights[k] * value_of_node(nodes[k]);
+    return s;
+  }
+};
+
+// Shape functions of `type` at reference point `xi` (Gmsh node order) and their derivatives
+// d N_k / d xi_j in row k; returns the node count.
+int shape_functions(flow::CellType type, const Eigen::Vector3d& xi, std::array<double, 8>& n,
+                    std::array<Eigen::Vector3d, 8>& dn);
+
+class PointLocator {
+ public:
+  explicit PointLocator(const flow::Mesh& mesh);
+
+  // The containing cell (lowest id if several), or nullopt when the point is outside the mesh.
+  // `tolerance` is relative to the cell's reference size (points that far outside still count).
+  std::optional<PointLocation> locate(const Eigen::Vector3d& x, double tolerance = 1e-9) const;
+
+  const flow::Mesh& mesh() const { return *mesh_; }
+
+ private:
+  std::optional<PointLocation> try_cell(flow::GlobalIndex c, const Eigen::Vector3d& x,
+                                        double tolerance) const;
+  const flow::Mesh* mesh_;
+  Eigen::Vector3d lo_, hi_, bin_size_;
+  std::array<int, 3> bins_{1, 1, 1};
+  std::vector<std::int64_t> bin_offsets_;
+  std::vector<flow::GlobalIndex> bin_cells_;
+};
+
+}  // namespace valsalva::io
