@@ -2,7 +2,7 @@
 // reads the statistics written by io::PhaseStatistics::write (mesh, one HDF5 file per phase bin,
 // <name>_phases.csv), reads the PIV file, matches every PIV frame to the bin whose phase time is
 // nearest to the frame's phase/time value (or to --bin), and writes metrics.csv, frame_<i>.csv,
-// profile_<line>_<i>.csv and frame_<i>.png (io/plot_piv.py) into --out. PIV files in other
+// profile_<line>_<i>.csv and frame_<i>.png (analysis/plot_piv.py) into --out. PIV files in other
 // units than m and m/s take --length-scale / --velocity-scale (io::PivUnits). Runs on rank 0.
 #include "app/command_compare_piv.hpp"
 
@@ -16,9 +16,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "io/piv_compare.hpp"
-#include "io/probes.hpp"
-#include "io/statistics_files.hpp"
+#include "analysis/piv_compare.hpp"
+#include "analysis/probes.hpp"
+#include "analysis/statistics_files.hpp"
 #include "run/data_dir.hpp"
 
 namespace valsalva::app {
@@ -129,7 +129,8 @@ int run(const Options& o) {
     if (o.plot) {
       const auto png = fs::path(o.out) / fmt::format("frame_{:03d}.png", f);
       const std::string cmd = fmt::format(
-          "/usr/bin/python3 '{}/io/plot_piv.py' '{}' '{}'{} --title '{}: PIV vs simulation bin {}'",
+          "/usr/bin/python3 '{}/analysis/plot_piv.py' '{}' '{}'{} --title '{}: PIV vs simulation "
+          "bin {}'",
           run::data_dir().string(), csv.string(), png.string(), profiles, frame.label, bin);
       if (std::system(cmd.c_str()) != 0)
         fmt::print(stderr, "compare-piv: warning: plot failed ({})\n", cmd);

@@ -1,6 +1,6 @@
 // `valsalva plot-valve RUN_DIR [--out DIR] [--period s] [--cycle-offset s] [--overwrite]`: TPG,
 // flow rate, orifice area and opening ratio, leaflet tips against time with the reference
-// instants of the design note (io/plot_valve.py), and per-cycle TPG extremes from
+// instants of the design note (analysis/plot_valve.py), and per-cycle TPG extremes from
 // valve_cycles.csv; PNGs and plotted.json in DIR (default RUN_DIR/plots). Existing PNGs are
 // kept unless --overwrite. Runs on rank 0.
 #include "app/command_plot_valve.hpp"
@@ -45,7 +45,8 @@ int run(const Options& o) {
           fmt::format("plot-valve: '{}' exists; --overwrite replaces it", (out / png).string()));
   fs::create_directories(out);
   const std::string cmd = fmt::format(
-      "/usr/bin/python3 '{}/io/plot_valve.py' '{}' '{}' --period {:.17g} --cycle-offset {:.17g}",
+      "/usr/bin/python3 '{}/analysis/plot_valve.py' '{}' '{}' --period {:.17g} --cycle-offset "
+      "{:.17g}",
       run::data_dir().string(), o.run_dir, out.string(), o.period, o.cycle_offset);
   if (std::system(cmd.c_str()) != 0)
     throw std::runtime_error(fmt::format("plot-valve: plotting '{}' failed", csv.string()));

@@ -1,4 +1,5 @@
-// `valsalva plot-valve`: PNG plots of a run's valve.csv and valve_cycles.csv (io/plot_valve.py).
+// `valsalva plot-valve`: PNG plots of a run's valve.csv and valve_cycles.csv
+// (analysis/plot_valve.py).
 #pragma once
 
 #include <CLI/CLI.hpp>

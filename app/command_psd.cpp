@@ -1,7 +1,7 @@
 // `valsalva psd PROBES.csv --column NAME [--column NAME2 ...] [--segments N | --segment-length N]
-// [--overlap 0.5] [--out DIR] [--no-plot]`: Welch power spectral density (io/welch_psd.hpp) of
-// columns of a probe CSV (io::ProbeCsv: "time,<probe>_u,..."). Writes DIR/psd_<column>.csv
-// (frequency [Hz], psd [units^2/Hz]) and DIR/psd.png (io/plot_psd.py). Sample times that are
+// [--overlap 0.5] [--out DIR] [--no-plot]`: Welch power spectral density (analysis/welch_psd.hpp)
+// of columns of a probe CSV (io::ProbeCsv: "time,<probe>_u,..."). Writes DIR/psd_<column>.csv
+// (frequency [Hz], psd [units^2/Hz]) and DIR/psd.png (analysis/plot_psd.py). Sample times that are
 // not uniform to round-off (a run whose dt changed) are resampled linearly onto a uniform grid
 // with the mean spacing and the same number of samples, and the command says so; times that do
 // not increase are refused. Runs on rank 0.
@@ -18,9 +18,9 @@
 #include <memory>
 #include <stdexcept>
 
-#include "io/probes.hpp"
-#include "io/uniform_sampling.hpp"
-#include "io/welch_psd.hpp"
+#include "analysis/probes.hpp"
+#include "analysis/uniform_sampling.hpp"
+#include "analysis/welch_psd.hpp"
 #include "run/data_dir.hpp"
 
 namespace valsalva::app {
@@ -131,7 +131,7 @@ int run(const Options& o) {
   if (o.plot) {
     const auto png = fs::path(o.out) / "psd.png";
     const std::string cmd = fmt::format(
-        "/usr/bin/python3 '{}/io/plot_psd.py' '{}'{} --title 'Welch PSD of {}'",
+        "/usr/bin/python3 '{}/analysis/plot_psd.py' '{}'{} --title 'Welch PSD of {}'",
         run::data_dir().string(), png.string(), plot_args, fs::path(o.file).filename().string());
     if (std::system(cmd.c_str()) != 0) fmt::print(stderr, "psd: warning: plot failed ({})\n", cmd);
   }

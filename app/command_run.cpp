@@ -6,10 +6,10 @@
 #include <chrono>
 
 #include "app/commands.hpp"
-#include "io/scene.hpp"
-#include "io/stop_signal.hpp"
 #include "run/phase.hpp"
 #include "run/simulation.hpp"
+#include "run/stop_signal.hpp"
+#include "scene/scene.hpp"
 
 namespace valsalva::app {
 

@@ -2,7 +2,7 @@
 // outward flux Q, pressure P and, for an RCR, distal pressure p_d, all to 17 digits, so that the
 // lumped law can be checked from the file (log.csv carries the same every run.log_every steps,
 // its fluxes to 10 digits). Written by rank 0; a resumed run appends (the restart has cut the
-// rows after its checkpoint, io/restart_continuity.hpp).
+// rows after its checkpoint, run/restart_continuity.hpp).
 #pragma once
 
 #include <cstdint>

@@ -33,12 +33,12 @@
 #include <optional>
 #include <vector>
 
-#include "mesh/local_mesh.hpp"
 #include "flow/projection_rk4.hpp"
 #include "flow/time_scheme.hpp"
 #include "ibm/dirac_transfer.hpp"
 #include "ibm/immersed_body.hpp"
 #include "ibm/implicit_markers.hpp"
+#include "mesh/local_mesh.hpp"
 
 namespace valsalva::ibm {
 
@@ -56,7 +56,7 @@ enum class CouplingMode { per_stage, per_step, implicit };
 //                   Guy & Kirby (2007), markers moving with the corrected fluid.
 // c = dt^2/rho, A = Interp Spread at X^n. Measured limits and why lagged stays the default:
 // ibm/implicit_markers.hpp. backward_euler is not a scene key yet: the run loop's finish_step
-// hands the coupling a const state and no projector (io/immersed_run.cpp).
+// hands the coupling a const state and no projector (run/immersed_run.cpp).
 enum class ImplicitVariant { lagged, consistent, backward_euler };
 
 inline const char* implicit_variant_name(ImplicitVariant v) {

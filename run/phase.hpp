@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "io/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace valsalva::run {
 

@@ -12,10 +12,10 @@
 #include <memory>
 #include <string>
 
+#include "flow/run_loop.hpp"
 #include "mesh/local_mesh.hpp"
 #include "mesh/mesh.hpp"
-#include "flow/run_loop.hpp"
-#include "io/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace valsalva::ibm {
 class ImmersedStructure;

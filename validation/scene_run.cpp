@@ -6,8 +6,8 @@
 #include <cstdlib>
 #include <system_error>
 
-#include "io/scene.hpp"
 #include "run/data_dir.hpp"
+#include "scene/scene.hpp"
 
 namespace valsalva::validation {
 

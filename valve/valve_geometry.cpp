@@ -8,7 +8,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "io/scene_schema.hpp"
+#include "scene/scene_schema.hpp"
 
 namespace valsalva::valve {
 

@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "flow/patch_fluxes.hpp"
+#include "io/appended_series.hpp"
 #include "io/hdf5_file.hpp"
-#include "io/restart_continuity.hpp"
 #include "structure/contact.hpp"
 #include "structure/orifice_area.hpp"
 #include "structure/stress_recovery.hpp"

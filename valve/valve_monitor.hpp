@@ -1,4 +1,4 @@
-// The indices of a valve during a flow run ([valve] of a scene, io/scene_keys_valve.hpp), from
+// The indices of a valve during a flow run ([valve] of a scene, scene/scene_keys_valve.hpp), from
 // the flow state and the immersed leaflets (one structure with node sets leaflet1..3):
 //   valve.csv         every valve.every_steps: step, time, cycle, the flow through the inlet and
 //                     outlet patches (m^3/s, into the domain at the inlet and out of it at the
@@ -19,13 +19,13 @@
 #include <fstream>
 #include <vector>
 
+#include "analysis/pressure_drop.hpp"
 #include "analysis/valve_cycles.hpp"
-#include "mesh/local_mesh.hpp"
+#include "analysis/valve_monitor_options.hpp"
 #include "flow/projection_rk4.hpp"
 #include "ibm/immersed_structure.hpp"
 #include "io/checkpoint.hpp"
-#include "io/pressure_drop.hpp"
-#include "io/valve_monitor_options.hpp"
+#include "mesh/local_mesh.hpp"
 #include "structure/solid_mesh.hpp"
 
 namespace valsalva::valve {

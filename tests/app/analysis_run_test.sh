@@ -25,7 +25,7 @@ head -1 "$out/pressure_drop.csv" | grep -q '^time,pipe_upstream,pipe_downstream,
 import csv, sys
 d = sys.argv[1]
 # The section flux sums the projected face fluxes: the inlet flow rate to the Poisson
-# tolerance (io/section_flux.hpp), at every step.
+# tolerance (analysis/section_flux.hpp), at every step.
 q = [float(r["mid_flux"]) for r in csv.DictReader(open(f"{d}/sections.csv"))][1:]
 assert q and max(abs(x / 2e-6 - 1) for x in q) < 1e-8, q[-1]  # poisson.tolerance 1e-8
 # The diameter's time-averaged axial velocity peaks at the centre (s = 5 mm).

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""io/plot_valve.py on tests/data/plot_valve: PNGs with a PNG header, the instants where the
+"""analysis/plot_valve.py on tests/data/plot_valve: PNGs with a PNG header, the instants where the
 design note puts them, and a missing column named with its file and line."""
 import json, os, shutil, subprocess, sys, tempfile
 

@@ -11,10 +11,10 @@
 #include <cmath>
 #include <filesystem>
 
+#include "analysis/phase_statistics.hpp"
+#include "mesh/box_generator.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
-#include "mesh/box_generator.hpp"
-#include "io/phase_statistics.hpp"
 
 using namespace valsalva;
 

@@ -11,9 +11,9 @@
 
 #include "field_test_utils.hpp"
 #include "flow/run_loop.hpp"
-#include "io/mesh_source.hpp"
-#include "io/scene.hpp"
-#include "io/scene_keys_boundary.hpp"
+#include "scene/mesh_source.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_keys_boundary.hpp"
 
 using namespace valsalva;
 

@@ -15,9 +15,9 @@
 #include <memory>
 #include <numbers>
 
+#include "analysis/section_flux.hpp"
 #include "field_test_utils.hpp"
 #include "flow/run_loop.hpp"
-#include "io/section_flux.hpp"
 
 using namespace valsalva;
 using Vec = Eigen::Vector3d;

@@ -15,8 +15,8 @@
 #include "field_test_utils.hpp"
 #include "flow/body_forcing.hpp"
 #include "flow/run_loop.hpp"
-#include "io/scene.hpp"
-#include "io/scene_keys_flow.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_keys_flow.hpp"
 
 using namespace valsalva;
 

@@ -10,11 +10,11 @@
 #include <filesystem>
 #include <fstream>
 
+#include "io/checkpoint.hpp"
+#include "mesh/box_generator.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
-#include "mesh/box_generator.hpp"
-#include "io/checkpoint.hpp"
-#include "io/stop_signal.hpp"
+#include "run/stop_signal.hpp"
 
 using namespace valsalva;
 namespace fs = std::filesystem;

@@ -8,13 +8,13 @@
 #include <tuple>
 #include <vector>
 
-#include "mesh/dual_metrics.hpp"
-#include "mesh/mesh_check.hpp"
 #include "mesh/box_generator.hpp"
 #include "mesh/cylinder_channel_generator.hpp"
-#include "io/mesh_source.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/mesh_check.hpp"
 #include "mesh/prism_split.hpp"
-#include "io/scene.hpp"
+#include "scene/mesh_source.hpp"
+#include "scene/scene.hpp"
 
 using namespace valsalva;
 

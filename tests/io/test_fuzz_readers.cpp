@@ -17,11 +17,11 @@
 #include <string>
 #include <vector>
 
+#include "analysis/piv_data.hpp"
+#include "analysis/probes.hpp"
 #include "core/numeric_table.hpp"
-#include "io/piv_data.hpp"
-#include "io/probes.hpp"
-#include "io/scene.hpp"
 #include "io/waveform_table.hpp"
+#include "scene/scene.hpp"
 
 namespace fs = std::filesystem;
 using namespace valsalva;

@@ -1,4 +1,4 @@
-// Line statistics (io/line_statistics.hpp) of a synthetic field that is linear in space at
+// Line statistics (analysis/line_statistics.hpp) of a synthetic field that is linear in space at
 // every instant, so that the cell interpolation at the line's points is exact: a phase-locked
 // sine plus cycle-to-cycle fluctuations from exactly zero-mean, orthogonal +-1 sequences over 4
 // cycles give known phase means, RMS values and Reynolds stresses. The accumulators agree bit
@@ -13,12 +13,12 @@
 #include <fstream>
 #include <sstream>
 
+#include "analysis/line_statistics.hpp"
+#include "analysis/run_analysis.hpp"
+#include "mesh/box_generator.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
-#include "mesh/box_generator.hpp"
-#include "io/line_statistics.hpp"
-#include "io/run_analysis.hpp"
-#include "io/scene_keys_analysis.hpp"
+#include "scene/scene_keys_analysis.hpp"
 
 using namespace valsalva;
 namespace fs = std::filesystem;

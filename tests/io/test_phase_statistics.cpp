@@ -9,11 +9,11 @@
 #include <cmath>
 #include <filesystem>
 
+#include "analysis/phase_statistics.hpp"
+#include "io/xdmf_writer.hpp"
+#include "mesh/box_generator.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
-#include "mesh/box_generator.hpp"
-#include "io/phase_statistics.hpp"
-#include "io/xdmf_writer.hpp"
 
 using namespace valsalva;
 namespace fs = std::filesystem;

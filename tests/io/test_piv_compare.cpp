@@ -11,8 +11,8 @@
 #include <fstream>
 #include <random>
 
+#include "analysis/piv_compare.hpp"
 #include "mesh/box_generator.hpp"
-#include "io/piv_compare.hpp"
 
 using namespace valsalva;
 

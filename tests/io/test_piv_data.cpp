@@ -5,7 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "io/piv_data.hpp"
+#include "analysis/piv_data.hpp"
 
 using namespace valsalva;
 

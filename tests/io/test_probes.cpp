@@ -9,10 +9,10 @@
 #include <filesystem>
 #include <random>
 
+#include "analysis/probes.hpp"
+#include "mesh/box_generator.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
-#include "mesh/box_generator.hpp"
-#include "io/probes.hpp"
 
 using namespace valsalva;
 

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/restart_continuity.hpp"
+#include "run/restart_continuity.hpp"
 
 namespace fs = std::filesystem;
 using namespace valsalva;

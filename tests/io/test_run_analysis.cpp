@@ -8,10 +8,10 @@
 #include <fstream>
 #include <string>
 
+#include "analysis/run_analysis.hpp"
+#include "mesh/box_generator.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
-#include "mesh/box_generator.hpp"
-#include "io/run_analysis.hpp"
 
 using namespace valsalva;
 

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/run_directory.hpp"
+#include "run/run_directory.hpp"
 
 namespace fs = std::filesystem;
 using namespace valsalva::io;

@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "io/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace fs = std::filesystem;
 using namespace valsalva::io;

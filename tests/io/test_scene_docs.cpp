@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/scene_docs.hpp"
+#include "scene/scene_docs.hpp"
 
 namespace fs = std::filesystem;
 using namespace valsalva::io;

@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "io/mesh_source.hpp"
-#include "io/scene_keys_structure.hpp"
+#include "scene/mesh_source.hpp"
+#include "scene/scene_keys_structure.hpp"
 
 using namespace valsalva;
 

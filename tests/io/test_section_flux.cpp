@@ -1,4 +1,4 @@
-// Section fluxes (io/section_flux.hpp) in a Poiseuille pipe (R 5 mm, 20 mm long, Gmsh
+// Section fluxes (analysis/section_flux.hpp) in a Poiseuille pipe (R 5 mm, 20 mm long, Gmsh
 // tetrahedra of 1.5 mm, inlet Q = 2 mL/s): after a few steps from rest the projected face flux
 // satisfies the discrete continuity equation at every node to the Poisson tolerance, so the flux
 // through any complete cross-section equals the imposed (and discretely exact) inlet flow rate,
@@ -12,14 +12,14 @@
 #include <fstream>
 #include <string>
 
-#include "mesh/dual_metrics.hpp"
-#include "mesh/local_mesh.hpp"
+#include "analysis/run_analysis.hpp"
+#include "analysis/section_flux.hpp"
 #include "flow/run_loop.hpp"
 #include "mesh/box_generator.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
 #include "mesh/periodic_pipe_generator.hpp"
 #include "mesh/pipe_generator.hpp"
-#include "io/run_analysis.hpp"
-#include "io/section_flux.hpp"
 
 using namespace valsalva;
 

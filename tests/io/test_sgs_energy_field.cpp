@@ -3,10 +3,10 @@
 #include <doctest/doctest.h>
 #include <mpi.h>
 
+#include "analysis/sgs_energy_field.hpp"
+#include "mesh/box_generator.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
-#include "mesh/box_generator.hpp"
-#include "io/sgs_energy_field.hpp"
 
 using namespace valsalva;
 

@@ -1,18 +1,18 @@
-// compare-piv's inputs (io/statistics_files.hpp) read back from PhaseStatistics::write, and mixed
-// up across two runs on meshes of 729 and 1000 nodes: a bin of one run with the mesh of the other
-// is refused naming both files and both node counts, never read out of bounds (issue 23, item 2;
-// run under the sanitizers by `make sanitize`).
+// compare-piv's inputs (analysis/statistics_files.hpp) read back from PhaseStatistics::write, and
+// mixed up across two runs on meshes of 729 and 1000 nodes: a bin of one run with the mesh of the
+// other is refused naming both files and both node counts, never read out of bounds (issue 23, item
+// 2; run under the sanitizers by `make sanitize`).
 #include <doctest/doctest.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <string>
 
+#include "analysis/phase_statistics.hpp"
+#include "analysis/statistics_files.hpp"
+#include "mesh/box_generator.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
-#include "mesh/box_generator.hpp"
-#include "io/phase_statistics.hpp"
-#include "io/statistics_files.hpp"
 
 using namespace valsalva;
 namespace fs = std::filesystem;

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "io/uniform_sampling.hpp"
+#include "analysis/uniform_sampling.hpp"
 
 using namespace valsalva;
 

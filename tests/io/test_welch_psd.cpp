@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "io/welch_psd.hpp"
+#include "analysis/welch_psd.hpp"
 
 using namespace valsalva;
 

@@ -32,11 +32,11 @@
 #include <string>
 #include <vector>
 
+#include "ibm/immersed_structure.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
-#include "ibm/immersed_structure.hpp"
-#include "io/mesh_source.hpp"
-#include "io/scene.hpp"
+#include "scene/mesh_source.hpp"
+#include "scene/scene.hpp"
 #include "validation/bench/bench_cli.hpp"
 #include "validation/bench/bench_util.hpp"
 #include "validation/ib_leakage/leakage_setup.hpp"

@@ -27,11 +27,11 @@
 #include <string>
 #include <vector>
 
+#include "analysis/phase_statistics.hpp"
+#include "analysis/probes.hpp"
 #include "flow/operators.hpp"
 #include "io/checkpoint.hpp"
 #include "io/field_output.hpp"
-#include "io/phase_statistics.hpp"
-#include "io/probes.hpp"
 #include "run/simulation.hpp"
 #include "validation/bench/bench_cli.hpp"
 #include "validation/bench/bench_util.hpp"

@@ -29,8 +29,8 @@
 #include <stdexcept>
 
 #include "core/numeric_table.hpp"
-#include "io/scene.hpp"
 #include "run/simulation.hpp"
+#include "scene/scene.hpp"
 #include "validation/case.hpp"
 #include "validation/scene_run.hpp"
 

@@ -37,13 +37,13 @@
 #include <utility>
 #include <vector>
 
-#include "mesh/dual_metrics.hpp"
-#include "mesh/local_mesh.hpp"
+#include "analysis/probes.hpp"
 #include "flow/run_diagnostics.hpp"
 #include "mesh/cylinder_channel_generator.hpp"
-#include "io/probes.hpp"
-#include "io/scene.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
 #include "run/simulation.hpp"
+#include "scene/scene.hpp"
 #include "validation/case.hpp"
 #include "validation/dfg_cylinder/cylinder_channel_flow.hpp"
 #include "validation/dfg_cylinder/wall_diagnostics.hpp"

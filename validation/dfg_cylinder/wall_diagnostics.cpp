@@ -1,7 +1,7 @@
 // End-of-run wall evaluations of the DFG cylinder; see wall_diagnostics.hpp.
 #include "validation/dfg_cylinder/wall_diagnostics.hpp"
 
-#include "io/probes.hpp"
+#include "analysis/probes.hpp"
 #include "validation/dfg_cylinder/cylinder_channel_flow.hpp"
 
 namespace valsalva::validation {

@@ -22,7 +22,7 @@
 #include <cmath>
 #include <string>
 
-#include "io/pressure_drop.hpp"
+#include "analysis/pressure_drop.hpp"
 #include "validation/case.hpp"
 #include "validation/ib_leakage/leakage_run.hpp"
 

@@ -9,9 +9,9 @@
 #include <memory>
 #include <stdexcept>
 
+#include "analysis/pressure_drop.hpp"
 #include "ibm/dirac_transfer.hpp"
 #include "ibm/immersed_structure.hpp"
-#include "io/pressure_drop.hpp"
 #include "structure/solid_forces.hpp"
 #include "validation/ib_leakage/leakage_membrane.hpp"
 #include "validation/scene_run.hpp"

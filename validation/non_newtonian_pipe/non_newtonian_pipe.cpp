@@ -22,10 +22,10 @@
 #include <functional>
 
 #include "core/numeric_table.hpp"
-#include "io/run_directory.hpp"
-#include "io/scene.hpp"
-#include "io/scene_keys_rheology.hpp"
+#include "run/run_directory.hpp"
 #include "run/simulation.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_keys_rheology.hpp"
 #include "validation/case.hpp"
 #include "validation/non_newtonian_pipe/radial_reference.hpp"
 #include "validation/scene_run.hpp"

@@ -14,10 +14,10 @@
 #include <cmath>
 #include <fstream>
 
+#include "analysis/pressure_drop.hpp"
 #include "core/numeric_table.hpp"
-#include "io/pressure_drop.hpp"
-#include "io/scene.hpp"
 #include "run/simulation.hpp"
+#include "scene/scene.hpp"
 #include "validation/case.hpp"
 #include "validation/scene_run.hpp"
 

@@ -8,8 +8,8 @@
 #include <stdexcept>
 
 #include "core/comm.hpp"
-#include "io/scene.hpp"
 #include "run/simulation.hpp"
+#include "scene/scene.hpp"
 #include "validation/bench/bench_util.hpp"
 #include "validation/scene_run.hpp"
 

@@ -22,9 +22,9 @@
 #include <fstream>
 #include <numbers>
 
-#include "flow/womersley.hpp"
+#include "analysis/run_analysis.hpp"
 #include "core/numeric_table.hpp"
-#include "io/run_analysis.hpp"
+#include "flow/womersley.hpp"
 #include "run/simulation.hpp"
 #include "validation/case.hpp"
 #include "validation/scene_run.hpp"

@@ -23,14 +23,14 @@
 #include <fstream>
 #include <random>
 
-#include "mesh/dual_metrics.hpp"
-#include "mesh/local_mesh.hpp"
+#include "analysis/piv_compare.hpp"
+#include "analysis/run_analysis.hpp"
 #include "flow/run_loop.hpp"
 #include "flow/womersley.hpp"
-#include "mesh/pipe_generator.hpp"
-#include "io/piv_compare.hpp"
-#include "io/run_analysis.hpp"
 #include "io/xdmf_writer.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
+#include "mesh/pipe_generator.hpp"
 #include "validation/case.hpp"
 
 namespace valsalva::validation {

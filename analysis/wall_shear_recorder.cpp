@@ -1,0 +1,196 @@
+#include "analysis/wall_shear_recorder.hpp"
+
+#include <fmt/format.h>
+#include <mpi.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "flow/wall_force.hpp"
+
+namespace valsalva::io {
+
+namespace {
+
+constexpr int wss_cols = 4;  // sum tau_x dt, sum tau_y dt, sum tau_z dt, sum |tau| dt
+
+}  // namespace
+
+WallShearRecorder::WallShearRecorder(const flow::LocalMesh& local, WallShearOptions options,
+                                     double density, double dynamic_viscosity,
+                                     const std::filesystem::path& run_dir, bool append)
+    : local_(&local),
+      options_(std::move(options)),
+      density_(density),
+      mu_(dynamic_viscosity),
+      weights_(flow::laplacian_weights(local)) {
+  // The wall nodes of each patch, in the order wall_loads returns them (state-independent).
+  const auto n = static_cast<std::size_t>(local.num_local());
+  const flow::VectorField zero_v(n, Eigen::Vector3d::Zero());
+  const flow::ScalarField zero_p(n, 0.0);
+  const flow::TensorField zero_g(n, Eigen::Matrix3d::Zero());
+  for (const auto& patch : options_.patches) {
+    if (std::find(local.patch_names.begin(), local.patch_names.end(), patch) ==
+        local.patch_names.end())
+      throw std::runtime_error(fmt::format("wall_shear: patch '{}' is not in the mesh", patch));
+    flow::WallForceInput in;
+    in.density = density_;
+    in.dynamic_viscosity = mu_;
+    in.velocity = &zero_v;
+    in.pressure = &zero_p;
+    in.velocity_gradient = &zero_g;
+    in.laplacian_weights = &weights_;
+    std::vector<int> nodes;
+    std::vector<double> area;
+    for (const auto& l : flow::wall_loads(local, patch, in)) {
+      nodes.push_back(l.node);
+      area.push_back(l.area.norm());
+    }
+    nodes_.push_back(std::move(nodes));
+    area_.push_back(std::move(area));
+  }
+  tau_.resize(options_.patches.size());
+  stats_.resize(options_.patches.size());
+  if (local.comm.root()) {
+    const auto path = run_dir / "wall_shear_history.csv";
+    history_.open(path, append ? std::ios::app : std::ios::trunc);
+    if (!history_) throw std::runtime_error("wall_shear: cannot write " + path.string());
+    if (!append) {
+      history_ << "time";
+      for (const auto& p : options_.patches) history_ << ',' << p << "_mean_wss";
+      history_ << '\n';
+    }
+  }
+}
+
+void WallShearRecorder::sample(const flow::FlowState& state) {
+  flow::gradient(*local_, state.velocity, grad_);
+  flow::WallForceInput in;
+  in.density = density_;
+  in.dynamic_viscosity = mu_;
+  in.velocity = &state.velocity;
+  in.pressure = &state.pressure;
+  in.velocity_gradient = &grad_;
+  in.laplacian_weights = &weights_;
+  in.body_force = body_force_;
+  if (model_.law != flow::ViscosityLaw::newtonian) {
+    mu_field_.resize(grad_.size());
+    for (std::size_t i = 0; i < grad_.size(); ++i)
+      mu_field_[i] = flow::apparent_viscosity(model_, flow::shear_rate(grad_[i]));
+    in.viscosity_field = &mu_field_;
+  }
+  const double t = state.time, t0 = options_.start_time;
+  const double elapsed = sampled_ ? t - std::max(last_time_, t0) : 0.0;
+  std::vector<double> mean;
+  for (std::size_t p = 0; p < options_.patches.size(); ++p) {
+    tau_[p] = flow::wall_shear_stress(flow::wall_loads(*local_, options_.patches[p], in));
+    double sa = 0, s = 0;
+    for (std::size_t i = 0; i < tau_[p].size(); ++i) {
+      s += area_[p][i] * tau_[p][i].norm();
+      sa += area_[p][i];
+    }
+    mean.push_back(local_->comm.sum(s) / local_->comm.sum(sa));
+    // Rectangle rule over the interval since the previous sample (its part after start_time).
+    if (t > t0 && elapsed > 0) stats_[p].add(tau_[p], elapsed);
+  }
+  last_time_ = t;
+  sampled_ = true;
+  if (history_.is_open()) {
+    history_ << fmt::format("{:.17g}", t);
+    for (double m : mean) history_ << fmt::format(",{:.9e}", m);
+    history_ << '\n' << std::flush;
+  }
+}
+
+std::vector<CheckpointArray> WallShearRecorder::checkpoint_arrays() const {
+  const auto patches = static_cast<std::int64_t>(options_.patches.size());
+  CheckpointArray sums{"wall_shear_sums", local_->global_nodes * patches, wss_cols, {}, {}};
+  CheckpointArray meta{"wall_shear_meta", patches + 2, 0, {}, {}};
+  for (std::size_t p = 0; p < options_.patches.size(); ++p) {
+    const auto s = stats_[p].state();
+    const bool empty = s.size() == 1;  // nothing accumulated yet
+    for (std::size_t i = 0; i < nodes_[p].size(); ++i) {
+      sums.rows.push_back(local_->dual_node[nodes_[p][i]] * patches + std::int64_t(p));
+      for (int c = 0; c < wss_cols; ++c)
+        sums.data.push_back(empty ? 0.0 : s[wss_cols * i + std::size_t(c)]);
+    }
+    if (local_->comm.root()) {
+      meta.rows.push_back(std::int64_t(p));
+      meta.data.push_back(s.back());  // duration
+    }
+  }
+  if (local_->comm.root()) {
+    meta.rows.insert(meta.rows.end(), {patches, patches + 1});
+    meta.data.insert(meta.data.end(), {last_time_, sampled_ ? 1.0 : 0.0});
+  }
+  return {sums, meta};
+}
+
+void WallShearRecorder::restore(const CheckpointReader& reader) {
+  const auto patches = static_cast<std::int64_t>(options_.patches.size());
+  if (!reader.has("wall_shear_sums") || !reader.has("wall_shear_meta") ||
+      reader.shape("wall_shear_meta").first != patches + 2)
+    throw std::runtime_error(
+        fmt::format("restart: {} has no wall shear statistics for the {} patch(es) of [wall_shear]",
+                    reader.path().string(), patches));
+  std::vector<std::int64_t> all(std::size_t(patches + 2));
+  for (std::int64_t i = 0; i < patches + 2; ++i) all[std::size_t(i)] = i;
+  const auto meta = reader.read_array("wall_shear_meta", all);
+  for (std::size_t p = 0; p < options_.patches.size(); ++p) {
+    std::vector<std::int64_t> rows;
+    for (int node : nodes_[p]) rows.push_back(local_->dual_node[node] * patches + std::int64_t(p));
+    auto s = reader.read_array("wall_shear_sums", rows);
+    s.push_back(meta[p]);
+    if (meta[p] > 0) stats_[p].restore(s);
+  }
+  last_time_ = meta[std::size_t(patches)];
+  sampled_ = meta[std::size_t(patches) + 1] != 0;
+}
+
+void WallShearRecorder::write(const std::filesystem::path& run_dir) const {
+  constexpr int width = 10;  // patch, node, x, y, z, tawss, osi, tau x y z
+  std::vector<double> rows;
+  for (std::size_t p = 0; p < options_.patches.size(); ++p) {
+    const auto tawss = stats_[p].tawss(), osi = stats_[p].osi();
+    for (std::size_t i = 0; i < nodes_[p].size(); ++i) {
+      const int j = nodes_[p][i];
+      const auto& x = local_->position[j];
+      const Eigen::Vector3d tau = i < tau_[p].size() ? tau_[p][i] : Eigen::Vector3d::Zero();
+      rows.insert(rows.end(), {double(p), double(local_->dual_node[j]), x.x(), x.y(), x.z(),
+                               tawss.empty() ? 0.0 : tawss[i], osi.empty() ? 0.0 : osi[i], tau.x(),
+                               tau.y(), tau.z()});
+    }
+  }
+  // Surface data is small: gather it on rank 0 and sort, so the file is rank-count independent.
+  const auto& comm = local_->comm;
+  int count = static_cast<int>(rows.size());
+  std::vector<int> counts(comm.size()), offsets(comm.size(), 0);
+  VALSALVA_MPI(MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm.get()));
+  std::vector<double> all;
+  if (comm.root()) {
+    for (int r = 1; r < comm.size(); ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+    all.resize(std::size_t(offsets.back() + counts.back()));
+  }
+  VALSALVA_MPI(MPI_Gatherv(rows.data(), count, MPI_DOUBLE, all.data(), counts.data(),
+                           offsets.data(), MPI_DOUBLE, 0, comm.get()));
+  if (!comm.root()) return;
+  const std::size_t n = all.size() / width;
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::pair(all[a * width], all[a * width + 1]) <
+           std::pair(all[b * width], all[b * width + 1]);
+  });
+  const auto path = run_dir / "wall_shear.csv";
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("wall_shear: cannot write " + path.string());
+  out << "patch,node,x,y,z,tawss,osi,tau_x,tau_y,tau_z\n";
+  for (std::size_t i : order) {
+    const double* r = &all[i * width];
+    out << fmt::format("{},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e}\n",
+                       options_.patches[std::size_t(r[0])], std::int64_t(r[1]), r[2], r[3], r[4],
+                       r[5], r[6], r[7], r[8], r[9]);
+  }
+}
+
+}  // namespace valsalva::io

@@ -1,0 +1,152 @@
+#include "run/restart_continuity.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+
+#include "io/hdf5_file.hpp"
+
+namespace valsalva::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Dotted path -> TOML text of every value of a table.
+void flatten(const toml::table& table, const std::string& prefix,
+             std::map<std::string, std::string>& out) {
+  for (const auto& [key, node] : table) {
+    const std::string path =
+        prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
+    if (const auto* sub = node.as_table()) {
+      flatten(*sub, path, out);
+    } else {
+      std::ostringstream text;
+      node.visit([&](const auto& v) { text << v; });
+      out[path] = text.str();
+    }
+  }
+}
+
+bool may_change(const std::string& key) {
+  static const std::regex allowed(
+      "time\\.(end|max_steps)|output\\.(interval|interval_unit|checkpoint_every_steps|"
+      "checkpoint_every_minutes|checkpoint_keep|checkpoint_on_signal)|run\\..*|partition\\..*|"
+      "sample\\..*");
+  return std::regex_match(key, allowed);
+}
+
+}  // namespace
+
+std::string restart_scene_change(const fs::path& recorded, const Scene& scene) {
+  toml::table old_table;
+  try {
+    old_table = toml::parse_file(recorded.string());
+  } catch (const toml::parse_error& e) {
+    return fmt::format("the recorded scene '{}' does not parse: {}", recorded.string(),
+                       e.description());
+  }
+  // A run recorded by an older valsalva lacks the keys added since; resolving its scene with
+  // today's schema fills them with their defaults, so only real changes are reported. A
+  // recorded scene today's schema refuses is compared as written.
+  std::ostringstream recorded_text;
+  recorded_text << old_table;
+  try {
+    old_table = parse_scene(recorded_text.str(), scene.file()).table();
+  } catch (const std::exception&) {
+  }
+  std::map<std::string, std::string> before, after;
+  flatten(old_table, "", before);
+  flatten(scene.table(), "", after);
+  std::vector<std::string> changes;
+  auto value = [](const std::map<std::string, std::string>& m, const std::string& k) {
+    const auto it = m.find(k);
+    return it == m.end() ? std::string("(absent)") : it->second;
+  };
+  std::map<std::string, bool> keys;
+  for (const auto& [k, v] : before) keys[k] = true;
+  for (const auto& [k, v] : after) keys[k] = true;
+  for (const auto& [k, unused] : keys) {
+    const std::string a = value(before, k), b = value(after, k);
+    if (a != b && !may_change(k))
+      changes.push_back(
+          fmt::format("{} = {} in the run, {} in {}", k, a, b, scene.file().string()));
+  }
+  if (changes.empty()) return {};
+  std::string message = fmt::format(
+      "restart: the scene differs from the run's ({}) in keys a restart must not change "
+      "(only time.end, time.max_steps, output intervals and checkpoints, run.*, partition.* and "
+      "[sample.*] sections may change):",
+      recorded.string());
+  for (const auto& c : changes) message += "\n  " + c;
+  return message;
+}
+
+std::vector<fs::path> superseded_restart_outputs(const fs::path& dir, std::int64_t step) {
+  static const std::regex fields("fields_restart_([0-9]{9})(\\.xmf|_mesh\\.h5|_[0-9]{6}\\.h5)");
+  static const std::regex solids(".+_restart_([0-9]{9})(\\.xmf|_[0-9]+\\.h5|_mesh\\.h5)");
+  std::vector<fs::path> found;
+  auto scan = [&](const fs::path& folder, const std::regex& pattern) {
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec)) return;
+    for (const auto& entry : fs::directory_iterator(folder)) {
+      std::smatch m;
+      const std::string name = entry.path().filename().string();
+      if (entry.is_regular_file() && std::regex_match(name, m, pattern) && std::stoll(m[1]) >= step)
+        found.push_back(entry.path());
+    }
+  };
+  scan(dir, fields);
+  scan(dir / "structures", solids);
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+void continue_in_place(const fs::path& dir, const Scene& scene, std::int64_t step, double time,
+                       double dt, const std::vector<std::string>& series, const flow::Comm& comm) {
+  std::string error;
+  if (comm.root()) {
+    try {
+      // A name the table does not know would be continued uncut (its rows after the checkpoint
+      // repeated): a programming error, refused rather than skipped.
+      for (const auto& name : series)
+        if (std::none_of(appended_series().begin(), appended_series().end(),
+                         [&](const AppendedSeries& s) { return s.file == name; }))
+          throw std::logic_error(fmt::format(
+              "restart: '{}' is not among the appended series that a restart cuts back", name));
+      for (const auto& s : appended_series()) {
+        if (std::find(series.begin(), series.end(), s.file) == series.end()) continue;
+        const fs::path file = dir / s.file;
+        if (!fs::exists(file))
+          throw std::runtime_error(fmt::format(
+              "restart: '{}' is missing: the run wrote it and the restart would continue it "
+              "without its earlier rows; restore it, or restart into another --out",
+              file.string()));
+        if (const auto cut = truncate_series(file, s.by_step, step, time, dt); cut > 0)
+          fmt::print("restart: {} rows of {} after the checkpoint removed\n", cut, s.file);
+      }
+      for (const auto& p : superseded_restart_outputs(dir, step)) {
+        fs::remove(p);
+        fmt::print("restart: {} (an earlier restart from this or a later checkpoint) removed\n",
+                   p.string());
+      }
+      const fs::path record = dir / fmt::format("resolved_scene_restart_{:09d}.toml", step);
+      std::ofstream out(record, std::ios::binary | std::ios::trunc);
+      out << scene.resolved();
+      out.close();
+      if (!out)
+        throw std::runtime_error(fmt::format("restart: cannot write '{}'", record.string()));
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  }
+  h5::settle(comm.get(), error);
+}
+
+}  // namespace valsalva::io

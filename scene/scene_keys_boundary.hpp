@@ -1,0 +1,19 @@
+// The boundary conditions of a scene ([boundary.<patch>] tables, declared in
+// scene/scene_keys_boundary.cpp) as flow::BoundarySpec, checked against the mesh's patches.
+#pragma once
+
+#include <vector>
+
+#include "flow/boundary_conditions.hpp"
+#include "mesh/mesh.hpp"
+#include "scene/scene.hpp"
+
+namespace valsalva::io {
+
+// Throws SceneError (FILE:LINE): a [boundary.X] table for a patch the mesh lacks (listing the
+// mesh's patches) or for a periodic patch, a non-periodic patch without a table (naming it and
+// the accepted types), a waveform CSV that cannot be read (naming the CSV file and line).
+std::vector<flow::BoundarySpec> read_boundary_conditions(const Scene& scene,
+                                                         const flow::Mesh& mesh);
+
+}  // namespace valsalva::io
