@@ -18,9 +18,10 @@
 namespace valsalva::flow {
 
 struct InitialCondition {
-  std::string type = "rest";  // rest | taylor_green | taylor_green_3d | cyclic_sines | womersley
-  double velocity = 1.0;      // U0, m/s (taylor_green, taylor_green_3d, cyclic_sines)
-  double length = 1.0;        // L, m: the period is 2 pi L (the vortices, cyclic_sines)
+  std::string type =
+      "rest";             // rest | taylor_green(_3d) | cyclic_sines | womersley | plane_poiseuille
+  double velocity = 1.0;  // U0, m/s (taylor_green, taylor_green_3d, cyclic_sines)
+  double length = 1.0;    // L, m: the period is 2 pi L (the vortices, cyclic_sines)
   // womersley: Womersley's pipe flow (flow/womersley.hpp) at t = 0 for the flow rate
   // Q(t) = flow_rate + amplitude sin(2 pi t / period + phase) in a pipe of `radius` about the
   // axis through `point` along `axis`; the velocity u(r, 0) axis (r capped at the radius), and
@@ -29,7 +30,19 @@ struct InitialCondition {
   double radius = 1, flow_rate = 0, amplitude = 0, period = 1, phase = 0;
   Eigen::Vector3d point = Eigen::Vector3d::Zero(), axis = Eigen::Vector3d::UnitZ();
   bool pressure_gradient = false;
+  // plane_poiseuille: the developed channel profile u = 6 U s (1 - s) along `axis` (the flow
+  // direction, normalised), s = (x - point) . across / width (0 outside [0, 1]), U = `velocity`
+  // the mean over the width: a channel between walls at s = 0 and 1 (`point` on the first).
+  Eigen::Vector3d across = Eigen::Vector3d::UnitY();
+  double width = 1;
 };
+
+// The plane-Poiseuille start of InitialCondition (type plane_poiseuille) at x.
+inline Eigen::Vector3d plane_poiseuille(const Eigen::Vector3d& x, const InitialCondition& ic) {
+  const double s = (x - ic.point).dot(ic.across.normalized()) / ic.width;
+  if (!(s > 0 && s < 1)) return Eigen::Vector3d::Zero();
+  return 6 * ic.velocity * s * (1 - s) * ic.axis.normalized();
+}
 
 // A divergence-free 3D field (each component varies only across itself), pressure 0: a start
 // with motion in every direction for forced periodic boxes (the stability case):

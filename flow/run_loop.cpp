@@ -74,9 +74,12 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
       state_.velocity[j] = exact.velocity(r, 0.0) * axis;
       if (ic.pressure_gradient) state_.pressure[j] = -options_.projection.density * g0 * s;
     }
+  } else if (ic.type == "plane_poiseuille") {
+    for (int j = 0; j < n; ++j) state_.velocity[j] = plane_poiseuille(local.position[j], ic);
   } else if (ic.type != "rest") {
     throw RunError("flow run: unknown initial.type '" + ic.type +
-                   "' (accepted: rest, taylor_green, taylor_green_3d, cyclic_sines, womersley)");
+                   "' (accepted: rest, taylor_green, taylor_green_3d, cyclic_sines, womersley, "
+                   "plane_poiseuille)");
   }
   impose_initial_boundary_values();
   install_forcing();

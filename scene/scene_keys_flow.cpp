@@ -234,7 +234,8 @@ void declare_flow_keys(Schema& s) {
       .doc("hypre's own diagnostic output (0 = none)");
 
   s.section("initial", "The state at t = 0.");
-  s.choice("initial.type", {"rest", "taylor_green", "taylor_green_3d", "cyclic_sines", "womersley"})
+  s.choice("initial.type", {"rest", "taylor_green", "taylor_green_3d", "cyclic_sines", "womersley",
+                            "plane_poiseuille"})
       .def("rest")
       .unit_of("-")
       .doc(
@@ -243,7 +244,8 @@ void declare_flow_keys(Schema& s) {
           "solution after t = 0: it goes turbulent at Re = U0 L / nu = 1600), or the "
           "divergence-free field u = U0 (sin(z/L), sin(x/L), sin(y/L)) ([initial.cyclic_sines]), "
           "a start with motion in every direction for forced periodic boxes, or Womersley's "
-          "pipe flow at t = 0 ([initial.womersley])");
+          "pipe flow at t = 0 ([initial.womersley]), or the developed flow of a plane channel "
+          "([initial.plane_poiseuille], e.g. the Turek-Hron channel started at its steady inflow)");
   s.section("initial.taylor_green",
             "taylor_green: u = U0 sin(x/L) cos(y/L) F, v = -U0 cos(x/L) sin(y/L) F, w = 0, p = "
             "rho U0^2/4 (cos 2x/L + cos 2y/L) F^2, F = exp(-2 nu t / L^2), Re = U0 L / nu; exact "
@@ -306,6 +308,29 @@ void declare_flow_keys(Schema& s) {
       .doc(
           "zero: p = 0 (a periodic pipe driven by a body force); gradient: the exact solution's "
           "p = -rho G(0) (x - point) . axis (a pipe between an inlet and a pressure outlet)");
+
+  s.section("initial.plane_poiseuille",
+            "The developed plane-channel profile u = 6 U s (1 - s) along `direction`, s = (x - "
+            "point) . across / width, 0 outside the channel (0 < s < 1); p = 0. Boundary values "
+            "are imposed on it at t = 0.");
+  s.when("initial.plane_poiseuille", "initial.type", {"plane_poiseuille"});
+  s.real("initial.plane_poiseuille.mean_velocity")
+      .required()
+      .unit_of("m/s")
+      .doc("Mean velocity U over the width (the peak is 1.5 U)");
+  s.real("initial.plane_poiseuille.width").required().above(0).unit_of("m").doc("Channel width");
+  s.real3("initial.plane_poiseuille.point")
+      .def(std::array<double, 3>{0.0, 0.0, 0.0})
+      .unit_of("m")
+      .doc("A point on the wall at s = 0");
+  s.real3("initial.plane_poiseuille.direction")
+      .def(std::array<double, 3>{1.0, 0.0, 0.0})
+      .unit_of("-")
+      .doc("Flow direction (normalised)");
+  s.real3("initial.plane_poiseuille.across")
+      .def(std::array<double, 3>{0.0, 1.0, 0.0})
+      .unit_of("-")
+      .doc("Direction across the channel, from the wall at s = 0 (normalised)");
 
   s.section("output", "Fields written to HDF5 + XDMF (fields.xmf in the run directory).");
   s.real("output.interval")
@@ -420,6 +445,23 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
     if (!(ic.axis.norm() > 0) || !ic.axis.allFinite())
       throw scene.error(k + "axis", "the axis must be a non-zero finite vector");
     ic.pressure_gradient = scene.get<std::string>(k + "pressure") == "gradient";
+  } else if (o.initial.type == "plane_poiseuille") {
+    const std::string k = "initial.plane_poiseuille.";
+    auto& ic = o.initial;
+    auto vec = [&](const std::string& key) {
+      const auto a = scene.get<std::array<double, 3>>(k + key);
+      const Eigen::Vector3d v(a[0], a[1], a[2]);
+      if (key != "point" && (!(v.norm() > 0) || !v.allFinite()))
+        throw scene.error(k + key, "the direction must be a non-zero finite vector");
+      return v;
+    };
+    ic.velocity = scene.get<double>(k + "mean_velocity");
+    ic.width = scene.get<double>(k + "width");
+    ic.point = vec("point");
+    ic.axis = vec("direction");
+    ic.across = vec("across");
+    if (std::abs(ic.axis.normalized().dot(ic.across.normalized())) > 1e-9)
+      throw scene.error(k + "across", "across must be perpendicular to the flow direction");
   }
   o.forcing = read_forcing(scene);
 

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <regex>
 
+#include "scene/scene_keys_bar_shape.hpp"
 #include "io/solid_gmsh_reader.hpp"
 #include "scene/scene_keys.hpp"
 #include "structure/contact.hpp"
@@ -155,6 +156,7 @@ void declare_structure_keys(Schema& s) {
           "The markers start from the placed mesh stretched by these factors along x, y, z about "
           "the mean of its nodes (a body released from a deformed shape; factors whose product is "
           "1 keep its volume); the mesh as placed stays the stress-free reference");
+  declare_bar_shape_keys(s, k);
   s.choice(k + ".material",
            {"neo_hookean", "mooney_rivlin", "hgo", "st_venant_kirchhoff", "linear_elastic"})
       .def("neo_hookean")
@@ -323,7 +325,8 @@ structure::SolidMesh build_solid_mesh(const Scene& scene, const std::string& k) 
   return structure::cylindrical_shell_patch(order, p);
 }
 
-void place(const Scene& scene, const std::string& k, structure::SolidMesh& mesh) {
+// Rotates and translates the mesh; returns the rotation.
+Eigen::Matrix3d place(const Scene& scene, const std::string& k, structure::SolidMesh& mesh) {
   const auto axis = vec(scene, k + ".rotation_axis");
   const double angle = scene.get<double>(k + ".rotation_angle") * std::numbers::pi / 180;
   if (angle != 0 && !(axis.norm() > 0))
@@ -332,6 +335,7 @@ void place(const Scene& scene, const std::string& k, structure::SolidMesh& mesh)
                                 ? Eigen::Matrix3d::Identity()
                                 : Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
   mesh.X = (r * mesh.X).colwise() + vec(scene, k + ".translate");
+  return r;
 }
 
 // The markers' start positions: the placed mesh stretched about the mean of its nodes.
@@ -465,8 +469,14 @@ ImmersedSetup read_immersed_setup(const Scene& scene, const flow::Mesh& mesh) {
     StructureSetup st;
     st.name = name;
     st.mesh = build_solid_mesh(scene, k);
-    place(scene, k, st.mesh);
+    Eigen::Matrix3Xd bend;
+    if (scene.get<std::string>(k + ".mesh") == "bar") {
+      conform_bar_root(scene, k, st.mesh);
+      bend = bar_bend(scene, k, st.mesh);
+    }
+    const Eigen::Matrix3d rotation = place(scene, k, st.mesh);
     st.initial = initial_positions(scene, k, st.mesh);
+    if (bend.size() > 0) st.initial = st.mesh.X + rotation * bend;
     const auto where = scene.location(k + ".parameters").str() + ": key '" + k + ".parameters'";
     try {
       st.material = structure::make_material(

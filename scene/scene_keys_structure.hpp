@@ -26,7 +26,7 @@ struct StructureSetup {
   std::unique_ptr<structure::Material> material;
   ibm::BodySpec body;
   bool stresses = true;  // von Mises, principal and Cauchy stresses in the output
-  // Where the markers start (initial_stretch); empty: at the reference positions.
+  // Where the markers start (initial_stretch, initial_bend); empty: at the reference positions.
   Eigen::Matrix3Xd initial;
 };
 

@@ -559,3 +559,40 @@ TEST_CASE("set_initial_velocity replaces the initial condition; time.steady_tole
   CHECK(decaying.change_rate == doctest::Approx(0.02).epsilon(0.1));
   CHECK_THROWS_AS(vortex.set_initial_velocity(flow::VectorField(3)), flow::RunError);
 }
+
+TEST_CASE("initial.plane_poiseuille: the developed channel profile at t = 0") {
+  const auto scene_with = [](const std::string& direction) {
+    return io::parse_scene(R"(
+[mesh]
+source = "box"
+[initial]
+type = "plane_poiseuille"
+[initial.plane_poiseuille]
+mean_velocity = 0.5
+width = 6.283185307179586
+point = [0.0, 0.0, 0.0]
+direction = )" + direction + "\n",
+                           "p.toml");
+  };
+  auto o = io::flow_run_options(scene_with("[2.0, 0.0, 0.0]"), "dir");
+  CHECK(o.initial.type == "plane_poiseuille");
+  CHECK(o.initial.velocity == 0.5);
+  CHECK(o.initial.across == Eigen::Vector3d::UnitY());  // the default
+  o.output.print = false;
+  o.projection.poisson.tolerance = 1e-10;
+  Setup s(6, MPI_COMM_WORLD);
+  flow::RunLoop loop(s.mesh, s.metrics, s.local, o);
+  double peak = 0;
+  for (int j = 0; j < s.local.num_local(); ++j) {
+    const double y = s.local.position[j].y() / (2 * std::numbers::pi);
+    const double u = y > 0 && y < 1 ? 3.0 * y * (1 - y) : 0.0;
+    CHECK((loop.state().velocity[j] - Eigen::Vector3d(u, 0, 0)).norm() < 1e-14);
+    peak = std::max(peak, loop.state().velocity[j].x());
+  }
+  CHECK(peak == doctest::Approx(0.75));  // 1.5 U at mid-width (a node row there)
+  // A direction along `across` is refused, naming the key.
+  CHECK_THROWS_WITH_AS(
+      io::flow_run_options(scene_with("[0.0, 1.0, 0.0]"), "dir"),
+      doctest::Contains("key 'initial.plane_poiseuille.across': across must be perpendicular"),
+      io::SceneError);
+}

@@ -3,6 +3,8 @@
 // and the errors that name the key.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "scene/mesh_source.hpp"
@@ -222,4 +224,49 @@ elements = )" +
   CHECK(error_of(sphere("[2, 3, 1]"))
             .find("key 'structure.cell.elements': a sphere shell has 2 x 3 elements") !=
         std::string::npos);
+}
+
+TEST_CASE("a bar glued to a cylinder (root_arc_radius) and bent at the start (initial_bend)") {
+  // The bar 0.01 long, 0.002 high behind a cylinder of radius 0.003 about (0, 0.01).
+  const auto glued = [](const std::string& radius) {
+    return R"(
+[structure.bar]
+mesh = "bar"
+origin = [0.0, 0.009, 0.002]
+size = [0.01, 0.002, 0.006]
+elements = [4, 1, 2]
+parameters = { G = 1.0e4, K = 1.0e5 }
+root_arc_centre = [0.0, 0.01, 0.0]
+root_arc_radius = )" +
+           radius + "\n";
+  };
+  const auto scene = io::parse_scene(fluid + glued("0.003") + "initial_bend = 0.001\n", "t.toml");
+  const auto setup = io::read_immersed_setup(scene, io::build_mesh(scene));
+  const auto& m = setup.structures.at(0).mesh;
+  // The clamped end on the arc, the tip where it was, the nodes between evenly spread.
+  for (int a : m.node_set("u0"))
+    CHECK(std::hypot(m.X(0, a), m.X(1, a) - 0.01) == doctest::Approx(0.003).epsilon(1e-12));
+  for (int a : m.node_set("u1")) CHECK(m.X(0, a) == doctest::Approx(0.01).epsilon(1e-12));
+  double root = 1e300;
+  for (int a : m.node_set("u0")) root = std::min(root, m.X(0, a));
+  CHECK(root == doctest::Approx(std::sqrt(0.003 * 0.003 - 0.001 * 0.001)).epsilon(1e-12));
+  // The start: y bent by 0.001 s^2 from x_root to the tip, x and z as in the mesh.
+  const auto& x = setup.structures.at(0).initial;
+  REQUIRE(x.cols() == m.num_nodes());
+  for (int a = 0; a < m.num_nodes(); ++a) {
+    const double s = std::max(0.0, (m.X(0, a) - root) / (0.01 - root));
+    CHECK(x(1, a) - m.X(1, a) == doctest::Approx(0.001 * s * s).epsilon(1e-12));
+    CHECK(x(0, a) == m.X(0, a));
+    CHECK(x(2, a) == m.X(2, a));
+  }
+  for (int a : m.node_set("u1"))
+    CHECK(x(1, a) - m.X(1, a) == doctest::Approx(0.001).epsilon(1e-12));
+  CHECK(error_of(glued("0.003")) == "no error");
+  CHECK(
+      error_of(glued("0.0009")).find("key 'structure.bar.root_arc_radius': the bar reaches y = ") !=
+      std::string::npos);
+  CHECK(error_of(glued("0.02")).find("key 'structure.bar.root_arc_radius': the arc reaches x = ") !=
+        std::string::npos);
+  CHECK(error_of(glued("0.003") + "initial_bend = 0.001\ninitial_stretch = [1.1, 1.0, 1.0]\n")
+            .find("initial_bend and initial_stretch exclude each other") != std::string::npos);
 }
