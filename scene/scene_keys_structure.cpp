@@ -9,9 +9,9 @@
 #include <numbers>
 #include <regex>
 
-#include "scene/scene_keys_bar_shape.hpp"
 #include "io/solid_gmsh_reader.hpp"
 #include "scene/scene_keys.hpp"
+#include "scene/scene_keys_bar_shape.hpp"
 #include "structure/contact.hpp"
 #include "structure/mesh_generators.hpp"
 #include "structure/sphere_shell.hpp"
