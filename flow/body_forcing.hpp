@@ -11,8 +11,8 @@
 #include <string>
 
 #include "flow/inflow_waveform.hpp"
-#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
+#include "mesh/local_mesh.hpp"
 
 namespace valsalva::flow {
 

@@ -47,9 +47,9 @@
 
 #include "flow/elastance.hpp"
 #include "flow/inflow_waveform.hpp"
-#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
 #include "flow/womersley.hpp"
+#include "mesh/local_mesh.hpp"
 
 namespace valsalva::flow {
 

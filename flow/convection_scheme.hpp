@@ -26,8 +26,8 @@
 #include <vector>
 
 #include "flow/face_flux.hpp"
-#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
+#include "mesh/local_mesh.hpp"
 
 namespace valsalva::flow {
 

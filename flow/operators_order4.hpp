@@ -34,8 +34,8 @@
 #include <array>
 #include <vector>
 
-#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
+#include "mesh/local_mesh.hpp"
 
 namespace valsalva::flow {
 

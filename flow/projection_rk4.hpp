@@ -50,13 +50,13 @@
 
 #include "flow/boundary_conditions.hpp"
 #include "flow/convection_scheme.hpp"
-#include "mesh/local_mesh.hpp"
 #include "flow/lumped_outlets.hpp"
 #include "flow/operators.hpp"
 #include "flow/operators_order4.hpp"
 #include "flow/pressure_poisson.hpp"
 #include "flow/time_scheme.hpp"
 #include "flow/viscosity_model.hpp"
+#include "mesh/local_mesh.hpp"
 
 namespace valsalva::flow {
 

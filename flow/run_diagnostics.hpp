@@ -18,8 +18,8 @@
 
 #include <string>
 
-#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
+#include "mesh/local_mesh.hpp"
 
 namespace valsalva::flow {
 

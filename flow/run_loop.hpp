@@ -21,13 +21,13 @@
 
 #include "flow/body_forcing.hpp"
 #include "flow/boundary_conditions.hpp"
-#include "mesh/dual_metrics.hpp"
 #include "flow/flow_rate_control.hpp"
 #include "flow/initial_condition.hpp"
-#include "mesh/local_mesh.hpp"
-#include "mesh/mesh.hpp"
 #include "flow/projection_rk4.hpp"
 #include "flow/run_diagnostics.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace valsalva::flow {
 

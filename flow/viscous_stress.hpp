@@ -19,8 +19,8 @@
 
 #include <vector>
 
-#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
+#include "mesh/local_mesh.hpp"
 
 namespace valsalva::flow {
 

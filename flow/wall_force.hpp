@@ -19,8 +19,8 @@
 #include <Eigen/Dense>
 #include <string>
 
-#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
+#include "mesh/local_mesh.hpp"
 
 namespace valsalva::flow {
 

@@ -27,8 +27,8 @@
 #include <span>
 #include <vector>
 
-#include "mesh/local_mesh.hpp"
 #include "ibm/kernels.hpp"
+#include "mesh/local_mesh.hpp"
 #include "structure/bucket_grid.hpp"
 
 namespace valsalva::ibm {

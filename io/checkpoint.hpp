@@ -28,10 +28,10 @@
 #include <string>
 #include <vector>
 
-#include "mesh/local_mesh.hpp"
-#include "mesh/mesh.hpp"
 #include "flow/projection_rk4.hpp"
 #include "io/hdf5_file.hpp"
+#include "mesh/local_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace valsalva::io {
 

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "io/xdmf_writer.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
-#include "io/xdmf_writer.hpp"
 
 namespace valsalva::io {
 

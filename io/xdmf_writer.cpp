@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "core/comm.hpp"
-#include "mesh/mesh.hpp"
 #include "io/hdf5_file.hpp"
+#include "mesh/mesh.hpp"
 
 namespace valsalva::io {
 

@@ -10,8 +10,8 @@
 
 #include <mpi.h>
 
-#include "mesh/mesh.hpp"
 #include "mesh/extruded_disk.hpp"
+#include "mesh/mesh.hpp"
 
 namespace valsalva::io {
 

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <unordered_map>
 
-#include "mesh/gmsh_reader.hpp"
 #include "io/solid_gmsh_reader.hpp"
+#include "mesh/gmsh_reader.hpp"
 #include "structure/mesh_generators.hpp"
 #include "valve/leaflet_groups.hpp"
 

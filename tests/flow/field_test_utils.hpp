@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "mesh/dual_metrics.hpp"
-#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
 #include "mesh/box_generator.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
 #include "mesh/pipe_generator.hpp"
 
 namespace valsalva::test {

@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "core/compensated_sum.hpp"
-#include "mesh/dual_metrics.hpp"
 #include "mesh/box_generator.hpp"
+#include "mesh/dual_metrics.hpp"
 
 using namespace valsalva;
 

@@ -5,10 +5,10 @@
 
 #include <cmath>
 
+#include "mesh/box_generator.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
 #include "mesh/metric_identities.hpp"
-#include "mesh/box_generator.hpp"
 
 using namespace valsalva;
 

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <memory>
 
-#include "mesh/dual_metrics.hpp"
-#include "mesh/local_mesh.hpp"
 #include "flow/projection_rk4.hpp"
 #include "ibm/immersed_structure.hpp"
 #include "mesh/box_generator.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
 #include "structure/material.hpp"
 #include "structure/mesh_generators.hpp"
 

@@ -13,10 +13,10 @@
 #include <random>
 
 #include "core/compensated_sum.hpp"
-#include "mesh/dual_metrics.hpp"
-#include "mesh/local_mesh.hpp"
 #include "ibm/dirac_transfer.hpp"
 #include "mesh/box_generator.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
 
 using namespace valsalva;
 using Vec = Eigen::Vector3d;

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "mesh/mesh_check.hpp"
 #include "mesh/extruded_pipe_generator.hpp"
+#include "mesh/mesh_check.hpp"
 
 using namespace valsalva;
 

@@ -12,8 +12,8 @@
 #include <numeric>
 #include <string>
 
-#include "mesh/mesh_check.hpp"
 #include "mesh/gmsh_reader.hpp"
+#include "mesh/mesh_check.hpp"
 
 using namespace valsalva;
 namespace fs = std::filesystem;

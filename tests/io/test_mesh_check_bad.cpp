@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "mesh/mesh_check.hpp"
 #include "mesh/gmsh_reader.hpp"
+#include "mesh/mesh_check.hpp"
 
 using namespace valsalva;
 

@@ -6,8 +6,8 @@
 #include <filesystem>
 
 #include "mesh/dual_metrics.hpp"
-#include "mesh/mesh_check.hpp"
 #include "mesh/gmsh_reader.hpp"
+#include "mesh/mesh_check.hpp"
 #include "mesh/mesh_info.hpp"
 
 using namespace valsalva;

@@ -10,8 +10,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "mesh/gmsh_reader.hpp"
 #include "io/solid_gmsh_reader.hpp"
+#include "mesh/gmsh_reader.hpp"
 #include "structure/loads.hpp"
 #include "structure/solid_forces.hpp"
 #include "tests/structure/solid_volume.hpp"

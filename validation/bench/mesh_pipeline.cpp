@@ -12,8 +12,8 @@
 #include <string>
 
 #include "mesh/dual_metrics.hpp"
-#include "mesh/local_mesh.hpp"
 #include "mesh/gmsh_reader.hpp"
+#include "mesh/local_mesh.hpp"
 #include "validation/bench/bench_cli.hpp"
 
 namespace {

@@ -10,12 +10,12 @@
 #include <stdexcept>
 
 #include "flow/boundary_conditions.hpp"
-#include "mesh/dual_metrics.hpp"
-#include "mesh/local_mesh.hpp"
 #include "flow/poisson_weights.hpp"
 #include "flow/projection_rk4.hpp"
-#include "mesh/periodic_pipe_generator.hpp"
 #include "les/subgrid_viscosity.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
+#include "mesh/periodic_pipe_generator.hpp"
 #include "validation/bench/womersley_run.hpp"
 
 namespace valsalva::validation {

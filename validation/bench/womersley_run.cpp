@@ -9,15 +9,15 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "mesh/dual_metrics.hpp"
-#include "mesh/local_mesh.hpp"
 #include "flow/poisson_weights.hpp"
 #include "flow/projection_rk4.hpp"
 #include "flow/run_diagnostics.hpp"
 #include "flow/womersley.hpp"
-#include "mesh/extruded_pipe_generator.hpp"
-#include "mesh/pipe_generator.hpp"
 #include "les/subgrid_viscosity.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/extruded_pipe_generator.hpp"
+#include "mesh/local_mesh.hpp"
+#include "mesh/pipe_generator.hpp"
 
 namespace valsalva::validation {
 

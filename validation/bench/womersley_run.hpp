@@ -21,9 +21,9 @@
 #include <vector>
 
 #include "flow/boundary_conditions.hpp"
-#include "mesh/local_mesh.hpp"
 #include "flow/womersley.hpp"
 #include "mesh/extruded_pipe_generator.hpp"
+#include "mesh/local_mesh.hpp"
 #include "mesh/pipe_generator.hpp"
 #include "validation/gather_to_root.hpp"
 

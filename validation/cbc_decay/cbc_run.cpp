@@ -8,14 +8,14 @@
 #include <ctime>
 #include <stdexcept>
 
-#include "mesh/local_mesh.hpp"
-#include "flow/run_diagnostics.hpp"
 #include "core/thread_cpu_time.hpp"
+#include "flow/run_diagnostics.hpp"
 #include "les/cbc_data.hpp"
 #include "les/derivative_skewness.hpp"
 #include "les/energy_spectrum.hpp"
 #include "les/random_field.hpp"
 #include "les/spectrum_rescale.hpp"
+#include "mesh/local_mesh.hpp"
 #include "validation/scene_run.hpp"
 
 namespace valsalva::validation {

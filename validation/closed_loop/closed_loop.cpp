@@ -12,8 +12,8 @@
 #include <complex>
 #include <numbers>
 
-#include "flow/womersley.hpp"
 #include "core/numeric_table.hpp"
+#include "flow/womersley.hpp"
 #include "validation/case.hpp"
 #include "validation/scene_run.hpp"
 

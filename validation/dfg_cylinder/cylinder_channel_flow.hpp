@@ -10,9 +10,9 @@
 #include <memory>
 
 #include "flow/boundary_conditions.hpp"
-#include "mesh/dual_metrics.hpp"
 #include "flow/projection_rk4.hpp"
 #include "flow/wall_force.hpp"
+#include "mesh/dual_metrics.hpp"
 
 namespace valsalva::validation {
 

@@ -9,11 +9,11 @@
 #include <utility>
 #include <vector>
 
+#include "flow/projection_rk4.hpp"
+#include "flow/wall_force.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
 #include "mesh/mesh.hpp"
-#include "flow/projection_rk4.hpp"
-#include "flow/wall_force.hpp"
 
 namespace valsalva::validation {
 

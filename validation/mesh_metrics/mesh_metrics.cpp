@@ -9,10 +9,10 @@
 
 #include <cmath>
 
+#include "mesh/box_generator.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
 #include "mesh/metric_identities.hpp"
-#include "mesh/box_generator.hpp"
 #include "mesh/pipe_generator.hpp"
 #include "validation/case.hpp"
 

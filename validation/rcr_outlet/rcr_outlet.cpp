@@ -19,8 +19,8 @@
 #include <fstream>
 #include <numbers>
 
-#include "flow/lumped_outlets.hpp"
 #include "core/numeric_table.hpp"
+#include "flow/lumped_outlets.hpp"
 #include "run/simulation.hpp"
 #include "validation/case.hpp"
 #include "validation/scene_run.hpp"

@@ -8,14 +8,14 @@
 #include <numbers>
 
 #include "flow/convection_scheme.hpp"
-#include "mesh/dual_metrics.hpp"
 #include "flow/initial_condition.hpp"
-#include "mesh/local_mesh.hpp"
 #include "flow/operators.hpp"
 #include "flow/operators_order4.hpp"
 #include "flow/poisson_weights.hpp"
 #include "flow/projection_rk4.hpp"
 #include "mesh/box_generator.hpp"
+#include "mesh/dual_metrics.hpp"
+#include "mesh/local_mesh.hpp"
 #include "validation/scene_run.hpp"
 
 namespace valsalva::validation {

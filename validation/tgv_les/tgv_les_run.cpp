@@ -10,8 +10,8 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "flow/run_diagnostics.hpp"
 #include "core/numeric_table.hpp"
+#include "flow/run_diagnostics.hpp"
 #include "run/simulation.hpp"
 #include "validation/scene_run.hpp"
 

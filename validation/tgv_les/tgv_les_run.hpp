@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
+#include "flow/projection_rk4.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
 #include "mesh/mesh.hpp"
-#include "flow/projection_rk4.hpp"
 
 namespace valsalva::validation {
 

@@ -35,8 +35,8 @@
 #include <numbers>
 #include <set>
 
-#include "flow/womersley.hpp"
 #include "core/numeric_table.hpp"
+#include "flow/womersley.hpp"
 #include "run/simulation.hpp"
 #include "validation/case.hpp"
 #include "validation/gather_to_root.hpp"
