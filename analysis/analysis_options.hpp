@@ -1,5 +1,5 @@
 // What a run measures while it runs, as read from the scene (scene/scene_keys_analysis.cpp) and
-// carried out by io::RunAnalysis (analysis/run_analysis.hpp). Every list may be empty.
+// carried out by analysis::RunAnalysis (analysis/run_analysis.hpp). Every list may be empty.
 #pragma once
 
 #include <Eigen/Dense>
@@ -12,7 +12,7 @@
 #include "analysis/probes.hpp"
 #include "analysis/section_flux.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 struct ProbeOptions {
   std::vector<ProbePoint> points;
@@ -71,4 +71,4 @@ struct AnalysisOptions {
   }
 };
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -7,12 +7,12 @@
 
 #include "mesh/point_locator.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
-LinePlaneSamples::LinePlaneSamples(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
-                                   const flow::LocalMesh& local, SampleOptions options)
+LinePlaneSamples::LinePlaneSamples(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+                                   const mesh::LocalMesh& local, SampleOptions options)
     : options_(std::move(options)), next_(options_.start_time) {
-  const PointLocator locator(mesh);
+  const mesh::PointLocator locator(mesh);
   const auto [ni, nj] = options_.points;
   std::vector<ProbePoint> inside;
   for (int j = 0; j < nj; ++j)
@@ -56,4 +56,4 @@ void LinePlaneSamples::write(const flow::FlowState& state, std::int64_t step,
   }
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

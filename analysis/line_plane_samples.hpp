@@ -1,7 +1,7 @@
 // Instantaneous u, v, w, p on a line or a plane of points, written as one small CSV file per
 // sample: samples/<name>_<step, 9 digits>.csv with columns time, i, j, x, y, z, u, v, w, p (j = 0
 // on a line). Points outside the mesh are left out (a plane across a pipe covers a square); the
-// values come from io::Probes, so they have the same bits at any rank count.
+// values come from analysis::Probes, so they have the same bits at any rank count.
 #pragma once
 
 #include <filesystem>
@@ -11,13 +11,13 @@
 #include "analysis/analysis_options.hpp"
 #include "analysis/probes.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 class LinePlaneSamples {
  public:
   // Collective. Throws std::runtime_error naming the sample when no point is inside the mesh.
-  LinePlaneSamples(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
-                   const flow::LocalMesh& local, SampleOptions options);
+  LinePlaneSamples(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+                   const mesh::LocalMesh& local, SampleOptions options);
 
   const SampleOptions& options() const { return options_; }
   std::size_t points() const { return probes_->points().size(); }
@@ -33,4 +33,4 @@ class LinePlaneSamples {
   double next_ = 0;
 };
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -8,9 +8,9 @@
 
 #include "mesh/point_locator.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
-LineStatistics::Inside LineStatistics::inside_points(const flow::Mesh& mesh, const LineSpec& line,
+LineStatistics::Inside LineStatistics::inside_points(const mesh::Mesh& mesh, const LineSpec& line,
                                                      const std::string& key) {
   const Eigen::Vector3d d = line.end - line.origin;
   if (!(d.norm() > 0))
@@ -18,7 +18,7 @@ LineStatistics::Inside LineStatistics::inside_points(const flow::Mesh& mesh, con
   if (line.points < 2)
     throw std::invalid_argument(
         fmt::format("{}.points: {} point(s) do not make a line (at least 2)", key, line.points));
-  const PointLocator locator(mesh);
+  const mesh::PointLocator locator(mesh);
   Inside in;
   for (int i = 0; i < line.points; ++i) {
     const double t = double(i) / (line.points - 1);
@@ -36,14 +36,14 @@ LineStatistics::Inside LineStatistics::inside_points(const flow::Mesh& mesh, con
   return in;
 }
 
-LineStatistics::LineStatistics(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
-                               const flow::LocalMesh& local, PhaseStatisticsOptions options,
+LineStatistics::LineStatistics(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+                               const mesh::LocalMesh& local, PhaseStatisticsOptions options,
                                LineSpec line, const std::string& key)
     : LineStatistics(mesh, metrics, local, std::move(options), line,
                      inside_points(mesh, line, key)) {}
 
-LineStatistics::LineStatistics(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
-                               const flow::LocalMesh& local, PhaseStatisticsOptions options,
+LineStatistics::LineStatistics(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+                               const mesh::LocalMesh& local, PhaseStatisticsOptions options,
                                LineSpec line, Inside inside)
     : PhaseAccumulator(std::move(options), inside.points.size()),
       line_(line),
@@ -58,20 +58,20 @@ void LineStatistics::add(const flow::FlowState& state) {
   add_sample(bin_of(state.time), cycle_of(state.time), probes_->sample(state));
 }
 
-std::vector<CheckpointArray> LineStatistics::checkpoint_arrays() const {
+std::vector<io::CheckpointArray> LineStatistics::checkpoint_arrays() const {
   const bool root = probes_->comm().root();
   const std::span<const std::int64_t> rows =
       root ? std::span<const std::int64_t>(rows_) : std::span<const std::int64_t>();
   const auto n = static_cast<std::int64_t>(rows_.size());
   auto arrays = moment_arrays(rows, n, root);
-  CheckpointArray positions{options_.name + "_points", n, 3, {rows.begin(), rows.end()}, {}};
+  io::CheckpointArray positions{options_.name + "_points", n, 3, {rows.begin(), rows.end()}, {}};
   for (std::size_t i = 0; i < rows.size(); ++i)
     for (int c = 0; c < 3; ++c) positions.data.push_back(points()[i].position[c]);
   arrays.push_back(std::move(positions));
   return arrays;
 }
 
-void LineStatistics::restore(const CheckpointReader& reader) {
+void LineStatistics::restore(const io::CheckpointReader& reader) {
   const std::string where =
       fmt::format("checkpoint '{}', statistics '{}'", reader.path().string(), options_.name);
   restore_moments(reader, rows_, static_cast<std::int64_t>(rows_.size()), where);
@@ -111,4 +111,4 @@ std::filesystem::path LineStatistics::write(const std::filesystem::path& dir) co
   return path;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

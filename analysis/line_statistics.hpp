@@ -1,6 +1,6 @@
 // Phase- or time-averaged statistics at points along a line segment
 // (analysis/phase_accumulator.hpp), for scenes that need profiles rather than fields: a diameter
-// across a pipe, the axis of a jet. The values at the points come from io::Probes (point location
+// across a pipe, the axis of a jet. The values at the points come from analysis::Probes (point location
 // in the replicated mesh, interpolation with the containing cell's shape functions, the same bits
 // at any rank count), so every rank holds the same accumulators; rank 0 saves them in checkpoints
 // and writes <dir>/<name>.csv with one row per (phase bin, point):
@@ -10,8 +10,8 @@
 // curved wall loses the ends that the polygonal mesh wall does not contain); outside() counts
 // them, and a line with no point inside is an error.
 //
-// How io::RunAnalysis uses it (all collective):
-//   io::LineStatistics line(mesh, metrics, local, phase_options, {origin, end, points}, key);
+// How analysis::RunAnalysis uses it (all collective):
+//   analysis::LineStatistics line(mesh, metrics, local, phase_options, {origin, end, points}, key);
 //   after each step (every_steps): line.add(state);
 //   checkpoint: line.checkpoint_arrays(); restart: line.restore(reader);
 //   output: line.write(run_dir / "statistics");
@@ -26,7 +26,7 @@
 #include "analysis/phase_accumulator.hpp"
 #include "analysis/probes.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 // points >= 2 points from origin to end (both included), evenly spaced.
 struct LineSpec {
@@ -39,8 +39,8 @@ class LineStatistics : public PhaseAccumulator {
   // Collective. `key` names the scene table in errors (e.g. "statistics.axis"). Throws
   // std::invalid_argument for a degenerate line or fewer than 2 points, std::runtime_error when
   // no point is inside the mesh.
-  LineStatistics(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
-                 const flow::LocalMesh& local, PhaseStatisticsOptions options, LineSpec line,
+  LineStatistics(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+                 const mesh::LocalMesh& local, PhaseStatisticsOptions options, LineSpec line,
                  const std::string& key);
 
   const LineSpec& line() const { return line_; }
@@ -54,9 +54,9 @@ class LineStatistics : public PhaseAccumulator {
 
   // <name>_moments, _counts, _meta (analysis/phase_accumulator.hpp) and <name>_points (x, y, z),
   // saved by rank 0: the accumulators are the same on every rank.
-  std::vector<CheckpointArray> checkpoint_arrays() const;
+  std::vector<io::CheckpointArray> checkpoint_arrays() const;
   // Collective. Throws naming the checkpoint when the options or the points differ.
-  void restore(const CheckpointReader& reader);
+  void restore(const io::CheckpointReader& reader);
   // Collective (rank 0 writes): <dir>/<name>.csv. Returns its path.
   std::filesystem::path write(const std::filesystem::path& dir) const;
 
@@ -65,10 +65,10 @@ class LineStatistics : public PhaseAccumulator {
     std::vector<ProbePoint> points;
     std::vector<double> arc;
   };
-  LineStatistics(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
-                 const flow::LocalMesh& local, PhaseStatisticsOptions options, LineSpec line,
+  LineStatistics(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+                 const mesh::LocalMesh& local, PhaseStatisticsOptions options, LineSpec line,
                  Inside inside);
-  static Inside inside_points(const flow::Mesh& mesh, const LineSpec& line, const std::string& key);
+  static Inside inside_points(const mesh::Mesh& mesh, const LineSpec& line, const std::string& key);
 
   LineSpec line_;
   std::vector<double> arc_;
@@ -76,4 +76,4 @@ class LineStatistics : public PhaseAccumulator {
   std::vector<std::int64_t> rows_;  // 0 .. points - 1
 };
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

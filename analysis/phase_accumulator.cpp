@@ -10,7 +10,7 @@
 
 #include "core/allocation_limit.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 namespace {
 
@@ -36,7 +36,7 @@ PhaseAccumulator::PhaseAccumulator(PhaseStatisticsOptions options, std::size_t p
     throw std::invalid_argument(fmt::format("statistics: density = {} kg/m^3", o.density));
   if (!std::regex_match(o.name, std::regex("[A-Za-z0-9_]+")))
     throw std::invalid_argument(fmt::format("statistics: name '{}' is not [A-Za-z0-9_]+", o.name));
-  check_allocation(
+  core::check_allocation(
       fmt::format("statistics.{}.bins = {} on {} points of this rank", o.name, o.bins, points_),
       static_cast<double>(o.bins) * static_cast<double>(points_), per_node * sizeof(double));
   counts_.assign(o.bins, 0);
@@ -140,11 +140,11 @@ double PhaseAccumulator::kinetic_energy(int bin, int i) const {
   return 0.5 * options_.density * (m2[0] + m2[1] + m2[2]) / double(counts_[bin]);
 }
 
-std::vector<CheckpointArray> PhaseAccumulator::moment_arrays(std::span<const std::int64_t> rows,
+std::vector<io::CheckpointArray> PhaseAccumulator::moment_arrays(std::span<const std::int64_t> rows,
                                                              std::int64_t global_rows,
                                                              bool root) const {
   const int cols = options_.bins * per_node;
-  CheckpointArray moments{options_.name + "_moments",
+  io::CheckpointArray moments{options_.name + "_moments",
                           global_rows,
                           cols,
                           std::vector<std::int64_t>(rows.begin(), rows.end()),
@@ -154,8 +154,8 @@ std::vector<CheckpointArray> PhaseAccumulator::moment_arrays(std::span<const std
     for (int b = 0; b < options_.bins; ++b)
       std::copy_n(data_.data() + offset(b, int(i)), per_node,
                   moments.data.data() + i * cols + std::size_t(b) * per_node);
-  CheckpointArray counts{options_.name + "_counts", options_.bins, 0, {}, {}};
-  CheckpointArray meta{options_.name + "_meta", 6, 0, {}, {}};
+  io::CheckpointArray counts{options_.name + "_counts", options_.bins, 0, {}, {}};
+  io::CheckpointArray meta{options_.name + "_meta", 6, 0, {}, {}};
   if (root) {
     for (int b = 0; b < options_.bins; ++b) {
       counts.rows.push_back(b);
@@ -166,12 +166,12 @@ std::vector<CheckpointArray> PhaseAccumulator::moment_arrays(std::span<const std
                  double(first_cycle_), double(last_cycle_),   double(global_rows)};
   }
   // Moved, not copied: an initializer list would copy the moments (gigabytes on a whole mesh).
-  std::vector<CheckpointArray> arrays;
+  std::vector<io::CheckpointArray> arrays;
   for (auto* a : {&moments, &counts, &meta}) arrays.push_back(std::move(*a));
   return arrays;
 }
 
-void PhaseAccumulator::restore_moments(const CheckpointReader& reader,
+void PhaseAccumulator::restore_moments(const io::CheckpointReader& reader,
                                        std::span<const std::int64_t> rows, std::int64_t global_rows,
                                        const std::string& where) {
   const std::vector<std::int64_t> meta_rows = {0, 1, 2, 3, 4, 5};
@@ -196,4 +196,4 @@ void PhaseAccumulator::restore_moments(const CheckpointReader& reader,
                   data_.data() + offset(b, int(i)));
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -9,8 +9,8 @@
 // Results: RMS = sqrt(M2/n) (population, as PIV ensemble statistics), Reynolds stresses
 // <u_i' u_j'> = M2_ij / n in m^2/s^2, fluctuating kinetic energy k = rho/2 (u'^2+v'^2+w'^2) in
 // J/m^3. period = 0 gives the plain time average (one bin).
-// The points are whatever the owner says: mesh nodes (io::PhaseStatistics) or points on a line
-// (io::LineStatistics); both save the accumulators through checkpoint_arrays()/restore() here.
+// The points are whatever the owner says: mesh nodes (analysis::PhaseStatistics) or points on a line
+// (analysis::LineStatistics); both save the accumulators through checkpoint_arrays()/restore() here.
 #pragma once
 
 #include <array>
@@ -21,7 +21,7 @@
 
 #include "io/checkpoint.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 struct PhaseStatisticsOptions {
   double period = 0;           // s; 0 = plain time average (bins must be 1)
@@ -70,11 +70,11 @@ class PhaseAccumulator {
   // Arrays <name>_moments (point i is row rows[i]; a rank may save fewer points than it has,
   // e.g. none when the points are replicated and rank 0 saves them), <name>_counts and
   // <name>_meta (saved by the root rank).
-  std::vector<CheckpointArray> moment_arrays(std::span<const std::int64_t> rows,
+  std::vector<io::CheckpointArray> moment_arrays(std::span<const std::int64_t> rows,
                                              std::int64_t global_rows, bool root) const;
   // Reads them back for point i = row rows[i] (every point of this accumulator). Throws naming
   // `where` when the options or the number of rows differ.
-  void restore_moments(const CheckpointReader& reader, std::span<const std::int64_t> rows,
+  void restore_moments(const io::CheckpointReader& reader, std::span<const std::int64_t> rows,
                        std::int64_t global_rows, const std::string& where);
 
   std::size_t offset(int bin, int i) const {
@@ -89,4 +89,4 @@ class PhaseAccumulator {
   std::vector<double> data_;  // [bin][point][mean u v w p, m2 uu vv ww pp uv uw vw]
 };
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -8,29 +8,24 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "core/comm.hpp"
 #include "io/field_output.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 namespace {
 
 // All ranks' ids, sorted (every rank gets the same list).
-std::vector<std::int64_t> gather_sorted(const flow::Comm& comm,
+std::vector<std::int64_t> gather_sorted(const core::Comm& comm,
                                         const std::vector<std::int64_t>& mine) {
-  int n = static_cast<int>(mine.size());
-  std::vector<int> counts(comm.size()), displs(comm.size(), 0);
-  VALSALVA_MPI(MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm.get()));
-  std::partial_sum(counts.begin(), counts.end() - 1, displs.begin() + 1);
-  std::vector<std::int64_t> all(std::accumulate(counts.begin(), counts.end(), std::size_t(0)));
-  VALSALVA_MPI(MPI_Allgatherv(mine.data(), n, MPI_INT64_T, all.data(), counts.data(), displs.data(),
-                              MPI_INT64_T, comm.get()));
+  auto all = comm.all_gather(mine);
   std::sort(all.begin(), all.end());
   return all;
 }
 
 }  // namespace
 
-PhaseStatistics::PhaseStatistics(const flow::LocalMesh& local, PhaseStatisticsOptions options,
+PhaseStatistics::PhaseStatistics(const mesh::LocalMesh& local, PhaseStatisticsOptions options,
                                  std::vector<int> nodes)
     : PhaseAccumulator(std::move(options), nodes.size()), local_(&local), nodes_(std::move(nodes)) {
   std::vector<std::int64_t> ids;
@@ -64,15 +59,15 @@ void PhaseStatistics::merge(const PhaseStatistics& other) {
   PhaseAccumulator::merge(other);
 }
 
-std::vector<CheckpointArray> PhaseStatistics::checkpoint_arrays() const {
+std::vector<io::CheckpointArray> PhaseStatistics::checkpoint_arrays() const {
   auto arrays = moment_arrays(rows_, global_rows_, local_->comm.root());
-  CheckpointArray nodes{options_.name + "_nodes", global_rows_, 0, rows_, {}};
+  io::CheckpointArray nodes{options_.name + "_nodes", global_rows_, 0, rows_, {}};
   for (int i : nodes_) nodes.data.push_back(double(local_->dual_node[i]));
   arrays.push_back(std::move(nodes));
   return arrays;
 }
 
-void PhaseStatistics::restore(const CheckpointReader& reader) {
+void PhaseStatistics::restore(const io::CheckpointReader& reader) {
   const std::string where =
       fmt::format("checkpoint '{}', statistics '{}'", reader.path().string(), options_.name);
   restore_moments(reader, rows_, global_rows_, where);
@@ -84,13 +79,13 @@ void PhaseStatistics::restore(const CheckpointReader& reader) {
     throw std::runtime_error(fmt::format("{}: the covered nodes differ", where));
 }
 
-std::filesystem::path PhaseStatistics::write(const flow::Mesh& mesh,
-                                             const flow::DualMetrics& metrics,
+std::filesystem::path PhaseStatistics::write(const mesh::Mesh& mesh,
+                                             const mesh::DualMetrics& metrics,
                                              const std::filesystem::path& dir) const {
   const auto& local = *local_;
   if (local.comm.root()) std::filesystem::create_directories(dir);
   local.comm.barrier();
-  FieldOutput out(mesh, metrics, local, dir, options_.name);
+  io::FieldOutput out(mesh, metrics, local, dir, options_.name);
   const std::size_t n = local.num_local();
   const Eigen::Vector3d nan3 = Eigen::Vector3d::Constant(NAN);
   std::vector<Eigen::Vector3d> mean_u(n, nan3), rms_u(n, nan3);
@@ -125,13 +120,13 @@ std::filesystem::path PhaseStatistics::write(const flow::Mesh& mesh,
   return out.xmf_file();
 }
 
-std::vector<int> all_owned_nodes(const flow::LocalMesh& local) {
+std::vector<int> all_owned_nodes(const mesh::LocalMesh& local) {
   std::vector<int> v(local.num_owned);
   std::iota(v.begin(), v.end(), 0);
   return v;
 }
 
-std::vector<int> nodes_near_plane(const flow::LocalMesh& local, const Eigen::Vector3d& point,
+std::vector<int> nodes_near_plane(const mesh::LocalMesh& local, const Eigen::Vector3d& point,
                                   const Eigen::Vector3d& normal, double half_thickness) {
   const Eigen::Vector3d n = normal.normalized();
   std::vector<int> v;
@@ -140,7 +135,7 @@ std::vector<int> nodes_near_plane(const flow::LocalMesh& local, const Eigen::Vec
   return v;
 }
 
-std::vector<int> nodes_in_box(const flow::LocalMesh& local, const Eigen::Vector3d& lo,
+std::vector<int> nodes_in_box(const mesh::LocalMesh& local, const Eigen::Vector3d& lo,
                               const Eigen::Vector3d& hi) {
   std::vector<int> v;
   for (int i = 0; i < local.num_owned; ++i)
@@ -150,4 +145,4 @@ std::vector<int> nodes_in_box(const flow::LocalMesh& local, const Eigen::Vector3
   return v;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

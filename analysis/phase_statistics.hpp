@@ -5,8 +5,8 @@
 // a checkpoint is written. Restrict `nodes` to planes or regions to save it (docs/analysis.md).
 //
 // How the run loop uses it:
-//   io::PhaseStatistics stats(local, {period, bins, t_start, rho, "stats"},
-//                             io::nodes_near_plane(local, p0, n, 0.5e-3));   // or all_owned_nodes
+//   analysis::PhaseStatistics stats(local, {period, bins, t_start, rho, "stats"},
+//                             analysis::nodes_near_plane(local, p0, n, 0.5e-3));   // or all_owned_nodes
 //   after each step (t >= t_start):  stats.add(state.time, state.velocity, state.pressure);
 //   checkpoint: writer.write(state, step, dt, stats.checkpoint_arrays());
 //   restart:    stats.restore(reader);
@@ -24,12 +24,12 @@
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 class PhaseStatistics : public PhaseAccumulator {
  public:
   // `nodes`: owned local node indices covered (any order, unique). Throws naming bad options.
-  PhaseStatistics(const flow::LocalMesh& local, PhaseStatisticsOptions options,
+  PhaseStatistics(const mesh::LocalMesh& local, PhaseStatisticsOptions options,
                   std::vector<int> nodes);
 
   const std::vector<int>& nodes() const { return nodes_; }  // point i of the accumulator
@@ -41,19 +41,19 @@ class PhaseStatistics : public PhaseAccumulator {
 
   // Accumulators as checkpoint arrays <name>_moments, _counts, _meta, _nodes; rows of the
   // moments are the covered nodes numbered by increasing dual id over all ranks.
-  std::vector<CheckpointArray> checkpoint_arrays() const;
+  std::vector<io::CheckpointArray> checkpoint_arrays() const;
   // Collective. Throws naming the checkpoint when options or covered nodes differ.
-  void restore(const CheckpointReader& reader);
+  void restore(const io::CheckpointReader& reader);
 
   // Collective. Writes <dir>/<name>.xmf + HDF5 (one XDMF step per bin at its phase time; fields
   // mean_velocity, mean_pressure, rms_velocity, rms_pressure, reynolds_uv, reynolds_uw,
   // reynolds_vw, k; NaN outside the covered nodes) and <dir>/<name>_phases.csv (bin,
   // phase_time, samples, cycles). Returns the .xmf path.
-  std::filesystem::path write(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
+  std::filesystem::path write(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
                               const std::filesystem::path& dir) const;
 
  private:
-  const flow::LocalMesh* local_;
+  const mesh::LocalMesh* local_;
   std::vector<int> nodes_;
   std::vector<std::int64_t> rows_;  // global subset row of every covered node
   std::int64_t global_rows_ = 0;
@@ -61,12 +61,12 @@ class PhaseStatistics : public PhaseAccumulator {
 };
 
 // Covered-node selections (owned local indices).
-std::vector<int> all_owned_nodes(const flow::LocalMesh& local);
+std::vector<int> all_owned_nodes(const mesh::LocalMesh& local);
 // Nodes within `half_thickness` of the plane through `point` with normal `normal`.
-std::vector<int> nodes_near_plane(const flow::LocalMesh& local, const Eigen::Vector3d& point,
+std::vector<int> nodes_near_plane(const mesh::LocalMesh& local, const Eigen::Vector3d& point,
                                   const Eigen::Vector3d& normal, double half_thickness);
 // Nodes inside the axis-aligned box [lo, hi].
-std::vector<int> nodes_in_box(const flow::LocalMesh& local, const Eigen::Vector3d& lo,
+std::vector<int> nodes_in_box(const mesh::LocalMesh& local, const Eigen::Vector3d& lo,
                               const Eigen::Vector3d& hi);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <stdexcept>
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 namespace {
 
@@ -32,22 +32,23 @@ PivPlane::PivPlane(const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eig
         ex.x(), ex.y(), ex.z(), ey.x(), ey.y(), ey.z()));
 }
 
-PivSampler::PivSampler(const PointLocator& locator, const PivPlane& plane, const PivFrame& frame)
+PivSampler::PivSampler(const mesh::PointLocator& locator, const PivPlane& plane,
+                       const PivFrame& frame)
     : locator_(&locator), plane_(plane) {
   for (std::size_t i = 0; i < frame.size(); ++i) {
     auto loc = locator.locate(plane.point(frame.x[i], frame.y[i]));
     if (!loc) ++outside_;
-    locations_.push_back(loc ? *loc : PointLocation{});
+    locations_.push_back(loc ? *loc : mesh::PointLocation{});
   }
 }
 
 namespace {
 
-Eigen::Vector4d sample_location(const PointLocation& loc, const PivPlane& plane,
+Eigen::Vector4d sample_location(const mesh::PointLocation& loc, const PivPlane& plane,
                                 const SimulationStatistics& s) {
   if (loc.cell < 0) return Eigen::Vector4d::Constant(NAN);
   auto field = [&](const std::vector<double>& a, int comps, int c) {
-    return loc.interpolate([&](flow::GlobalIndex n) { return a[std::size_t(n) * comps + c]; });
+    return loc.interpolate([&](mesh::GlobalIndex n) { return a[std::size_t(n) * comps + c]; });
   };
   const Eigen::Vector3d u(field(s.mean_velocity, 3, 0), field(s.mean_velocity, 3, 1),
                           field(s.mean_velocity, 3, 2));
@@ -56,7 +57,7 @@ Eigen::Vector4d sample_location(const PointLocation& loc, const PivPlane& plane,
   // Reynolds stresses are interpolated (they are linear in the samples; RMS values are not).
   Eigen::Matrix3d r;
   auto sq = [&](int c) {
-    return loc.interpolate([&](flow::GlobalIndex n) {
+    return loc.interpolate([&](mesh::GlobalIndex n) {
       const double v = s.rms_velocity[std::size_t(n) * 3 + c];
       return v * v;
     });
@@ -78,7 +79,7 @@ Eigen::Vector4d PivSampler::sample(std::size_t i, const SimulationStatistics& s)
 
 Eigen::Vector4d PivSampler::sample_at(double x, double y, const SimulationStatistics& s) const {
   auto loc = locator_->locate(plane_.point(x, y));
-  return sample_location(loc ? *loc : PointLocation{}, plane_, s);
+  return sample_location(loc ? *loc : mesh::PointLocation{}, plane_, s);
 }
 
 FieldMetrics field_metrics(const std::vector<double>& sim, const std::vector<double>& piv,
@@ -192,4 +193,4 @@ void write_metrics_csv(const std::filesystem::path& path, const std::vector<Fram
   }
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -1,17 +1,17 @@
 // PIV against simulation statistics: the PIV plane is placed in the simulation frame by an
 // origin and two orthonormal in-plane axes; each PIV point is located in the mesh
-// (io::PointLocator) and the nodal statistics are interpolated there. The simulated in-plane
+// (mesh::PointLocator) and the nodal statistics are interpolated there. The simulated in-plane
 // velocity is (U.ex, U.ey); the simulated in-plane RMS along an axis e is sqrt(e^T R e), R the
 // Reynolds stress tensor. Per frame (phase) and quantity: RMSE = sqrt(mean((sim - piv)^2)),
 // normalised error = RMSE / sqrt(mean(piv^2)), Pearson correlation; masked PIV points and
 // points outside the mesh are skipped (and counted).
 //
 // How a run or `valsalva compare-piv` uses it:
-//   auto piv = io::read_piv(file);  io::PivPlane plane(origin, ex, ey);
-//   io::PivSampler sampler(locator, plane, piv.frames[f]);         // once per PIV grid
-//   auto fields = io::SimulationStatistics{...nodal arrays of the matching phase...};
-//   auto cmp = io::compare_frame(piv.frames[f], sampler, fields);  // metrics + sampled values
-//   io::write_comparison_csv(out / "phase_03.csv", piv.frames[f], cmp);   // for plot_piv.py
+//   auto piv = analysis::read_piv(file);  analysis::PivPlane plane(origin, ex, ey);
+//   analysis::PivSampler sampler(locator, plane, piv.frames[f]);         // once per PIV grid
+//   auto fields = analysis::SimulationStatistics{...nodal arrays of the matching phase...};
+//   auto cmp = analysis::compare_frame(piv.frames[f], sampler, fields);  // metrics + sampled values
+//   analysis::write_comparison_csv(out / "phase_03.csv", piv.frames[f], cmp);   // for plot_piv.py
 #pragma once
 
 #include <Eigen/Dense>
@@ -23,7 +23,7 @@
 #include "analysis/piv_data.hpp"
 #include "mesh/point_locator.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 struct PivPlane {
   // Throws std::invalid_argument when the axes are not orthogonal unit vectors (1e-9).
@@ -44,7 +44,7 @@ struct SimulationStatistics {
 // Locations of a frame's points (built once per PIV grid).
 class PivSampler {
  public:
-  PivSampler(const PointLocator& locator, const PivPlane& plane, const PivFrame& frame);
+  PivSampler(const mesh::PointLocator& locator, const PivPlane& plane, const PivFrame& frame);
   std::size_t outside() const { return outside_; }  // points not in the mesh
   const PivPlane& plane() const { return plane_; }
   // In-plane mean (u, v) and RMS (u_rms, v_rms; NaN without RMS) at point i; NaN if outside.
@@ -53,9 +53,9 @@ class PivSampler {
   Eigen::Vector4d sample_at(double x, double y, const SimulationStatistics& s) const;
 
  private:
-  const PointLocator* locator_;
+  const mesh::PointLocator* locator_;
   PivPlane plane_;
-  std::vector<PointLocation> locations_;  // cell -1 when outside
+  std::vector<mesh::PointLocation> locations_;  // cell -1 when outside
   std::size_t outside_ = 0;
 };
 
@@ -96,4 +96,4 @@ void write_profile_csv(const std::filesystem::path& path, const Profile& p);
 // One row per frame and quantity: frame,phase,quantity,rmse,normalised_error,correlation,points.
 void write_metrics_csv(const std::filesystem::path& path, const std::vector<FrameComparison>& c);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

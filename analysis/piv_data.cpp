@@ -11,7 +11,7 @@
 
 #include "core/numeric_table.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 namespace {
 
@@ -32,9 +32,9 @@ int known_column(const std::string& name) {
 }
 
 // The velocity columns, where an empty field or nan is a masked vector (core/numeric_table.hpp).
-TableFormat piv_format(bool blank_separated) {
-  TableFormat f;
-  f.header = TableHeader::required;
+core::TableFormat piv_format(bool blank_separated) {
+  core::TableFormat f;
+  f.header = core::TableHeader::required;
   f.blank_separated = blank_separated;
   f.quoted = true;
   f.maskable = [](const std::string& name) {
@@ -46,9 +46,9 @@ TableFormat piv_format(bool blank_separated) {
 
 // Maps header names (checked by TableLines::header) to columns; errors for unknown or missing
 // names at their position on the line.
-std::array<int, num_columns> map_columns(const TableLines& lines,
-                                         const std::vector<TableField>& fields, bool allow_frame,
-                                         std::string& frame_key) {
+std::array<int, num_columns> map_columns(const core::TableLines& lines,
+                                         const std::vector<core::TableField>& fields,
+                                         bool allow_frame, std::string& frame_key) {
   std::array<int, num_columns> at;
   at.fill(-1);
   for (std::size_t i = 0; i < fields.size(); ++i) {
@@ -76,7 +76,7 @@ std::array<int, num_columns> map_columns(const TableLines& lines,
 
 // Appends one point; `values` indexed by the file's columns (x, y, valid, phase finite: the
 // table reader refuses anything else outside the maskable velocity columns).
-void add_point(const TableLines& lines, const std::vector<TableField>& fields,
+void add_point(const core::TableLines& lines, const std::vector<core::TableField>& fields,
                const std::array<int, num_columns>& at, const std::vector<double>& values,
                PivFrame& f) {
   auto get = [&](int c) { return at[c] >= 0 ? values[at[c]] : NAN; };
@@ -107,10 +107,11 @@ std::size_t PivFrame::valid_count() const {
 }
 
 PivData read_piv_csv(const std::filesystem::path& path) {
-  TableLines lines(path, piv_format(false));
+  core::TableLines lines(path, piv_format(false));
   PivData data;
   data.source = lines.source();
-  if (!lines.next()) throw TableError(fmt::format("'{}': empty (no header line)", data.source));
+  if (!lines.next())
+    throw core::TableError(fmt::format("'{}': empty (no header line)", data.source));
   const auto header = lines.fields();
   const auto names = lines.header(header);
   const auto at = map_columns(lines, header, true, data.frame_key);
@@ -136,7 +137,7 @@ PivData read_piv_csv(const std::filesystem::path& path) {
 }
 
 PivData read_piv_tecplot(const std::filesystem::path& path) {
-  TableLines lines(path, piv_format(true));
+  core::TableLines lines(path, piv_format(true));
   PivData data;
   data.source = lines.source();
   std::vector<std::string> names;
@@ -144,7 +145,7 @@ PivData read_piv_tecplot(const std::filesystem::path& path) {
   std::size_t expected = 0;
   int zone_line = 0;
   auto zone_error = [&](const std::string& what) {
-    return TableError(fmt::format("{}:{}:1: {}", data.source, zone_line, what));
+    return core::TableError(fmt::format("{}:{}:1: {}", data.source, zone_line, what));
   };
   // A zone must hold the I*J points it declares, whether a ZONE or the end of the file follows.
   auto close_zone = [&] {
@@ -192,7 +193,8 @@ PivData read_piv_tecplot(const std::filesystem::path& path) {
         if (eq == std::string::npos)
           throw lines.error(item.column, fmt::format("'{}' is not KEY=VALUE", item.text));
         const std::string key = lower(item.text.substr(0, eq));
-        const TableField value{item.text.substr(eq + 1), item.column + static_cast<int>(eq) + 1};
+        const core::TableField value{item.text.substr(eq + 1),
+                                     item.column + static_cast<int>(eq) + 1};
         if (key == "t") {
           f.label = value.text;
         } else if (key == "i" || key == "j" || key == "k") {
@@ -235,7 +237,7 @@ PivData read_piv_tecplot(const std::filesystem::path& path) {
     add_point(lines, fields, at, lines.values(fields, names, names.size()), f);
   }
   if (names.empty())
-    throw TableError(
+    throw core::TableError(
         fmt::format("'{}': {}", data.source, any_line ? "no VARIABLES line" : "empty"));
   if (data.frames.empty()) throw lines.error(1, "no ZONE");
   if (in_zone_header)
@@ -274,4 +276,4 @@ PivData read_piv(const std::filesystem::path& path, const PivUnits& units) {
   return data;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

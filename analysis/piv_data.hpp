@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 struct PivFrame {
   std::string label;   // zone title, or "phase=<value>" / "time=<value>"
@@ -56,4 +56,4 @@ void scale_piv(PivData& data, const PivUnits& units);
 // By extension: .csv -> CSV; .dat, .tec, .plt, .txt -> Tecplot ASCII; then scale_piv.
 PivData read_piv(const std::filesystem::path& path, const PivUnits& units = {});
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -4,9 +4,9 @@
 
 #include <stdexcept>
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
-RegionMean::RegionMean(const flow::LocalMesh& local, const Eigen::Vector3d& centre, double radius,
+RegionMean::RegionMean(const mesh::LocalMesh& local, const Eigen::Vector3d& centre, double radius,
                        const std::string& what)
     : local_(&local) {
   double volume = 0;
@@ -30,4 +30,4 @@ double RegionMean::operator()(const std::vector<double>& field) const {
   return local_->comm.sum(s) / volume_;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -10,7 +10,7 @@
 
 #include "mesh/local_mesh.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 inline constexpr double pascal_per_mmhg = 133.322387415;
 
@@ -18,14 +18,14 @@ class RegionMean {
  public:
   // Owned nodes within `radius` of `centre`. Collective; throws std::runtime_error naming the
   // region when it holds no node on any rank (`what` names it in the message).
-  RegionMean(const flow::LocalMesh& local, const Eigen::Vector3d& centre, double radius,
+  RegionMean(const mesh::LocalMesh& local, const Eigen::Vector3d& centre, double radius,
              const std::string& what);
   // Collective: dual-volume weighted mean of `field` over the region.
   double operator()(const std::vector<double>& field) const;
   std::int64_t nodes() const { return global_nodes_; }
 
  private:
-  const flow::LocalMesh* local_;
+  const mesh::LocalMesh* local_;
   std::vector<int> nodes_;
   double volume_ = 0;  // over all ranks
   std::int64_t global_nodes_ = 0;
@@ -36,4 +36,4 @@ struct PressureDrop {
   double mmhg() const { return (upstream - downstream) / pascal_per_mmhg; }
 };
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -11,12 +11,12 @@
 #include "core/comm.hpp"
 #include "core/numeric_table.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
-Probes::Probes(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
-               const flow::LocalMesh& local, std::vector<ProbePoint> points)
+Probes::Probes(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+               const mesh::LocalMesh& local, std::vector<ProbePoint> points)
     : local_(&local), points_(std::move(points)) {
-  const PointLocator locator(mesh);
+  const mesh::PointLocator locator(mesh);
   for (const auto& p : points_) {
     auto loc = locator.locate(p.position);
     if (!loc)
@@ -30,7 +30,7 @@ Probes::Probes(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
   std::sort(needed_.begin(), needed_.end());
   needed_.erase(std::unique(needed_.begin(), needed_.end()), needed_.end());
 
-  std::unordered_map<flow::GlobalIndex, int> local_of_dual;
+  std::unordered_map<mesh::GlobalIndex, int> local_of_dual;
   for (int i = 0; i < local.num_owned; ++i) local_of_dual[local.dual_node[i]] = i;
   needed_local_.assign(needed_.size(), -1);
   for (std::size_t j = 0; j < needed_.size(); ++j)
@@ -68,9 +68,8 @@ std::vector<double> Probes::sample(const flow::FlowState& state) const {
 
 std::vector<double> Probes::gather_and_interpolate(int components) const {
   // Exactly one rank owns each needed node; x + 0 is exact, so the sum is the owner's value.
-  gathered_.resize(buffer_.size());
-  VALSALVA_MPI(MPI_Allreduce(buffer_.data(), gathered_.data(), static_cast<int>(buffer_.size()),
-                             MPI_DOUBLE, MPI_SUM, local_->comm.get()));
+  gathered_ = buffer_;
+  local_->comm.sum_in_place(gathered_);
   std::vector<double> out(points_.size() * components, 0.0);
   for (std::size_t p = 0; p < points_.size(); ++p)
     for (int c = 0; c < components; ++c) {
@@ -122,7 +121,7 @@ std::vector<double> ProbeSeries::column(const std::string& name) const {
 ProbeSeries read_probe_csv(const std::filesystem::path& path) {
   if (!std::ifstream(path))
     throw std::runtime_error(fmt::format("probe file '{}': cannot open", path.string()));
-  auto table = read_numeric_table(path, TableHeader::required);
+  auto table = core::read_numeric_table(path, core::TableHeader::required);
   if (table.columns.empty())
     throw std::runtime_error(fmt::format("probe file '{}': empty", path.string()));
   ProbeSeries s;
@@ -132,4 +131,4 @@ ProbeSeries read_probe_csv(const std::filesystem::path& path) {
   return s;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -1,12 +1,12 @@
-// Probes: user points located once in the replicated mesh (io::PointLocator), nodal values
+// Probes: user points located once in the replicated mesh (mesh::PointLocator), nodal values
 // interpolated with the containing cell's shape functions. The values a probe needs are gathered
 // from their owners by a sum in which every entry has exactly one non-zero contribution, and the
 // interpolation then runs in a fixed order on every rank, so the samples have the same bits at
 // any rank count.
 //
 // How the run loop uses it (all collective):
-//   io::Probes probes(mesh, metrics, local, scene_probe_points);   // throws if a point is outside
-//   io::ProbeCsv csv(run_dir / "probes.csv", probes);              // header written by rank 0
+//   analysis::Probes probes(mesh, metrics, local, scene_probe_points);   // throws if a point is outside
+//   analysis::ProbeCsv csv(run_dir / "probes.csv", probes);              // header written by rank 0
 //   every N steps: csv.append(state.time, probes.sample(state));    // u, v, w, p per probe
 #pragma once
 
@@ -16,12 +16,13 @@
 #include <string>
 #include <vector>
 
+#include "core/comm.hpp"
 #include "flow/projection_rk4.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
 #include "mesh/point_locator.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 struct ProbePoint {
   std::string name;
@@ -31,12 +32,12 @@ struct ProbePoint {
 class Probes {
  public:
   // Throws std::runtime_error "probe '<name>' at (x, y, z) m is outside the mesh '<source>'".
-  Probes(const flow::Mesh& mesh, const flow::DualMetrics& metrics, const flow::LocalMesh& local,
+  Probes(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics, const mesh::LocalMesh& local,
          std::vector<ProbePoint> points);
 
   const std::vector<ProbePoint>& points() const { return points_; }
-  const std::vector<PointLocation>& locations() const { return locations_; }
-  const flow::Comm& comm() const { return local_->comm; }
+  const std::vector<mesh::PointLocation>& locations() const { return locations_; }
+  const core::Comm& comm() const { return local_->comm; }
 
   // Collective. `values` holds `components` doubles per local node (node-major, owned first);
   // returns points().size() x components values (row-major), identical on every rank.
@@ -48,10 +49,10 @@ class Probes {
   // Sums buffer_ (the needed nodes' values, zero where not owned) over ranks and interpolates.
   std::vector<double> gather_and_interpolate(int components) const;
 
-  const flow::LocalMesh* local_;
+  const mesh::LocalMesh* local_;
   std::vector<ProbePoint> points_;
-  std::vector<PointLocation> locations_;
-  std::vector<flow::GlobalIndex> needed_;  // dual nodes the probes need (sorted, unique)
+  std::vector<mesh::PointLocation> locations_;
+  std::vector<mesh::GlobalIndex> needed_;  // dual nodes the probes need (sorted, unique)
   std::vector<int> needed_local_;          // local owned index, or -1
   std::vector<std::vector<int>> slot_;     // per probe and cell node: index into needed_
   mutable std::vector<double> buffer_, gathered_;
@@ -80,4 +81,4 @@ struct ProbeSeries {
 };
 ProbeSeries read_probe_csv(const std::filesystem::path& path);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -5,11 +5,11 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 namespace {
 
-std::vector<int> covered_nodes(const flow::LocalMesh& local, const StatisticsOptions& s) {
+std::vector<int> covered_nodes(const mesh::LocalMesh& local, const StatisticsOptions& s) {
   switch (s.region) {
     case StatisticsOptions::Region::plane:
       return nodes_near_plane(local, s.a, s.b.normalized(), s.half_thickness);
@@ -28,8 +28,8 @@ bool every(std::int64_t step, int n) {
 
 }  // namespace
 
-RunAnalysis::RunAnalysis(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
-                         const flow::LocalMesh& local, AnalysisOptions options, double density,
+RunAnalysis::RunAnalysis(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+                         const mesh::LocalMesh& local, AnalysisOptions options, double density,
                          double dynamic_viscosity, std::filesystem::path run_dir, bool append)
     : mesh_(&mesh),
       metrics_(&metrics),
@@ -132,8 +132,8 @@ void RunAnalysis::sample(const flow::FlowState& state, std::int64_t step,
   if (drop_csv_.is_open()) drop_csv_ << row << '\n' << std::flush;
 }
 
-std::vector<CheckpointArray> RunAnalysis::checkpoint_arrays() const {
-  std::vector<CheckpointArray> out;
+std::vector<io::CheckpointArray> RunAnalysis::checkpoint_arrays() const {
+  std::vector<io::CheckpointArray> out;
   for (const auto& s : statistics_)
     for (auto& a : s.checkpoint_arrays()) out.push_back(std::move(a));
   for (const auto& s : lines_)
@@ -143,7 +143,7 @@ std::vector<CheckpointArray> RunAnalysis::checkpoint_arrays() const {
   return out;
 }
 
-void RunAnalysis::restore(const CheckpointReader& reader) {
+void RunAnalysis::restore(const io::CheckpointReader& reader) {
   for (auto& s : statistics_) s.restore(reader);
   for (auto& s : lines_) s.restore(reader);
   if (wall_shear_) wall_shear_->restore(reader);
@@ -196,4 +196,4 @@ void RunAnalysis::finish() const {
     fmt::print("section fluxes at {}\n", last_sections_);
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

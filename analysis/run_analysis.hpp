@@ -2,7 +2,7 @@
 // (analysis/analysis_options.hpp): probes, line and plane samples, phase statistics on regions and
 // lines, wall shear stress with TAWSS/OSI, pressure differences, section fluxes. Only what the
 // scene asks for is built; the run loop calls sample() after every step
-// (flow::RunHooks::after_step), the checkpoint hook saves checkpoint_arrays(), a restart calls
+// (run::RunHooks::after_step), the checkpoint hook saves checkpoint_arrays(), a restart calls
 // restore(), and finish() writes the end-of-run files. Files in the run directory:
 //   probes.csv          time, <probe>_u, _v, _w, _p           (every probes.every_steps)
 //   samples/            <sample>_<step>.csv                   (analysis/line_plane_samples.hpp)
@@ -30,26 +30,26 @@
 #include "analysis/wall_shear_recorder.hpp"
 #include "io/checkpoint.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 class RunAnalysis {
  public:
   // Collective. `append`: continue the CSV series of an earlier run in the same directory.
   // Throws std::runtime_error naming the probe, sample or region that cannot be placed.
-  RunAnalysis(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
-              const flow::LocalMesh& local, AnalysisOptions options, double density,
+  RunAnalysis(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+              const mesh::LocalMesh& local, AnalysisOptions options, double density,
               double dynamic_viscosity, std::filesystem::path run_dir, bool append);
 
   bool empty() const { return options_.empty(); }
   // Collective: the samples due after step `step` (step 0 = the initial state). `face_flux`:
-  // the projected face flux of the state on every local edge (flow::RunLoop::face_flux()),
+  // the projected face flux of the state on every local edge (run::RunLoop::face_flux()),
   // which the section fluxes sum; empty (the initial state, before any projection): the
   // sections use the central face flux of the nodal velocity instead.
   void sample(const flow::FlowState& state, std::int64_t step,
               const flow::EdgeField& face_flux = {});
-  std::vector<CheckpointArray> checkpoint_arrays() const;
+  std::vector<io::CheckpointArray> checkpoint_arrays() const;
   // Collective: statistics and wall shear accumulators from a checkpoint of the same scene.
-  void restore(const CheckpointReader& reader);
+  void restore(const io::CheckpointReader& reader);
   // Collective: statistics and wall shear files; rank 0 prints the last section fluxes.
   void finish() const;
 
@@ -74,9 +74,9 @@ class RunAnalysis {
     PressureDropOptions options;
     RegionMean upstream, downstream;
   };
-  const flow::Mesh* mesh_;
-  const flow::DualMetrics* metrics_;
-  const flow::LocalMesh* local_;
+  const mesh::Mesh* mesh_;
+  const mesh::DualMetrics* metrics_;
+  const mesh::LocalMesh* local_;
   AnalysisOptions options_;
   std::filesystem::path dir_;
   std::unique_ptr<Probes> probes_;
@@ -95,4 +95,4 @@ class RunAnalysis {
   std::string last_sections_;  // the newest section fluxes, for the end-of-run message
 };
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -6,9 +6,9 @@
 
 #include "core/compensated_sum.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
-SectionFlux::SectionFlux(const flow::LocalMesh& local, SectionOptions options)
+SectionFlux::SectionFlux(const mesh::LocalMesh& local, SectionOptions options)
     : local_(&local), options_(std::move(options)) {
   const auto& o = options_;
   const std::string key = "section." + o.name;
@@ -75,9 +75,9 @@ double SectionFlux::flux(const flow::EdgeField& face_flux) const {
     throw std::invalid_argument(fmt::format("section.{}: {} face fluxes for {} local edges",
                                             options_.name, face_flux.size(), local_->edges.size()));
   // Compensated: the cut's fluxes have both signs near walls and in recirculation.
-  flow::CompensatedSum q;
+  core::CompensatedSum q;
   for (std::size_t i = 0; i < edges_.size(); ++i) q.add(signs_[i] * face_flux[edges_[i]]);
   return local_->comm.sum(q.value());
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -25,7 +25,7 @@
 #include "flow/face_flux.hpp"
 #include "mesh/local_mesh.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 struct SectionOptions {
   enum class Bound { none, disc, box };
@@ -40,7 +40,7 @@ class SectionFlux {
  public:
   // Collective. Throws std::invalid_argument for a zero normal or radius, std::runtime_error
   // naming section.<name> when the plane cuts no mesh edge within the bound.
-  SectionFlux(const flow::LocalMesh& local, SectionOptions options);
+  SectionFlux(const mesh::LocalMesh& local, SectionOptions options);
 
   const SectionOptions& options() const { return options_; }
   std::int64_t edges() const { return global_edges_; }  // cut edges over all ranks
@@ -50,7 +50,7 @@ class SectionFlux {
   double flux(const flow::EdgeField& face_flux) const;
 
  private:
-  const flow::LocalMesh* local_;
+  const mesh::LocalMesh* local_;
   SectionOptions options_;
   std::vector<int> edges_;     // local edges this rank counts
   std::vector<double> signs_;  // +1: the local orientation j -> k goes along the normal
@@ -58,4 +58,4 @@ class SectionFlux {
   double area_ = 0;
 };
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -1,9 +1,9 @@
 // Resolved turbulent energy for sgs_energy_fraction; see sgs_energy_field.hpp.
 #include "analysis/sgs_energy_field.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
-void resolved_turbulent_energy(const flow::LocalMesh& local, const flow::VectorField& velocity,
+void resolved_turbulent_energy(const mesh::LocalMesh& local, const flow::VectorField& velocity,
                                const std::vector<PhaseStatistics>& statistics, double time,
                                std::vector<double>& k) {
   k.assign(static_cast<std::size_t>(local.num_local()), 0.0);
@@ -24,4 +24,4 @@ void resolved_turbulent_energy(const flow::LocalMesh& local, const flow::VectorF
     if (!covered[i]) k[i] = 0.5 * velocity[i].squaredNorm();
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -14,11 +14,11 @@
 #include "flow/operators.hpp"
 #include "mesh/local_mesh.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 // k[i] for the owned nodes (ghost entries 0), m^2/s^2; k is resized to the local node count.
-void resolved_turbulent_energy(const flow::LocalMesh& local, const flow::VectorField& velocity,
+void resolved_turbulent_energy(const mesh::LocalMesh& local, const flow::VectorField& velocity,
                                const std::vector<PhaseStatistics>& statistics, double time,
                                std::vector<double>& k);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

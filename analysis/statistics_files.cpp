@@ -8,13 +8,13 @@
 #include "io/hdf5_file.hpp"
 #include "io/xdmf_writer.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
-flow::Mesh read_statistics_mesh(const std::filesystem::path& file) {
-  const h5::File h5(file, h5::Mode::read);
+mesh::Mesh read_statistics_mesh(const std::filesystem::path& file) {
+  const io::h5::File h5(file, io::h5::Mode::read);
   const auto xyz = h5.read_all<double>("coordinates");
   const auto topo = h5.read_all<std::int64_t>("topology");
-  flow::Mesh mesh;
+  mesh::Mesh mesh;
   mesh.source = file.string();
   if (xyz.size() % 3 != 0)
     throw std::runtime_error(fmt::format("'{}': 'coordinates' holds {} values, not 3 per node",
@@ -24,23 +24,23 @@ flow::Mesh read_statistics_mesh(const std::filesystem::path& file) {
   const auto num_nodes = static_cast<std::int64_t>(mesh.nodes.size());
   for (std::size_t i = 0; i < topo.size();) {
     // XDMF Mixed-topology codes 6..9 (xdmf_writer.hpp) are tetra, pyramid, prism, hexa.
-    constexpr flow::CellType types[] = {flow::CellType::tetra, flow::CellType::pyramid,
-                                        flow::CellType::prism, flow::CellType::hexa};
+    constexpr mesh::CellType types[] = {mesh::CellType::tetra, mesh::CellType::pyramid,
+                                        mesh::CellType::prism, mesh::CellType::hexa};
     if (topo[i] < 6 || topo[i] > 9)
       throw std::runtime_error(
           fmt::format("'{}': topology entry {} has XDMF cell code {}", file.string(), i, topo[i]));
-    const flow::CellType type = types[topo[i] - 6];
-    const int n = flow::node_count(type);
+    const mesh::CellType type = types[topo[i] - 6];
+    const int n = mesh::node_count(type);
     if (i + 1 + n > topo.size())
       throw std::runtime_error(
           fmt::format("'{}': topology ends inside the cell at entry {}", file.string(), i));
-    std::vector<flow::GlobalIndex> nodes(topo.begin() + i + 1, topo.begin() + i + 1 + n);
+    std::vector<mesh::GlobalIndex> nodes(topo.begin() + i + 1, topo.begin() + i + 1 + n);
     for (auto node : nodes)
       if (node < 0 || node >= num_nodes)
         throw std::runtime_error(
             fmt::format("'{}': topology entry {} refers to node {}, but the file has {} nodes",
                         file.string(), i, node, num_nodes));
-    if (type == flow::CellType::prism) std::swap(nodes[1], nodes[2]), std::swap(nodes[4], nodes[5]);
+    if (type == mesh::CellType::prism) std::swap(nodes[1], nodes[2]), std::swap(nodes[4], nodes[5]);
     mesh.add_cell(type, nodes);
     i += 1 + n;
   }
@@ -48,14 +48,14 @@ flow::Mesh read_statistics_mesh(const std::filesystem::path& file) {
 }
 
 std::vector<double> read_phase_times(const std::filesystem::path& file) {
-  return read_numeric_table(file, TableHeader::required).column("phase_time");
+  return core::read_numeric_table(file, core::TableHeader::required).column("phase_time");
 }
 
-SimulationStatistics read_statistics_bin(const std::filesystem::path& file, const flow::Mesh& mesh,
+SimulationStatistics read_statistics_bin(const std::filesystem::path& file, const mesh::Mesh& mesh,
                                          const std::filesystem::path& mesh_file) {
   const auto nodes = static_cast<std::size_t>(mesh.num_nodes());
   auto field = [&](const char* name, std::size_t per_node) {
-    auto v = read_nodal_field(file, name);
+    auto v = io::read_nodal_field(file, name);
     if (v.size() != per_node * nodes)
       throw std::runtime_error(fmt::format(
           "compare-piv: '{}' dataset '{}' has {} values ({} per node: {} nodes), but the "
@@ -72,4 +72,4 @@ SimulationStatistics read_statistics_bin(const std::filesystem::path& file, cons
   return s;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

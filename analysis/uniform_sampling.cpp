@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 Sampling check_sampling(std::span<const double> t, const std::string& what, double tolerance) {
   if (t.size() < 2)
@@ -45,4 +45,4 @@ std::vector<double> resample_uniform(std::span<const double> t, std::span<const 
   return out;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 struct Sampling {
   double dt_mean = 0, dt_min = 0, dt_max = 0;  // s
@@ -28,4 +28,4 @@ Sampling check_sampling(std::span<const double> time, const std::string& what,
 std::vector<double> resample_uniform(std::span<const double> time, std::span<const double> value,
                                      std::size_t n);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 #include <string>
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 struct ValveMonitorOptions {
   std::string structure;  // the [structure.<name>] with node sets leaflet1..3; empty = none
@@ -20,4 +20,4 @@ struct ValveMonitorOptions {
   int orifice_rings = 128;  // radial cells of the orifice area's polar grid
 };
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

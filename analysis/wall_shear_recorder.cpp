@@ -8,7 +8,7 @@
 
 #include "flow/wall_force.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 namespace {
 
@@ -16,7 +16,7 @@ constexpr int wss_cols = 4;  // sum tau_x dt, sum tau_y dt, sum tau_z dt, sum |t
 
 }  // namespace
 
-WallShearRecorder::WallShearRecorder(const flow::LocalMesh& local, WallShearOptions options,
+WallShearRecorder::WallShearRecorder(const mesh::LocalMesh& local, WallShearOptions options,
                                      double density, double dynamic_viscosity,
                                      const std::filesystem::path& run_dir, bool append)
     : local_(&local),
@@ -102,10 +102,10 @@ void WallShearRecorder::sample(const flow::FlowState& state) {
   }
 }
 
-std::vector<CheckpointArray> WallShearRecorder::checkpoint_arrays() const {
+std::vector<io::CheckpointArray> WallShearRecorder::checkpoint_arrays() const {
   const auto patches = static_cast<std::int64_t>(options_.patches.size());
-  CheckpointArray sums{"wall_shear_sums", local_->global_nodes * patches, wss_cols, {}, {}};
-  CheckpointArray meta{"wall_shear_meta", patches + 2, 0, {}, {}};
+  io::CheckpointArray sums{"wall_shear_sums", local_->global_nodes * patches, wss_cols, {}, {}};
+  io::CheckpointArray meta{"wall_shear_meta", patches + 2, 0, {}, {}};
   for (std::size_t p = 0; p < options_.patches.size(); ++p) {
     const auto s = stats_[p].state();
     const bool empty = s.size() == 1;  // nothing accumulated yet
@@ -126,7 +126,7 @@ std::vector<CheckpointArray> WallShearRecorder::checkpoint_arrays() const {
   return {sums, meta};
 }
 
-void WallShearRecorder::restore(const CheckpointReader& reader) {
+void WallShearRecorder::restore(const io::CheckpointReader& reader) {
   const auto patches = static_cast<std::int64_t>(options_.patches.size());
   if (!reader.has("wall_shear_sums") || !reader.has("wall_shear_meta") ||
       reader.shape("wall_shear_meta").first != patches + 2)
@@ -163,16 +163,7 @@ void WallShearRecorder::write(const std::filesystem::path& run_dir) const {
   }
   // Surface data is small: gather it on rank 0 and sort, so the file is rank-count independent.
   const auto& comm = local_->comm;
-  int count = static_cast<int>(rows.size());
-  std::vector<int> counts(comm.size()), offsets(comm.size(), 0);
-  VALSALVA_MPI(MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm.get()));
-  std::vector<double> all;
-  if (comm.root()) {
-    for (int r = 1; r < comm.size(); ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
-    all.resize(std::size_t(offsets.back() + counts.back()));
-  }
-  VALSALVA_MPI(MPI_Gatherv(rows.data(), count, MPI_DOUBLE, all.data(), counts.data(),
-                           offsets.data(), MPI_DOUBLE, 0, comm.get()));
+  const auto all = comm.gather_to_root(rows);
   if (!comm.root()) return;
   const std::size_t n = all.size() / width;
   std::vector<std::size_t> order(n);
@@ -193,4 +184,4 @@ void WallShearRecorder::write(const std::filesystem::path& run_dir) const {
   }
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -20,12 +20,12 @@
 #include "io/checkpoint.hpp"
 #include "mesh/local_mesh.hpp"
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 class WallShearRecorder {
  public:
   // `dynamic_viscosity` in Pa s. Collective. Throws naming an unknown patch.
-  WallShearRecorder(const flow::LocalMesh& local, WallShearOptions options, double density,
+  WallShearRecorder(const mesh::LocalMesh& local, WallShearOptions options, double density,
                     double dynamic_viscosity, const std::filesystem::path& run_dir, bool append);
 
   // Collective: evaluates tau_w and, from start_time on, adds it with the time elapsed since the
@@ -38,8 +38,8 @@ class WallShearRecorder {
   // A non-Newtonian fluid (flow.viscosity_model): tau_w with the nodal viscosity
   // mu(gamma_dot) of the sampled velocity, in place of the constructor's dynamic_viscosity.
   void set_viscosity_model(const flow::ViscosityModel& model) { model_ = model; }
-  std::vector<CheckpointArray> checkpoint_arrays() const;
-  void restore(const CheckpointReader& reader);            // collective
+  std::vector<io::CheckpointArray> checkpoint_arrays() const;
+  void restore(const io::CheckpointReader& reader);            // collective
   void write(const std::filesystem::path& run_dir) const;  // collective
 
   const std::vector<flow::WallShearStatistics>& statistics() const { return stats_; }
@@ -50,7 +50,7 @@ class WallShearRecorder {
   const std::vector<std::vector<double>>& areas() const { return area_; }
 
  private:
-  const flow::LocalMesh* local_;
+  const mesh::LocalMesh* local_;
   WallShearOptions options_;
   double density_, mu_;
   const flow::VectorField* body_force_ = nullptr;
@@ -67,4 +67,4 @@ class WallShearRecorder {
   std::ofstream history_;
 };
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -8,7 +8,7 @@
 #include <memory>
 #include <stdexcept>
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 PowerSpectrum welch_psd(std::span<const double> signal, double sample_rate,
                         const WelchOptions& options) {
@@ -68,4 +68,4 @@ double spectrum_variance(const PowerSpectrum& spectrum) {
   return v;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

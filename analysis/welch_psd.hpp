@@ -11,7 +11,7 @@
 #include <span>
 #include <vector>
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 
 struct WelchOptions {
   std::size_t segment_length = 256;  // samples per segment (>= 2, <= signal length)
@@ -32,4 +32,4 @@ PowerSpectrum welch_psd(std::span<const double> signal, double sample_rate,
 // Sum of psd * df: the variance the spectrum carries.
 double spectrum_variance(const PowerSpectrum& spectrum);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::analysis

@@ -1,9 +1,9 @@
 // `valsalva compare-piv STATS.xmf PIV_FILE --origin x,y,z --ex x,y,z --ey x,y,z [--line ...]`:
-// reads the statistics written by io::PhaseStatistics::write (mesh, one HDF5 file per phase bin,
+// reads the statistics written by analysis::PhaseStatistics::write (mesh, one HDF5 file per phase bin,
 // <name>_phases.csv), reads the PIV file, matches every PIV frame to the bin whose phase time is
 // nearest to the frame's phase/time value (or to --bin), and writes metrics.csv, frame_<i>.csv,
 // profile_<line>_<i>.csv and frame_<i>.png (analysis/plot_piv.py) into --out. PIV files in other
-// units than m and m/s take --length-scale / --velocity-scale (io::PivUnits). Runs on rank 0.
+// units than m and m/s take --length-scale / --velocity-scale (analysis::PivUnits). Runs on rank 0.
 #include "app/command_compare_piv.hpp"
 
 #include <fmt/format.h>
@@ -33,14 +33,14 @@ struct Options {
   std::vector<std::string> lines;
   int bin = -1;
   int line_points = 60;
-  io::PivUnits units;  // file units -> m, m/s
+  analysis::PivUnits units;  // file units -> m, m/s
   bool plot = true;
 };
 
-io::ProfileLine parse_line(const std::string& text) {
+analysis::ProfileLine parse_line(const std::string& text) {
   // name:x0,y0,x1,y1
   const auto colon = text.find(':');
-  io::ProfileLine l;
+  analysis::ProfileLine l;
   std::vector<double> v;
   if (colon != std::string::npos) {
     l.name = text.substr(0, colon);
@@ -70,17 +70,17 @@ int run(const Options& o) {
   const fs::path dir = stats.parent_path();
   const std::string name = stats.stem().string();
   const fs::path mesh_file = dir / (name + "_mesh.h5");
-  const auto mesh = io::read_statistics_mesh(mesh_file);
-  const auto phase_times = io::read_phase_times(dir / (name + "_phases.csv"));
-  const auto piv = io::read_piv(o.piv, o.units);
-  const io::PivPlane plane(Eigen::Vector3d(o.origin.data()), Eigen::Vector3d(o.ex.data()),
+  const auto mesh = analysis::read_statistics_mesh(mesh_file);
+  const auto phase_times = analysis::read_phase_times(dir / (name + "_phases.csv"));
+  const auto piv = analysis::read_piv(o.piv, o.units);
+  const analysis::PivPlane plane(Eigen::Vector3d(o.origin.data()), Eigen::Vector3d(o.ex.data()),
                            Eigen::Vector3d(o.ey.data()));
-  std::vector<io::ProfileLine> lines;
+  std::vector<analysis::ProfileLine> lines;
   for (const auto& l : o.lines) lines.push_back(parse_line(l)), lines.back().points = o.line_points;
-  const io::PointLocator locator(mesh);
+  const mesh::PointLocator locator(mesh);
   fs::create_directories(o.out);
 
-  std::vector<io::FrameComparison> all;
+  std::vector<analysis::FrameComparison> all;
   for (std::size_t f = 0; f < piv.frames.size(); ++f) {
     const auto& frame = piv.frames[f];
     int bin = o.bin;
@@ -103,11 +103,11 @@ int run(const Options& o) {
       throw std::invalid_argument(fmt::format(
           "compare-piv: --bin {} but the statistics have {} bins", bin, phase_times.size()));
     const auto sim =
-        io::read_statistics_bin(dir / fmt::format("{}_{:06d}.h5", name, bin), mesh, mesh_file);
-    const io::PivSampler sampler(locator, plane, frame);
-    auto c = io::compare_frame(frame, sampler, sim);
+        analysis::read_statistics_bin(dir / fmt::format("{}_{:06d}.h5", name, bin), mesh, mesh_file);
+    const analysis::PivSampler sampler(locator, plane, frame);
+    auto c = analysis::compare_frame(frame, sampler, sim);
     const auto csv = fs::path(o.out) / fmt::format("frame_{:03d}.csv", f);
-    io::write_comparison_csv(csv, frame, c);
+    analysis::write_comparison_csv(csv, frame, c);
     std::string profiles;
     // Nearest PIV point within 0.75 of the typical spacing (grid area / points).
     double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
@@ -116,9 +116,9 @@ int run(const Options& o) {
       ymin = std::min(ymin, frame.y[i]), ymax = std::max(ymax, frame.y[i]);
     const double spacing = std::sqrt((xmax - xmin) * (ymax - ymin) / double(frame.size()));
     for (const auto& l : lines) {
-      const auto p = io::sample_profile(l, sampler, frame, sim, 0.75 * spacing);
+      const auto p = analysis::sample_profile(l, sampler, frame, sim, 0.75 * spacing);
       const auto path = fs::path(o.out) / fmt::format("profile_{}_{:03d}.csv", l.name, f);
-      io::write_profile_csv(path, p);
+      analysis::write_profile_csv(path, p);
       profiles += fmt::format(" --profile '{}'", path.string());
     }
     fmt::print(
@@ -137,7 +137,7 @@ int run(const Options& o) {
     }
     all.push_back(std::move(c));
   }
-  io::write_metrics_csv(fs::path(o.out) / "metrics.csv", all);
+  analysis::write_metrics_csv(fs::path(o.out) / "metrics.csv", all);
   fmt::print("compare-piv: {} frames, results in '{}'\n", all.size(), o.out);
   return 0;
 }

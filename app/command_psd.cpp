@@ -1,6 +1,6 @@
 // `valsalva psd PROBES.csv --column NAME [--column NAME2 ...] [--segments N | --segment-length N]
 // [--overlap 0.5] [--out DIR] [--no-plot]`: Welch power spectral density (analysis/welch_psd.hpp)
-// of columns of a probe CSV (io::ProbeCsv: "time,<probe>_u,..."). Writes DIR/psd_<column>.csv
+// of columns of a probe CSV (analysis::ProbeCsv: "time,<probe>_u,..."). Writes DIR/psd_<column>.csv
 // (frequency [Hz], psd [units^2/Hz]) and DIR/psd.png (analysis/plot_psd.py). Sample times that are
 // not uniform to round-off (a run whose dt changed) are resampled linearly onto a uniform grid
 // with the mean spacing and the same number of samples, and the command says so; times that do
@@ -61,7 +61,7 @@ int run(const Options& o) {
   if (o.columns.empty()) throw std::invalid_argument("psd: give at least one --column");
   if (!(o.overlap >= 0 && o.overlap < 1))
     throw std::invalid_argument(fmt::format("psd: --overlap {} must be in [0, 1)", o.overlap));
-  const io::ProbeSeries series = io::read_probe_csv(o.file);
+  const analysis::ProbeSeries series = analysis::read_probe_csv(o.file);
   if (series.columns.empty() || series.columns.front() != "time")
     throw std::runtime_error(
         fmt::format("psd: probe file '{}' does not start with a 'time' column", o.file));
@@ -74,7 +74,7 @@ int run(const Options& o) {
           fmt::format("psd: probe file '{}' has no column '{}' (columns: {})", o.file, c, known));
     }
   const std::vector<double> time = series.column("time");
-  const io::Sampling sampling = io::check_sampling(time, fmt::format("psd: '{}'", o.file));
+  const analysis::Sampling sampling = analysis::check_sampling(time, fmt::format("psd: '{}'", o.file));
   const std::size_t n = time.size();
   if (!sampling.uniform)
     fmt::print(
@@ -82,7 +82,7 @@ int run(const Options& o) {
         "linearly onto {} uniform samples, dt = {:.6g} s\n",
         o.file, sampling.dt_min, sampling.dt_max, n, sampling.dt_mean);
 
-  io::WelchOptions w;
+  analysis::WelchOptions w;
   w.overlap = o.overlap;
   if (o.segment_length > 0)
     w.segment_length = std::size_t(o.segment_length);
@@ -100,8 +100,8 @@ int run(const Options& o) {
   std::string plot_args;
   for (const auto& c : o.columns) {
     std::vector<double> v = series.column(c);
-    if (!sampling.uniform) v = io::resample_uniform(time, v, n);
-    const io::PowerSpectrum s = io::welch_psd(v, fs_hz, w);
+    if (!sampling.uniform) v = analysis::resample_uniform(time, v, n);
+    const analysis::PowerSpectrum s = analysis::welch_psd(v, fs_hz, w);
     // Finite samples can still overflow in the squares (|x| ~ 1e155 and beyond).
     if (!std::all_of(s.psd.begin(), s.psd.end(), [](double p) { return std::isfinite(p); }))
       throw std::runtime_error(fmt::format(
@@ -125,7 +125,7 @@ int run(const Options& o) {
         "psd: {}: {} samples at {:.6g} Hz, {} segments of {} (overlap {}), df = {:.6g} Hz; peak "
         "{:.6g} Hz; variance {:.6g} (signal {:.6g}) -> '{}'\n",
         c, n, fs_hz, s.segments, w.segment_length, o.overlap, s.df, s.frequency[peak],
-        io::spectrum_variance(s), var, csv.string());
+        analysis::spectrum_variance(s), var, csv.string());
     plot_args += fmt::format(" '{}'", csv.string());
   }
   if (o.plot) {

@@ -17,7 +17,7 @@ int run_scene(const std::filesystem::path& scene_file, const std::vector<std::st
               const run::RunRequest& request) {
   const auto t0 = std::chrono::steady_clock::now();
   run::Phase phase("reading the scene " + scene_file.string());
-  const auto scene = io::load_scene(scene_file, settings);
+  const auto scene = scene::load_scene(scene_file, settings);
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank == 0 && !request.quiet)
@@ -35,7 +35,7 @@ int run_scene(const std::filesystem::path& scene_file, const std::vector<std::st
     fmt::print(
         "stopped by signal {} at step {} (t = {:.9g} s); checkpoint {}\ncontinue with: "
         "valsalva run {} --out {} --restart latest\n",
-        io::StopSignal::signal_number(), summary.steps, summary.time,
+        run::StopSignal::signal_number(), summary.steps, summary.time,
         result.last_checkpoint.string(), scene_file.string(), result.run_path.string());
     return 0;
   }

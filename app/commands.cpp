@@ -50,28 +50,28 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 int check_scene(const std::filesystem::path& scene_file, const std::vector<std::string>& settings) {
   Phase phase("reading the scene " + scene_file.string());
-  const auto scene = io::load_scene(scene_file, settings);
+  const auto scene = scene::load_scene(scene_file, settings);
   phase.next(mesh_phase(scene));
-  const auto mesh = io::build_mesh(scene, MPI_COMM_WORLD);
+  const auto mesh = scene::build_mesh(scene, MPI_COMM_WORLD);
   phase.next(fmt::format("computing the dual metrics of the mesh ({} nodes, {} cells)",
                          mesh.num_nodes(), mesh.num_cells()));
-  const auto metrics = flow::compute_dual_metrics(mesh);
+  const auto metrics = mesh::compute_dual_metrics(mesh);
   phase.next("checking the scene against the mesh");
-  const auto boundary = io::read_boundary_conditions(scene, mesh);  // every patch has a condition
-  io::read_analysis_options(scene, mesh);  // probes, samples, statistics, wall shear
-  const auto immersed = io::read_immersed_setup(scene, mesh);  // meshes, materials, clamps
-  io::read_valve_monitor_options(scene, mesh);                 // [valve]: its structure and patches
-  io::check_les_scene(scene);                                  // LES output fields
-  io::flow_run_options(scene, {});                             // time step, output volume
-  io::check_initial_state(scene, mesh);  // a Taylor-Green start on a 2 pi L-periodic mesh
-  io::check_forcing(scene, boundary);    // a flow-rate drive on a domain closed by walls
-  io::check_cycle_periods(scene);        // valve and statistics cycles against the inlet table
-  io::check_step_count(scene, metrics);  // the viscous bound on dt against time.end
+  const auto boundary = scene::read_boundary_conditions(scene, mesh);  // every patch has a condition
+  scene::read_analysis_options(scene, mesh);  // probes, samples, statistics, wall shear
+  const auto immersed = scene::read_immersed_setup(scene, mesh);  // meshes, materials, clamps
+  scene::read_valve_monitor_options(scene, mesh);                 // [valve]: its structure and patches
+  scene::check_les_scene(scene);                                  // LES output fields
+  scene::flow_run_options(scene, {});                             // time step, output volume
+  scene::check_initial_state(scene, mesh);  // a Taylor-Green start on a 2 pi L-periodic mesh
+  scene::check_forcing(scene, boundary);    // a flow-rate drive on a domain closed by walls
+  scene::check_cycle_periods(scene);        // valve and statistics cycles against the inlet table
+  scene::check_step_count(scene, metrics);  // the viscous bound on dt against time.end
   std::string coupling;
   if (!immersed.empty()) {  // every marker in the fluid, as the run places them
     phase.next("placing the immersed markers in the fluid mesh");
-    auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
-    const auto c = io::build_immersed_coupling(immersed, local);
+    auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD);
+    const auto c = run::build_immersed_coupling(immersed, local);
     coupling = fmt::format("; {} immersed markers, coupling time-step bound {:.3e} s",
                            c.structure->num_markers(), c.dt_bound);
   }
@@ -87,14 +87,14 @@ int mesh_info(const std::filesystem::path& mesh_file, double scale) {
     throw std::invalid_argument(fmt::format(
         "mesh-info: --scale {} must be a positive finite factor (e.g. 0.001 for mm)", scale));
   Phase phase("reading the mesh " + mesh_file.string());
-  auto mesh = io::read_gmsh(mesh_file);
+  auto mesh = mesh::read_gmsh(mesh_file);
   phase.next(
       fmt::format("checking the mesh ({} nodes, {} cells)", mesh.num_nodes(), mesh.num_cells()));
   for (auto& x : mesh.nodes) x *= scale;
-  flow::check_mesh(mesh);
-  if (const auto pieces = io::disconnected_pieces(mesh); !pieces.empty())
+  mesh::check_mesh(mesh);
+  if (const auto pieces = scene::disconnected_pieces(mesh); !pieces.empty())
     throw std::runtime_error(pieces);
-  if (world_rank() == 0) std::cout << io::mesh_info(mesh);
+  if (world_rank() == 0) std::cout << mesh::mesh_info(mesh);
   return 0;
 }
 
@@ -165,7 +165,7 @@ int validate(const std::string& case_name, bool list, bool quick, const std::str
 }
 
 int docs_scenes() {
-  io::write_scene_docs(std::cout);
+  scene::write_scene_docs(std::cout);
   return 0;
 }
 

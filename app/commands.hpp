@@ -9,7 +9,7 @@
 
 namespace valsalva::app {
 
-// `settings`: scene overrides "key=value" (--set, io::load_scene); `request.quiet`: no
+// `settings`: scene overrides "key=value" (--set, scene::load_scene); `request.quiet`: no
 // resolved scene and no progress lines (app/command_run.cpp).
 int run_scene(const std::filesystem::path& scene_file, const std::vector<std::string>& settings,
               const run::RunRequest& request);

@@ -115,7 +115,7 @@ int main(int argc, char** argv) {
                  "valsalva: error: out of memory while {} (std::bad_alloc: the input asks for "
                  "more memory than this process may use; {} of physical memory, {} rank(s))\n",
                  phase.empty() ? "running the command" : phase,
-                 valsalva::io::byte_size(valsalva::io::physical_memory_bytes()), size);
+                 valsalva::core::byte_size(valsalva::core::physical_memory_bytes()), size);
     if (size > 1) MPI_Abort(MPI_COMM_WORLD, 1);
     code = 1;
   } catch (const std::exception& e) {

@@ -5,7 +5,7 @@
 
 #include <stdexcept>
 
-namespace valsalva::io {
+namespace valsalva::core {
 
 double physical_memory_bytes() {
   return static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
@@ -29,4 +29,4 @@ void check_allocation(const std::string& what, double count, double bytes_each) 
     throw std::runtime_error(problem);
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::core

@@ -5,7 +5,7 @@
 
 #include <string>
 
-namespace valsalva::io {
+namespace valsalva::core {
 
 // Physical memory of this machine, bytes (sysconf).
 double physical_memory_bytes();
@@ -19,4 +19,4 @@ std::string allocation_problem(const std::string& what, double count, double byt
 // Throws std::runtime_error with allocation_problem's text when there is one.
 void check_allocation(const std::string& what, double count, double bytes_each);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::core

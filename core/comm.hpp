@@ -5,10 +5,12 @@
 #include <mpi.h>
 
 #include <cstdint>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
-namespace valsalva::flow {
+namespace valsalva::core {
 
 class MpiError : public std::runtime_error {
  public:
@@ -17,7 +19,7 @@ class MpiError : public std::runtime_error {
 
 // Throws MpiError naming the call and its location when `code` is not MPI_SUCCESS.
 void check_mpi(int code, const char* call, const char* file, int line);
-#define VALSALVA_MPI(call) ::valsalva::flow::check_mpi((call), #call, __FILE__, __LINE__)
+#define VALSALVA_MPI(call) ::valsalva::core::check_mpi((call), #call, __FILE__, __LINE__)
 
 class Comm {
  public:
@@ -32,7 +34,31 @@ class Comm {
   double min(double x) const;
   std::int64_t sum(std::int64_t x) const;
   std::int64_t max(std::int64_t x) const;
+  // True on every rank when `x` is true on any rank.
+  bool any(bool x) const;
   void barrier() const;
+
+  // Element-wise reductions in place, the same result on every rank (every rank passes the same
+  // length).
+  void sum_in_place(std::span<double> values) const;
+  void max_in_place(std::span<double> values) const;
+  void min_in_place(std::span<double> values) const;
+
+  // Every rank's `mine` concatenated in rank order: on rank 0 only (gather_to_root; the others
+  // get an empty vector) or on every rank (all_gather). Lengths may differ between ranks.
+  std::vector<double> gather_to_root(std::span<const double> mine) const;
+  std::vector<std::int64_t> all_gather(std::span<const std::int64_t> mine) const;
+
+  // `values` of rank `root` copied to every rank (same length on every rank); a string or a
+  // vector of any length, resized on the receivers.
+  void broadcast(std::span<double> values, int root = 0) const;
+  void broadcast(std::span<int> values, int root = 0) const;
+  void broadcast(double& value, int root = 0) const {
+    broadcast(std::span<double>(&value, 1), root);
+  }
+  void broadcast(int& value, int root = 0) const { broadcast(std::span<int>(&value, 1), root); }
+  void broadcast(std::string& text, int root = 0) const;
+  void broadcast(std::vector<double>& values, int root = 0) const;
 
  private:
   MPI_Comm comm_;
@@ -40,4 +66,4 @@ class Comm {
   int size_ = 1;
 };
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::core

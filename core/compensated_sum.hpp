@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace valsalva::flow {
+namespace valsalva::core {
 
 class CompensatedSum {
  public:
@@ -19,4 +19,4 @@ class CompensatedSum {
   double sum_ = 0, compensation_ = 0;
 };
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::core

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <utility>
 
-namespace valsalva::io {
+namespace valsalva::core {
 
 namespace {
 
@@ -183,4 +183,4 @@ NumericTable read_numeric_table(const std::filesystem::path& file, TableHeader h
   return read_numeric_table(file, format);
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::core

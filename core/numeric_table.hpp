@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-namespace valsalva::io {
+namespace valsalva::core {
 
 class TableError : public std::runtime_error {
  public:
@@ -90,4 +90,4 @@ NumericTable read_numeric_table(const std::filesystem::path& file, const TableFo
 NumericTable read_numeric_table(const std::filesystem::path& file, TableHeader header,
                                 std::size_t width = 0, bool blank_separated = false);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::core

@@ -4,7 +4,7 @@
 
 #include <ctime>
 
-namespace valsalva::flow {
+namespace valsalva::core {
 
 inline double thread_cpu_seconds() {
   timespec c;
@@ -12,4 +12,4 @@ inline double thread_cpu_seconds() {
   return static_cast<double>(c.tv_sec) + 1e-9 * static_cast<double>(c.tv_nsec);
 }
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::core

@@ -22,7 +22,7 @@ bool ForcingSpec::time_dependent() const {
   return type == Type::flow_rate || (type == Type::uniform && waveform != Waveform::Kind::constant);
 }
 
-VectorField forcing_density(const LocalMesh& local, const ForcingSpec& spec) {
+VectorField forcing_density(const mesh::LocalMesh& local, const ForcingSpec& spec) {
   VectorField f(local.num_local(), Eigen::Vector3d::Zero());
   if (spec.type == ForcingSpec::Type::uniform) {
     const Eigen::Vector3d f0 = spec.uniform_force(0.0);

@@ -44,6 +44,6 @@ struct ForcingSpec {
 // Kolmogorov's force has zero mean, but its samples at the nodes of an irregular mesh do not
 // (1.5e-4 F on 20 % perturbed tetrahedra), and a periodic box has nothing that removes the
 // momentum a net force puts in: the discrete (volume-weighted) mean is subtracted. Collective.
-VectorField forcing_density(const LocalMesh& local, const ForcingSpec& spec);
+VectorField forcing_density(const mesh::LocalMesh& local, const ForcingSpec& spec);
 
 }  // namespace valsalva::flow

@@ -12,13 +12,14 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "core/comm.hpp"
 #include "flow/patch_fluxes.hpp"
 
 namespace valsalva::flow {
 
 namespace {
 
-void allreduce(std::vector<double>& values, const Comm& comm, MPI_Op op = MPI_SUM) {
+void allreduce(std::vector<double>& values, const core::Comm& comm, MPI_Op op = MPI_SUM) {
   if (values.empty()) return;
   VALSALVA_MPI(MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()),
                              MPI_DOUBLE, op, comm.get()));
@@ -58,7 +59,7 @@ void check_elastance(const BoundarySpec& spec, const std::vector<BoundarySpec>& 
 
 }  // namespace
 
-BoundaryConditions::BoundaryConditions(const LocalMesh& mesh, std::vector<BoundarySpec> specs,
+BoundaryConditions::BoundaryConditions(const mesh::LocalMesh& mesh, std::vector<BoundarySpec> specs,
                                        double nu)
     : mesh_(mesh), specs_(std::move(specs)), patches_(mesh.patch_names.size()) {
   const auto& names = mesh.patch_names;

@@ -121,7 +121,7 @@ class BoundaryConditions {
   // std::invalid_argument for a non-periodic patch without a condition (naming it and the
   // accepted types), a condition for a patch the mesh lacks or that is periodic, a bad swap
   // partner, or a Womersley profile without a sine waveform.
-  BoundaryConditions(const LocalMesh& mesh, std::vector<BoundarySpec> specs, double nu);
+  BoundaryConditions(const mesh::LocalMesh& mesh, std::vector<BoundarySpec> specs, double nu);
 
   // Per local node: 1 where the pressure is fixed (pressure and lumped outlets).
   std::vector<char> pressure_dirichlet() const;
@@ -202,7 +202,7 @@ class BoundaryConditions {
   double profile(const Patch& p, int patch, const Eigen::Vector3d& x, double q, double t,
                  double& shape) const;
 
-  const LocalMesh& mesh_;
+  const mesh::LocalMesh& mesh_;
   std::vector<BoundarySpec> specs_;
   std::vector<int> spec_patch_;
   std::vector<Patch> patches_;

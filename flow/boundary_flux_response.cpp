@@ -21,7 +21,7 @@ std::vector<double> BoundaryConditions::flux_response(const VectorField& du) {
       sums[0] += response_[k].dot(mesh_.boundary[entries_[i]].area);
     if (free_outflow(k)) sums[1] += outlet_area_[k].squaredNorm();
   }
-  VALSALVA_MPI(MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, mesh_.comm.get()));
+  mesh_.comm.sum_in_place(sums);
   if (sums[1] > 0)
     for (std::size_t k = 0; k < nodes_.size(); ++k)
       if (free_outflow(k)) response_[k] += (-sums[0] / sums[1]) * outlet_area_[k];
@@ -33,8 +33,7 @@ std::vector<double> BoundaryConditions::flux_response(const VectorField& du) {
       flux[b.patch] += response_[k].dot(b.area);
     }
   }
-  VALSALVA_MPI(MPI_Allreduce(MPI_IN_PLACE, flux.data(), static_cast<int>(flux.size()), MPI_DOUBLE,
-                             MPI_SUM, mesh_.comm.get()));
+  mesh_.comm.sum_in_place(flux);
   return flux;
 }
 

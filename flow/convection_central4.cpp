@@ -8,7 +8,7 @@ namespace valsalva::flow {
 
 namespace {
 
-double contract(const Eigen::Matrix3d& h, const SymTensor& m) {
+double contract(const Eigen::Matrix3d& h, const mesh::SymTensor& m) {
   // H : M for symmetric M stored xx, yy, zz, xy, xz, yz (H symmetrised).
   return h(0, 0) * m[0] + h(1, 1) * m[1] + h(2, 2) * m[2] + (h(0, 1) + h(1, 0)) * m[3] +
          (h(0, 2) + h(2, 0)) * m[4] + (h(1, 2) + h(2, 1)) * m[5];
@@ -16,7 +16,7 @@ double contract(const Eigen::Matrix3d& h, const SymTensor& m) {
 
 }  // namespace
 
-ConvectionCentral4::ConvectionCentral4(const LocalMesh& mesh, Form form)
+ConvectionCentral4::ConvectionCentral4(const mesh::LocalMesh& mesh, Form form)
     : mesh_(mesh), form_(form), grad_(mesh.num_local(), Eigen::Matrix3d::Zero()) {
   int deepest = 0;
   for (int layer : mesh.ghost_layer) deepest = std::max(deepest, layer);
@@ -55,7 +55,7 @@ void ConvectionCentral4::deconvolve(const VectorField& u) {
                      0.5 * contract(h, mesh_.second_moment[i]) / v;
     }
   }
-  const_cast<Halo&>(mesh_.halo).exchange(nodal_, HaloMode::insert);
+  const_cast<mesh::Halo&>(mesh_.halo).exchange(nodal_, mesh::HaloMode::insert);
 }
 
 void ConvectionCentral4::apply(const VectorField& u, VectorField& conv) {
@@ -91,7 +91,7 @@ void ConvectionCentral4::apply(const VectorField& u, VectorField& conv) {
   const VectorField& ub = form_ == Form::edge4 ? u : nodal_;
   for (const auto& b : mesh_.boundary) conv[b.node] += ub[b.node].dot(b.area) * ub[b.node];
   for (int i = 0; i < mesh_.num_owned; ++i) conv[i] /= mesh_.volume[i];
-  const_cast<Halo&>(mesh_.halo).exchange(conv, HaloMode::insert);
+  const_cast<mesh::Halo&>(mesh_.halo).exchange(conv, mesh::HaloMode::insert);
 }
 
 void ConvectionCentral4::apply(const VectorField& u, const EdgeField& flux, VectorField& conv) {
@@ -128,7 +128,7 @@ void ConvectionCentral4::apply(const VectorField& u, const EdgeField& flux, Vect
   }
   for (const auto& b : mesh_.boundary) conv[b.node] += 0.5 * u[b.node].dot(b.area) * u[b.node];
   for (int i = 0; i < mesh_.num_owned; ++i) conv[i] /= mesh_.volume[i];
-  const_cast<Halo&>(mesh_.halo).exchange(conv, HaloMode::insert);
+  const_cast<mesh::Halo&>(mesh_.halo).exchange(conv, mesh::HaloMode::insert);
 }
 
 }  // namespace valsalva::flow

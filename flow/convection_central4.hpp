@@ -67,7 +67,7 @@ class ConvectionCentral4 final : public ConvectionScheme {
  public:
   enum class Form { edge4, deconvolution };
 
-  explicit ConvectionCentral4(const LocalMesh& mesh, Form form = Form::edge4);
+  explicit ConvectionCentral4(const mesh::LocalMesh& mesh, Form form = Form::edge4);
   void apply(const VectorField& u, VectorField& conv) override;
   // The skew-symmetric form (edge4 only; the deconvolution form throws std::logic_error).
   void apply(const VectorField& u, const EdgeField& flux, VectorField& conv) override;
@@ -78,7 +78,7 @@ class ConvectionCentral4 final : public ConvectionScheme {
  private:
   void deconvolve(const VectorField& u);  // nodal_ from u (owned, then halo-inserted)
 
-  const LocalMesh& mesh_;
+  const mesh::LocalMesh& mesh_;
   Form form_;
   TensorField grad_;
   TensorField adjoint_;                                  // T_i, then W_i, of the skew form

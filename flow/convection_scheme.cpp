@@ -11,7 +11,7 @@ namespace {
 
 class ConvectionCentral2 final : public ConvectionScheme {
  public:
-  explicit ConvectionCentral2(const LocalMesh& mesh) : mesh_(mesh) {}
+  explicit ConvectionCentral2(const mesh::LocalMesh& mesh) : mesh_(mesh) {}
   void apply(const VectorField& u, VectorField& conv) override { convection(mesh_, u, u, conv); }
   void apply(const VectorField& u, const EdgeField& flux, VectorField& conv) override {
     skew_convection(mesh_, u, flux, conv);
@@ -19,7 +19,7 @@ class ConvectionCentral2 final : public ConvectionScheme {
   std::string name() const override { return "central2"; }
 
  private:
-  const LocalMesh& mesh_;
+  const mesh::LocalMesh& mesh_;
 };
 
 }  // namespace
@@ -30,7 +30,7 @@ const std::vector<std::string>& convection_scheme_names() {
 }
 
 std::unique_ptr<ConvectionScheme> make_convection_scheme(const std::string& name,
-                                                         const LocalMesh& mesh) {
+                                                         const mesh::LocalMesh& mesh) {
   if (name == "central2") return std::make_unique<ConvectionCentral2>(mesh);
   if (name == "central4") return std::make_unique<ConvectionCentral4>(mesh);
   std::string accepted;

@@ -49,6 +49,6 @@ const std::vector<std::string>& convection_scheme_names();
 // Throws std::invalid_argument naming the scheme and the accepted names for an unknown one, and
 // the scheme's own error when the mesh cannot carry it (central4: fewer than 2 ghost layers).
 std::unique_ptr<ConvectionScheme> make_convection_scheme(const std::string& name,
-                                                         const LocalMesh& mesh);
+                                                         const mesh::LocalMesh& mesh);
 
 }  // namespace valsalva::flow

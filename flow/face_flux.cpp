@@ -8,14 +8,14 @@ namespace valsalva::flow {
 
 namespace {
 
-void check_nodal(const LocalMesh& mesh, std::size_t size, const char* what) {
+void check_nodal(const mesh::LocalMesh& mesh, std::size_t size, const char* what) {
   if (size != static_cast<std::size_t>(mesh.num_local()))
     throw std::invalid_argument(std::string("flow face flux: ") + what + " has " +
                                 std::to_string(size) + " values, the local mesh has " +
                                 std::to_string(mesh.num_local()) + " nodes");
 }
 
-void check_edges(const LocalMesh& mesh, std::size_t size, const char* what) {
+void check_edges(const mesh::LocalMesh& mesh, std::size_t size, const char* what) {
   if (size != mesh.edges.size())
     throw std::invalid_argument(std::string("flow face flux: ") + what + " has " +
                                 std::to_string(size) + " values, the local mesh has " +
@@ -24,7 +24,7 @@ void check_edges(const LocalMesh& mesh, std::size_t size, const char* what) {
 
 }  // namespace
 
-void central_face_flux(const LocalMesh& mesh, const VectorField& u, EdgeField& flux) {
+void central_face_flux(const mesh::LocalMesh& mesh, const VectorField& u, EdgeField& flux) {
   check_nodal(mesh, u.size(), "velocity");
   flux.resize(mesh.edges.size());
   for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
@@ -33,7 +33,7 @@ void central_face_flux(const LocalMesh& mesh, const VectorField& u, EdgeField& f
   }
 }
 
-void hermite_face_flux(const LocalMesh& mesh, const VectorField& u, const TensorField& grad,
+void hermite_face_flux(const mesh::LocalMesh& mesh, const VectorField& u, const TensorField& grad,
                        EdgeField& flux) {
   check_nodal(mesh, u.size(), "velocity");
   check_nodal(mesh, grad.size(), "velocity gradient");
@@ -46,7 +46,7 @@ void hermite_face_flux(const LocalMesh& mesh, const VectorField& u, const Tensor
   }
 }
 
-void face_flux_divergence(const LocalMesh& mesh, const EdgeField& flux, const VectorField& u,
+void face_flux_divergence(const mesh::LocalMesh& mesh, const EdgeField& flux, const VectorField& u,
                           ScalarField& div) {
   check_edges(mesh, flux.size(), "flux");
   check_nodal(mesh, u.size(), "velocity");
@@ -61,7 +61,7 @@ void face_flux_divergence(const LocalMesh& mesh, const EdgeField& flux, const Ve
   for (int i = mesh.num_owned; i < mesh.num_local(); ++i) div[i] = 0;
 }
 
-void add_compact_gradient(const LocalMesh& mesh, const std::vector<double>& weights, double c,
+void add_compact_gradient(const mesh::LocalMesh& mesh, const std::vector<double>& weights, double c,
                           const ScalarField& phi, EdgeField& flux) {
   check_edges(mesh, flux.size(), "flux");
   check_edges(mesh, weights.size(), "weights");
@@ -72,7 +72,8 @@ void add_compact_gradient(const LocalMesh& mesh, const std::vector<double>& weig
   }
 }
 
-void add_central_flux(const LocalMesh& mesh, double c, const VectorField& g, EdgeField& flux) {
+void add_central_flux(const mesh::LocalMesh& mesh, double c, const VectorField& g,
+                      EdgeField& flux) {
   check_edges(mesh, flux.size(), "flux");
   check_nodal(mesh, g.size(), "gradient");
   for (std::size_t e = 0; e < mesh.edges.size(); ++e) {

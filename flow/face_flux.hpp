@@ -24,23 +24,23 @@ namespace valsalva::flow {
 using EdgeField = std::vector<double>;  // one value per local edge (LocalMesh::edges)
 
 // F_e = S_e . (u_j + u_k)/2 on every local edge (the face value of flow::divergence).
-void central_face_flux(const LocalMesh& mesh, const VectorField& u, EdgeField& flux);
+void central_face_flux(const mesh::LocalMesh& mesh, const VectorField& u, EdgeField& flux);
 
 // F_e = S_e . [(u_j + u_k)/2 + (G_j - G_k) d_e / 6] on every local edge (the face value of
 // Order4Operators::divergence); `grad` = flow::gradient(u), valid at every local node.
-void hermite_face_flux(const LocalMesh& mesh, const VectorField& u, const TensorField& grad,
+void hermite_face_flux(const mesh::LocalMesh& mesh, const VectorField& u, const TensorField& grad,
                        EdgeField& flux);
 
 // (1/V_j) [sum_k F_jk + sum_faces u_j . A_j] at owned nodes (ghost values 0): the divergence
 // the face flux carries, with the boundary faces' flux taken from the nodal velocity u.
-void face_flux_divergence(const LocalMesh& mesh, const EdgeField& flux, const VectorField& u,
+void face_flux_divergence(const mesh::LocalMesh& mesh, const EdgeField& flux, const VectorField& u,
                           ScalarField& div);
 
 // F_e += c w_e (phi_k - phi_j) on every local edge (c = -dt/rho: the projection's correction).
-void add_compact_gradient(const LocalMesh& mesh, const std::vector<double>& weights, double c,
+void add_compact_gradient(const mesh::LocalMesh& mesh, const std::vector<double>& weights, double c,
                           const ScalarField& phi, EdgeField& flux);
 
 // F_e += c S_e . (g_j + g_k)/2 on every local edge (the wide face value of a nodal gradient g).
-void add_central_flux(const LocalMesh& mesh, double c, const VectorField& g, EdgeField& flux);
+void add_central_flux(const mesh::LocalMesh& mesh, double c, const VectorField& g, EdgeField& flux);
 
 }  // namespace valsalva::flow

@@ -8,7 +8,7 @@
 
 namespace valsalva::flow {
 
-FlowRateControl::FlowRateControl(const LocalMesh& local, BoundaryConditions* boundary,
+FlowRateControl::FlowRateControl(const mesh::LocalMesh& local, BoundaryConditions* boundary,
                                  const ForcingSpec& spec, SectionFlux section_flux)
     : local_(local),
       spec_(spec),

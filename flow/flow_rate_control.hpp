@@ -31,14 +31,14 @@ namespace valsalva::flow {
 class FlowRateControl {
  public:
   // Collective: the volume flux (m^3/s, along the section's normal) of a face flux on every
-  // local edge, the same value on every rank (io::SectionFlux::flux).
+  // local edge, the same value on every rank (analysis::SectionFlux::flux).
   using SectionFlux = std::function<double(const EdgeField&)>;
 
   // `boundary`: the run's conditions (null when every patch is periodic). Collective. Throws
   // std::invalid_argument when the section is (nearly) parallel to the direction, so that no
   // correction moves its flux.
-  FlowRateControl(const LocalMesh& local, BoundaryConditions* boundary, const ForcingSpec& spec,
-                  SectionFlux section_flux);
+  FlowRateControl(const mesh::LocalMesh& local, BoundaryConditions* boundary,
+                  const ForcingSpec& spec, SectionFlux section_flux);
 
   // The force density held over the next step, N/m^3 (along the direction).
   double force() const { return force_; }
@@ -56,7 +56,7 @@ class FlowRateControl {
   void restore(const std::vector<double>& saved);
 
  private:
-  const LocalMesh& local_;
+  const mesh::LocalMesh& local_;
   ForcingSpec spec_;
   SectionFlux section_flux_;
   Eigen::Vector3d direction_;

@@ -81,8 +81,8 @@ const char* distal_column(BoundaryType type) {
                                                  : nullptr;
 }
 
-LumpedOutlets::LumpedOutlets(const LocalMesh& mesh, BoundaryConditions& bc, const Solve& solve,
-                             const Gradient& gradient)
+LumpedOutlets::LumpedOutlets(const mesh::LocalMesh& mesh, BoundaryConditions& bc,
+                             const Solve& solve, const Gradient& gradient)
     : mesh_(mesh), bc_(bc) {
   const auto& specs = bc.specs();
   for (std::size_t s = 0; s < specs.size(); ++s)

@@ -96,7 +96,7 @@ class LumpedOutlets {
   using Gradient = std::function<void(const ScalarField& p, VectorField& grad)>;
   // Collective. `solve`: lap(x) = f with the projection's Poisson matrix (Dirichlet values from
   // x on entry); `gradient`: the projection's pressure gradient. Computes phi_k, grad phi_k.
-  LumpedOutlets(const LocalMesh& mesh, BoundaryConditions& bc, const Solve& solve,
+  LumpedOutlets(const mesh::LocalMesh& mesh, BoundaryConditions& bc, const Solve& solve,
                 const Gradient& gradient);
 
   int count() const { return static_cast<int>(patches_.size()); }
@@ -132,7 +132,7 @@ class LumpedOutlets {
   double last_mismatch() const { return mismatch_; }
 
  private:
-  const LocalMesh& mesh_;
+  const mesh::LocalMesh& mesh_;
   BoundaryConditions& bc_;
   std::vector<int> patches_, spec_;
   std::vector<int> source_;  // per lumped patch: lumped index of its venous return, -1 = none

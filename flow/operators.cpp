@@ -9,18 +9,18 @@ namespace valsalva::flow {
 namespace {
 
 template <class T>
-void finish_field(const LocalMesh& mesh, std::vector<T>& out, int components) {
+void finish_field(const mesh::LocalMesh& mesh, std::vector<T>& out, int components) {
   // Ghost accumulations are partial; the owners' values replace them.
-  const_cast<Halo&>(mesh.halo).exchange(
+  const_cast<mesh::Halo&>(mesh.halo).exchange(
       std::span<double>(reinterpret_cast<double*>(out.data()), components * out.size()), components,
-      HaloMode::insert);
+      mesh::HaloMode::insert);
 }
 
-void finish_field(const LocalMesh& mesh, ScalarField& out) {
-  const_cast<Halo&>(mesh.halo).exchange(out, HaloMode::insert);
+void finish_field(const mesh::LocalMesh& mesh, ScalarField& out) {
+  const_cast<mesh::Halo&>(mesh.halo).exchange(out, mesh::HaloMode::insert);
 }
 
-void check_size(const LocalMesh& mesh, std::size_t size, const char* what) {
+void check_size(const mesh::LocalMesh& mesh, std::size_t size, const char* what) {
   if (size != static_cast<std::size_t>(mesh.num_local()))
     throw std::invalid_argument(std::string("flow operators: field '") + what + "' has " +
                                 std::to_string(size) + " values, the local mesh has " +
@@ -29,7 +29,7 @@ void check_size(const LocalMesh& mesh, std::size_t size, const char* what) {
 
 }  // namespace
 
-std::vector<double> laplacian_weights(const LocalMesh& mesh) {
+std::vector<double> laplacian_weights(const mesh::LocalMesh& mesh) {
   std::vector<double> a(mesh.edges.size());
   for (std::size_t e = 0; e < a.size(); ++e) {
     const auto& s = mesh.edge_normal[e];
@@ -43,7 +43,7 @@ std::vector<double> laplacian_weights(const LocalMesh& mesh) {
   return a;
 }
 
-void gradient(const LocalMesh& mesh, const ScalarField& phi, VectorField& grad) {
+void gradient(const mesh::LocalMesh& mesh, const ScalarField& phi, VectorField& grad) {
   check_size(mesh, phi.size(), "phi");
   grad.assign(mesh.num_local(), Eigen::Vector3d::Zero());
   for (int e = 0; e < mesh.num_owned_edges; ++e) {
@@ -57,7 +57,7 @@ void gradient(const LocalMesh& mesh, const ScalarField& phi, VectorField& grad) 
   finish_field(mesh, grad, 3);
 }
 
-void gradient(const LocalMesh& mesh, const VectorField& u, TensorField& grad) {
+void gradient(const mesh::LocalMesh& mesh, const VectorField& u, TensorField& grad) {
   check_size(mesh, u.size(), "u");
   grad.assign(mesh.num_local(), Eigen::Matrix3d::Zero());
   for (int e = 0; e < mesh.num_owned_edges; ++e) {
@@ -71,7 +71,7 @@ void gradient(const LocalMesh& mesh, const VectorField& u, TensorField& grad) {
   finish_field(mesh, grad, 9);
 }
 
-void local_gradient(const LocalMesh& mesh, const ScalarField& phi, VectorField& grad) {
+void local_gradient(const mesh::LocalMesh& mesh, const ScalarField& phi, VectorField& grad) {
   grad.assign(mesh.num_local(), Eigen::Vector3d::Zero());
   for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
     const auto [j, k] = mesh.edges[e];
@@ -83,7 +83,7 @@ void local_gradient(const LocalMesh& mesh, const ScalarField& phi, VectorField& 
     grad[i] = mesh.gradient_correction[i] * grad[i] / mesh.volume[i];
 }
 
-void local_gradient(const LocalMesh& mesh, const VectorField& u, TensorField& grad) {
+void local_gradient(const mesh::LocalMesh& mesh, const VectorField& u, TensorField& grad) {
   grad.assign(mesh.num_local(), Eigen::Matrix3d::Zero());
   for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
     const auto [j, k] = mesh.edges[e];
@@ -95,7 +95,7 @@ void local_gradient(const LocalMesh& mesh, const VectorField& u, TensorField& gr
     grad[i] = grad[i] * mesh.gradient_correction[i].transpose() / mesh.volume[i];
 }
 
-void divergence(const LocalMesh& mesh, const VectorField& u, ScalarField& div) {
+void divergence(const mesh::LocalMesh& mesh, const VectorField& u, ScalarField& div) {
   check_size(mesh, u.size(), "u");
   div.assign(mesh.num_local(), 0.0);
   for (int e = 0; e < mesh.num_owned_edges; ++e) {
@@ -109,8 +109,8 @@ void divergence(const LocalMesh& mesh, const VectorField& u, ScalarField& div) {
   finish_field(mesh, div);
 }
 
-void laplacian(const LocalMesh& mesh, const std::vector<double>& weights, const ScalarField& phi,
-               const VectorField& grad, ScalarField& lap) {
+void laplacian(const mesh::LocalMesh& mesh, const std::vector<double>& weights,
+               const ScalarField& phi, const VectorField& grad, ScalarField& lap) {
   check_size(mesh, phi.size(), "phi");
   check_size(mesh, grad.size(), "grad");
   lap.assign(mesh.num_local(), 0.0);
@@ -126,7 +126,7 @@ void laplacian(const LocalMesh& mesh, const std::vector<double>& weights, const 
   finish_field(mesh, lap);
 }
 
-void convection(const LocalMesh& mesh, const VectorField& u, const VectorField& v,
+void convection(const mesh::LocalMesh& mesh, const VectorField& u, const VectorField& v,
                 VectorField& conv) {
   check_size(mesh, u.size(), "u");
   check_size(mesh, v.size(), "v");
@@ -143,8 +143,8 @@ void convection(const LocalMesh& mesh, const VectorField& u, const VectorField& 
   finish_field(mesh, conv, 3);
 }
 
-void skew_convection(const LocalMesh& mesh, const VectorField& u, const std::vector<double>& flux,
-                     VectorField& conv) {
+void skew_convection(const mesh::LocalMesh& mesh, const VectorField& u,
+                     const std::vector<double>& flux, VectorField& conv) {
   check_size(mesh, u.size(), "u");
   if (flux.size() != mesh.edges.size())
     throw std::invalid_argument("flow::skew_convection: " + std::to_string(flux.size()) +
@@ -162,7 +162,7 @@ void skew_convection(const LocalMesh& mesh, const VectorField& u, const std::vec
   finish_field(mesh, conv, 3);
 }
 
-void viscous(const LocalMesh& mesh, const std::vector<double>& weights, double nu,
+void viscous(const mesh::LocalMesh& mesh, const std::vector<double>& weights, double nu,
              const VectorField& v, const TensorField& grad, VectorField& out, bool correction) {
   check_size(mesh, v.size(), "v");
   check_size(mesh, grad.size(), "grad");

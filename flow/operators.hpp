@@ -31,41 +31,41 @@ using VectorField = std::vector<Eigen::Vector3d>;
 using TensorField = std::vector<Eigen::Matrix3d>;  // (i, j) = d u_i / d x_j
 
 // a_jk = |S|^2 / (S . d), the compact Laplacian weight of every local edge.
-std::vector<double> laplacian_weights(const LocalMesh& mesh);
+std::vector<double> laplacian_weights(const mesh::LocalMesh& mesh);
 
-void gradient(const LocalMesh& mesh, const ScalarField& phi, VectorField& grad);
-void gradient(const LocalMesh& mesh, const VectorField& u, TensorField& grad);
-void divergence(const LocalMesh& mesh, const VectorField& u, ScalarField& div);
+void gradient(const mesh::LocalMesh& mesh, const ScalarField& phi, VectorField& grad);
+void gradient(const mesh::LocalMesh& mesh, const VectorField& u, TensorField& grad);
+void divergence(const mesh::LocalMesh& mesh, const VectorField& u, ScalarField& div);
 
 // The same gradients at owned and layer-1 ghost nodes from local values only (a loop over all
 // local edges instead of a halo exchange; layer-2 and deeper values are partial): for the
 // 4th-order operators, whose edge corrections need G at both ends. `grad` is resized.
-void local_gradient(const LocalMesh& mesh, const ScalarField& phi, VectorField& grad);
-void local_gradient(const LocalMesh& mesh, const VectorField& u, TensorField& grad);
+void local_gradient(const mesh::LocalMesh& mesh, const ScalarField& phi, VectorField& grad);
+void local_gradient(const mesh::LocalMesh& mesh, const VectorField& u, TensorField& grad);
 
 // Laplacian per unit volume; `grad` is the gradient of phi (from gradient()), used by the
 // non-orthogonal correction.
-void laplacian(const LocalMesh& mesh, const std::vector<double>& weights, const ScalarField& phi,
-               const VectorField& grad, ScalarField& lap);
+void laplacian(const mesh::LocalMesh& mesh, const std::vector<double>& weights,
+               const ScalarField& phi, const VectorField& grad, ScalarField& lap);
 
 // Centred convective term div(u phi) per unit volume for each velocity component: conv_j =
 // (1/V_j) sum_k (u_jk . S_jk) (v_j + v_k)/2.
-void convection(const LocalMesh& mesh, const VectorField& u, const VectorField& v,
+void convection(const mesh::LocalMesh& mesh, const VectorField& u, const VectorField& v,
                 VectorField& conv);
 
 // The skew-symmetric 2nd-order convective term carried by the face flux F (one value per local
 // edge, flow/face_flux.hpp): conv_j = (1/2V_j) [sum_k F_jk u_k + sum_faces (u_j . A_j) u_j]
 // (see flow/convection_scheme.hpp); sum_j V_j u_j . conv_j is the boundary faces' kinetic-energy
 // flux to round-off, for any F.
-void skew_convection(const LocalMesh& mesh, const VectorField& u, const std::vector<double>& flux,
-                     VectorField& conv);
+void skew_convection(const mesh::LocalMesh& mesh, const VectorField& u,
+                     const std::vector<double>& flux, VectorField& conv);
 
 // Viscous term nu lap(v) for constant nu, per unit volume, componentwise Laplacian with the
 // same correction; `grad` is the velocity gradient tensor.
 // correction = false: no non-orthogonal correction (the P1 stiffness weights of
 // flow::poisson_weights on tetrahedra, whose two-point flux is already the median-dual flux of
 // the piecewise-linear field); the boundary-face flux grad v . A is kept either way.
-void viscous(const LocalMesh& mesh, const std::vector<double>& weights, double nu,
+void viscous(const mesh::LocalMesh& mesh, const std::vector<double>& weights, double nu,
              const VectorField& v, const TensorField& grad, VectorField& out,
              bool correction = true);
 

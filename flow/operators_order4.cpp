@@ -7,7 +7,7 @@
 
 namespace valsalva::flow {
 
-Order4Operators::Order4Operators(const LocalMesh& mesh, std::vector<double> laplacian_weights)
+Order4Operators::Order4Operators(const mesh::LocalMesh& mesh, std::vector<double> laplacian_weights)
     : mesh_(mesh), weights_(std::move(laplacian_weights)) {
   if (weights_.size() != mesh.edges.size())
     throw std::invalid_argument("flow::Order4Operators: " + std::to_string(weights_.size()) +
@@ -37,7 +37,7 @@ void Order4Operators::gradient(const ScalarField& phi, VectorField& grad) {
   }
   for (int i = 0; i < mesh_.num_owned; ++i)
     grad[i] = mesh_.gradient_correction[i] * grad[i] / mesh_.volume[i];
-  const_cast<Halo&>(mesh_.halo).exchange(grad, HaloMode::insert);
+  const_cast<mesh::Halo&>(mesh_.halo).exchange(grad, mesh::HaloMode::insert);
 }
 
 void Order4Operators::divergence(const VectorField& u, ScalarField& div) {
@@ -53,7 +53,7 @@ void Order4Operators::divergence(const VectorField& u, ScalarField& div) {
   }
   for (const auto& b : mesh_.boundary) div[b.node] += u[b.node].dot(b.area);
   for (int i = 0; i < mesh_.num_owned; ++i) div[i] /= mesh_.volume[i];
-  const_cast<Halo&>(mesh_.halo).exchange(div, HaloMode::insert);
+  const_cast<mesh::Halo&>(mesh_.halo).exchange(div, mesh::HaloMode::insert);
 }
 
 void Order4Operators::viscous(double nu, const VectorField& v, const TensorField& grad,
@@ -91,7 +91,7 @@ void Order4Operators::viscous(double nu, const VectorField& v, const TensorField
   }
   for (const auto& b : mesh_.boundary) out[b.node] += grad[b.node] * b.area;
   for (int i = 0; i < mesh_.num_owned; ++i) out[i] *= nu / mesh_.volume[i];
-  const_cast<Halo&>(mesh_.halo).exchange(out, HaloMode::insert);
+  const_cast<mesh::Halo&>(mesh_.halo).exchange(out, mesh::HaloMode::insert);
 }
 
 }  // namespace valsalva::flow

@@ -42,7 +42,7 @@ namespace valsalva::flow {
 class Order4Operators {
  public:
   // `laplacian_weights`: the compact weights of the viscous operator (flow::poisson_weights).
-  Order4Operators(const LocalMesh& mesh, std::vector<double> laplacian_weights);
+  Order4Operators(const mesh::LocalMesh& mesh, std::vector<double> laplacian_weights);
 
   // Owned and ghost values of the results are valid on return; inputs need valid ghosts.
   void gradient(const ScalarField& phi, VectorField& grad);
@@ -51,7 +51,7 @@ class Order4Operators {
   void viscous(double nu, const VectorField& v, const TensorField& grad, VectorField& out);
 
  private:
-  const LocalMesh& mesh_;
+  const mesh::LocalMesh& mesh_;
   std::vector<double> weights_;
   VectorField grad_s_;                                   // scalar gradient
   TensorField grad_v_;                                   // vector gradient

@@ -11,6 +11,6 @@ namespace valsalva::flow {
 
 // Collective. One value per patch of LocalMesh::patch_names (by patch index), m^3/s, summed over
 // the owned boundary nodes of all ranks; periodic patches have no boundary entries and get 0.
-std::vector<double> patch_fluxes(const LocalMesh& mesh, const VectorField& u);
+std::vector<double> patch_fluxes(const mesh::LocalMesh& mesh, const VectorField& u);
 
 }  // namespace valsalva::flow

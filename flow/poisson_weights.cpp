@@ -17,7 +17,7 @@ namespace {
 
 // -int grad N_a . grad N_b over a tetrahedron, added to weight(a, b) for its six edges.
 template <class Add>
-void add_tetra(const Mesh& mesh, std::span<const GlobalIndex> nodes, Add add) {
+void add_tetra(const mesh::Mesh& mesh, std::span<const mesh::GlobalIndex> nodes, Add add) {
   Eigen::Matrix3d J;
   for (int d = 0; d < 3; ++d) J.col(d) = mesh.nodes[nodes[d + 1]] - mesh.nodes[nodes[0]];
   const double volume = std::abs(J.determinant()) / 6;
@@ -34,7 +34,7 @@ void add_tetra(const Mesh& mesh, std::span<const GlobalIndex> nodes, Add add) {
 
 // The lumped tensor-product weights of a right prism (see slab_stiffness_weights).
 template <class Add>
-void add_prism(const Mesh& mesh, std::span<const GlobalIndex> nodes, Add add) {
+void add_prism(const mesh::Mesh& mesh, std::span<const mesh::GlobalIndex> nodes, Add add) {
   const auto x = [&](int i) -> const Eigen::Vector3d& { return mesh.nodes[nodes[i]]; };
   const Eigen::Vector3d axis = x(3) - x(0);
   const double h = axis.norm();
@@ -56,10 +56,10 @@ void add_prism(const Mesh& mesh, std::span<const GlobalIndex> nodes, Add add) {
   }
 }
 
-std::vector<double> stiffness_weights(const Mesh& mesh, const DualMetrics& metrics,
-                                      const LocalMesh& local) {
+std::vector<double> stiffness_weights(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+                                      const mesh::LocalMesh& local) {
   const auto n = static_cast<std::uint64_t>(metrics.num_nodes());
-  auto key = [n](GlobalIndex a, GlobalIndex b) {
+  auto key = [n](mesh::GlobalIndex a, mesh::GlobalIndex b) {
     return static_cast<std::uint64_t>(std::min(a, b)) * n +
            static_cast<std::uint64_t>(std::max(a, b));
   };
@@ -67,12 +67,12 @@ std::vector<double> stiffness_weights(const Mesh& mesh, const DualMetrics& metri
   weight.reserve(local.edges.size());
   for (const auto& [j, k] : local.edges) weight[key(local.dual_node[j], local.dual_node[k])] = 0.0;
 
-  const auto add = [&](GlobalIndex a, GlobalIndex b, double w) {
+  const auto add = [&](mesh::GlobalIndex a, mesh::GlobalIndex b, double w) {
     const auto it = weight.find(key(metrics.dual_of_mesh_node[a], metrics.dual_of_mesh_node[b]));
     if (it != weight.end()) it->second += w;
   };
-  for (GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
-    if (mesh.cell_types[c] == CellType::tetra)
+  for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
+    if (mesh.cell_types[c] == mesh::CellType::tetra)
       add_tetra(mesh, mesh.cell(c), add);
     else
       add_prism(mesh, mesh.cell(c), add);
@@ -83,23 +83,23 @@ std::vector<double> stiffness_weights(const Mesh& mesh, const DualMetrics& metri
   return w;
 }
 
-bool only(const Mesh& mesh, std::initializer_list<CellType> types) {
-  return std::all_of(mesh.cell_types.begin(), mesh.cell_types.end(), [&](CellType t) {
+bool only(const mesh::Mesh& mesh, std::initializer_list<mesh::CellType> types) {
+  return std::all_of(mesh.cell_types.begin(), mesh.cell_types.end(), [&](mesh::CellType t) {
     return std::find(types.begin(), types.end(), t) != types.end();
   });
 }
 
 }  // namespace
 
-std::vector<double> poisson_weights(const Mesh& mesh, const DualMetrics& metrics,
-                                    const LocalMesh& local) {
-  if (!only(mesh, {CellType::tetra})) return laplacian_weights(local);
+std::vector<double> poisson_weights(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+                                    const mesh::LocalMesh& local) {
+  if (!only(mesh, {mesh::CellType::tetra})) return laplacian_weights(local);
   return stiffness_weights(mesh, metrics, local);
 }
 
-std::vector<double> slab_stiffness_weights(const Mesh& mesh, const DualMetrics& metrics,
-                                           const LocalMesh& local) {
-  if (!only(mesh, {CellType::tetra, CellType::prism}))
+std::vector<double> slab_stiffness_weights(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+                                           const mesh::LocalMesh& local) {
+  if (!only(mesh, {mesh::CellType::tetra, mesh::CellType::prism}))
     throw std::invalid_argument("slab_stiffness_weights: " + mesh.source +
                                 " holds cells other than tetrahedra and prisms");
   return stiffness_weights(mesh, metrics, local);

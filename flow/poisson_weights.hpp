@@ -16,8 +16,8 @@
 
 namespace valsalva::flow {
 
-std::vector<double> poisson_weights(const Mesh& mesh, const DualMetrics& metrics,
-                                    const LocalMesh& local);
+std::vector<double> poisson_weights(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+                                    const mesh::LocalMesh& local);
 
 // The same on meshes of tetrahedra and right prisms (extruded slabs): on a prism (a0 a1 a2
 // below b0 b1 b2) the tensor product of the section triangle's P1 stiffness with the lumped 1D
@@ -26,7 +26,7 @@ std::vector<double> poisson_weights(const Mesh& mesh, const DualMetrics& metrics
 // quad diagonals (not edges). Compact, exact for linear fields, and on a z-invariant field the
 // section's P1 operator times h. Throws std::invalid_argument for other cell types or a prism
 // whose top is not its bottom translated (relative mismatch above 1e-9).
-std::vector<double> slab_stiffness_weights(const Mesh& mesh, const DualMetrics& metrics,
-                                           const LocalMesh& local);
+std::vector<double> slab_stiffness_weights(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+                                           const mesh::LocalMesh& local);
 
 }  // namespace valsalva::flow

@@ -97,7 +97,7 @@ struct PressurePoisson::Hypre {
   }
 };
 
-PressurePoisson::PressurePoisson(const LocalMesh& mesh, const std::vector<double>& weights,
+PressurePoisson::PressurePoisson(const mesh::LocalMesh& mesh, const std::vector<double>& weights,
                                  PoissonOptions options)
     : mesh_(mesh), options_(options), hypre_(std::make_unique<Hypre>()) {
   if (weights.size() != mesh.edges.size())
@@ -227,7 +227,7 @@ PoissonResult PressurePoisson::solve(const std::vector<double>& f, std::vector<d
   const auto& comm = mesh_.comm;
   // b = -V f; Dirichlet rows d g, eliminated columns a g. Without Dirichlet rows b is made
   // consistent with the constant null space (A symmetric, A 1 = 0).
-  CompensatedSum sum;
+  core::CompensatedSum sum;
   for (int i = 0; i < n; ++i) {
     h.values[i] = -mesh_.volume[i] * f[i];
     sum.add(h.values[i]);
@@ -271,18 +271,18 @@ PoissonResult PressurePoisson::solve(const std::vector<double>& f, std::vector<d
     // Dirichlet values exactly as given, not to the solver tolerance.
     for (int i = 0; i < n; ++i)
       if (h.dirichlet_diagonal[i] != 0) x[i] = h.values[i] / h.dirichlet_diagonal[i];
-    const_cast<Halo&>(mesh_.halo).exchange(x, HaloMode::insert);
+    const_cast<mesh::Halo&>(mesh_.halo).exchange(x, mesh::HaloMode::insert);
     return result;
   }
   // Zero volume-weighted mean fixes the free constant.
-  CompensatedSum xv, vol;
+  core::CompensatedSum xv, vol;
   for (int i = 0; i < n; ++i) {
     xv.add(mesh_.volume[i] * x[i]);
     vol.add(mesh_.volume[i]);
   }
   const double x_mean = comm.sum(xv.value()) / comm.sum(vol.value());
   for (int i = 0; i < n; ++i) x[i] -= x_mean;
-  const_cast<Halo&>(mesh_.halo).exchange(x, HaloMode::insert);
+  const_cast<mesh::Halo&>(mesh_.halo).exchange(x, mesh::HaloMode::insert);
   return result;
 }
 

@@ -51,7 +51,7 @@ struct PoissonResult {
 class PressurePoisson {
  public:
   // `weights` are flow::laplacian_weights(mesh); the mesh must outlive the solver.
-  PressurePoisson(const LocalMesh& mesh, const std::vector<double>& weights,
+  PressurePoisson(const mesh::LocalMesh& mesh, const std::vector<double>& weights,
                   PoissonOptions options = {});
   ~PressurePoisson();
   PressurePoisson(const PressurePoisson&) = delete;
@@ -68,7 +68,7 @@ class PressurePoisson {
 
  private:
   struct Hypre;
-  const LocalMesh& mesh_;
+  const mesh::LocalMesh& mesh_;
   PoissonOptions options_;
   bool singular_ = true;
   std::unique_ptr<Hypre> hypre_;

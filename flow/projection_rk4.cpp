@@ -14,7 +14,7 @@
 
 namespace valsalva::flow {
 
-ProjectionRK4::ProjectionRK4(const LocalMesh& mesh, ProjectionOptions options,
+ProjectionRK4::ProjectionRK4(const mesh::LocalMesh& mesh, ProjectionOptions options,
                              std::vector<double> poisson_weights)
     : mesh_(mesh),
       options_(options),

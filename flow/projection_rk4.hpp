@@ -135,7 +135,7 @@ class ProjectionRK4 {
  public:
   // `poisson_weights`: edge weights of the Poisson matrix (flow::poisson_weights); empty means
   // the two-point weights of flow::laplacian_weights (consistent on uniform hexahedra only).
-  ProjectionRK4(const LocalMesh& mesh, ProjectionOptions options,
+  ProjectionRK4(const mesh::LocalMesh& mesh, ProjectionOptions options,
                 std::vector<double> poisson_weights = {});
 
   // Advances `state` by dt; ghosts of the state are valid on return. The face flux of the last
@@ -202,7 +202,7 @@ class ProjectionRK4 {
   const LumpedOutlets* lumped_outlets() const { return lumped_.get(); }
 
  private:
-  const LocalMesh& mesh_;
+  const mesh::LocalMesh& mesh_;
   ProjectionOptions options_;
   std::vector<double> weights_, poisson_weights_;
   std::unique_ptr<ConvectionScheme> convection_;

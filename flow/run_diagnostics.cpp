@@ -13,8 +13,9 @@ namespace {
 // `scale * nu_at(j)`: the kinematic viscosity of local node j (a constant nu as scale = nu and
 // nu_at = 1 keeps the Newtonian bound's rounding as it was).
 template <class Viscosity>
-StabilityRates rates(const LocalMesh& mesh, const std::vector<double>& weights, Viscosity nu_at,
-                     double scale, const VectorField& u, std::vector<double>& scratch) {
+StabilityRates rates(const mesh::LocalMesh& mesh, const std::vector<double>& weights,
+                     Viscosity nu_at, double scale, const VectorField& u,
+                     std::vector<double>& scratch) {
   const int n = mesh.num_local();
   // Per-node sums of |u_jk . S_jk| / 2 and a_jk nu_jk over the edges (each edge feeds both ends).
   scratch.assign(2 * static_cast<std::size_t>(n), 0.0);
@@ -43,20 +44,20 @@ StabilityRates rates(const LocalMesh& mesh, const std::vector<double>& weights, 
 }
 }  // namespace
 
-StabilityRates stability_rates(const LocalMesh& mesh, const std::vector<double>& weights, double nu,
-                               const VectorField& u, std::vector<double>& scratch) {
+StabilityRates stability_rates(const mesh::LocalMesh& mesh, const std::vector<double>& weights,
+                               double nu, const VectorField& u, std::vector<double>& scratch) {
   return rates(
       mesh, weights, [](int) { return 1.0; }, nu, u, scratch);
 }
 
-StabilityRates stability_rates(const LocalMesh& mesh, const std::vector<double>& weights,
+StabilityRates stability_rates(const mesh::LocalMesh& mesh, const std::vector<double>& weights,
                                const ScalarField& nu, const VectorField& u,
                                std::vector<double>& scratch) {
   return rates(
       mesh, weights, [&nu](int j) { return nu[j]; }, 1.0, u, scratch);
 }
 
-double kinetic_energy(const LocalMesh& mesh, double rho, const VectorField& u) {
+double kinetic_energy(const mesh::LocalMesh& mesh, double rho, const VectorField& u) {
   double e = 0;
   for (int j = 0; j < mesh.num_owned; ++j) e += mesh.volume[j] * u[j].squaredNorm();
   return 0.5 * rho * mesh.comm.sum(e);
@@ -79,7 +80,7 @@ void q_criterion(const TensorField& grad, ScalarField& q) {
   }
 }
 
-std::string find_bad_state(const LocalMesh& mesh, const VectorField& u, const ScalarField& p,
+std::string find_bad_state(const mesh::LocalMesh& mesh, const VectorField& u, const ScalarField& p,
                            double velocity_limit) {
   // The first bad owned node of this rank, then the one with the lowest dual-node number.
   int bad = -1;

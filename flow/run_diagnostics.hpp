@@ -34,15 +34,15 @@ struct StabilityRates {
 
 // Collective. `weights` are flow::laplacian_weights(mesh), nu the kinematic viscosity;
 // `scratch` is resized to 2 num_local() and reused (no allocation inside the time loop).
-StabilityRates stability_rates(const LocalMesh& mesh, const std::vector<double>& weights, double nu,
-                               const VectorField& u, std::vector<double>& scratch);
+StabilityRates stability_rates(const mesh::LocalMesh& mesh, const std::vector<double>& weights,
+                               double nu, const VectorField& u, std::vector<double>& scratch);
 // The same with the kinematic viscosity `nu` of every local node (ghosts valid).
-StabilityRates stability_rates(const LocalMesh& mesh, const std::vector<double>& weights,
+StabilityRates stability_rates(const mesh::LocalMesh& mesh, const std::vector<double>& weights,
                                const ScalarField& nu, const VectorField& u,
                                std::vector<double>& scratch);
 
 // Collective: 1/2 rho sum_j V_j |u_j|^2 over owned nodes, J.
-double kinetic_energy(const LocalMesh& mesh, double rho, const VectorField& u);
+double kinetic_energy(const mesh::LocalMesh& mesh, double rho, const VectorField& u);
 
 // Vorticity = curl u from the velocity gradient (i, j) = d u_i / d x_j.
 void vorticity(const TensorField& grad, VectorField& omega);
@@ -54,7 +54,7 @@ void q_criterion(const TensorField& grad, ScalarField& q);
 // Collective. Empty when every owned velocity and pressure is finite and |u| <= velocity_limit;
 // otherwise a diagnosis of the bad node with the lowest dual-node number (the same for every
 // partition): the field, the value, the node number and position.
-std::string find_bad_state(const LocalMesh& mesh, const VectorField& u, const ScalarField& p,
+std::string find_bad_state(const mesh::LocalMesh& mesh, const VectorField& u, const ScalarField& p,
                            double velocity_limit);
 
 }  // namespace valsalva::flow

@@ -6,7 +6,7 @@
 
 namespace valsalva::flow {
 
-void viscous_stress(const LocalMesh& mesh, const std::vector<double>& weights,
+void viscous_stress(const mesh::LocalMesh& mesh, const std::vector<double>& weights,
                     const ScalarField& nu, const VectorField& v, const TensorField& grad,
                     VectorField& out) {
   const auto n = static_cast<std::size_t>(mesh.num_local());
@@ -31,7 +31,7 @@ void viscous_stress(const LocalMesh& mesh, const std::vector<double>& weights,
     out[b.node] += nu[b.node] * (grad[b.node] + grad[b.node].transpose()) * b.area;
   for (int i = 0; i < mesh.num_owned; ++i) out[i] /= mesh.volume[i];
   // Ghost accumulations are partial; the owners' values replace them.
-  const_cast<Halo&>(mesh.halo).exchange(out, HaloMode::insert);
+  const_cast<mesh::Halo&>(mesh.halo).exchange(out, mesh::HaloMode::insert);
 }
 
 }  // namespace valsalva::flow

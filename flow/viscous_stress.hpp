@@ -27,7 +27,7 @@ namespace valsalva::flow {
 // `weights`: flow::laplacian_weights(mesh); `nu`: nodal kinematic viscosity (m^2/s) with valid
 // ghost values; `grad`: the gradient of v from flow::gradient() ((i, j) = d v_i / d x_j).
 // Owned and ghost values of `out` are valid on return.
-void viscous_stress(const LocalMesh& mesh, const std::vector<double>& weights,
+void viscous_stress(const mesh::LocalMesh& mesh, const std::vector<double>& weights,
                     const ScalarField& nu, const VectorField& v, const TensorField& grad,
                     VectorField& out);
 

@@ -8,7 +8,7 @@ namespace valsalva::flow {
 
 namespace {
 
-int patch_index(const LocalMesh& mesh, const std::string& patch) {
+int patch_index(const mesh::LocalMesh& mesh, const std::string& patch) {
   const auto it = std::find(mesh.patch_names.begin(), mesh.patch_names.end(), patch);
   if (it == mesh.patch_names.end()) {
     std::string names;
@@ -21,7 +21,7 @@ int patch_index(const LocalMesh& mesh, const std::string& patch) {
 
 }  // namespace
 
-std::vector<WallLoad> wall_loads(const LocalMesh& mesh, const std::string& patch,
+std::vector<WallLoad> wall_loads(const mesh::LocalMesh& mesh, const std::string& patch,
                                  const WallForceInput& in, WallForceMethod method) {
   if (!in.velocity || !in.pressure || !in.velocity_gradient ||
       (method == WallForceMethod::residual && !in.laplacian_weights))
@@ -88,7 +88,7 @@ std::vector<WallLoad> wall_loads(const LocalMesh& mesh, const std::string& patch
   return loads;
 }
 
-Eigen::Vector3d wall_force(const LocalMesh& mesh, const std::string& patch,
+Eigen::Vector3d wall_force(const mesh::LocalMesh& mesh, const std::string& patch,
                            const WallForceInput& in, WallForceMethod method) {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
   for (const auto& l : wall_loads(mesh, patch, in, method)) force += l.force;

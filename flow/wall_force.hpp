@@ -54,13 +54,13 @@ struct WallLoad {
   Eigen::Vector3d force{0, 0, 0};
   Eigen::Vector3d area{0, 0, 0};
 };
-std::vector<WallLoad> wall_loads(const LocalMesh& mesh, const std::string& patch,
+std::vector<WallLoad> wall_loads(const mesh::LocalMesh& mesh, const std::string& patch,
                                  const WallForceInput& in,
                                  WallForceMethod method = WallForceMethod::residual);
 
 // Total force (N) of the fluid on patch `patch` (a name of LocalMesh::patch_names), summed over
 // all ranks (collective). Throws std::invalid_argument for an unknown patch or missing input.
-Eigen::Vector3d wall_force(const LocalMesh& mesh, const std::string& patch,
+Eigen::Vector3d wall_force(const mesh::LocalMesh& mesh, const std::string& patch,
                            const WallForceInput& in,
                            WallForceMethod method = WallForceMethod::residual);
 

@@ -9,6 +9,6 @@
 
 namespace valsalva::ibm {
 
-void settle(const flow::Comm& comm, const std::string& local_error);
+void settle(const core::Comm& comm, const std::string& local_error);
 
 }  // namespace valsalva::ibm

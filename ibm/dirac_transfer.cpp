@@ -28,7 +28,7 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
-DiracTransfer::DiracTransfer(flow::LocalMesh& mesh, const TransferOptions& options)
+DiracTransfer::DiracTransfer(mesh::LocalMesh& mesh, const TransferOptions& options)
     : mesh_(&mesh), options_(options) {
   if (!(options.kernel.width > 0))
     throw std::invalid_argument(
@@ -288,15 +288,15 @@ void DiracTransfer::spread(std::span<const double> marker_force, int components,
       for (std::size_t d = 0; d < c; ++d) f[d] += force[d] * weights_[k].phi;
     }
   }
-  mesh_->halo.exchange(density, components, flow::HaloMode::add);
-  mesh_->halo.exchange(density, components, flow::HaloMode::insert);
+  mesh_->halo.exchange(density, components, mesh::HaloMode::add);
+  mesh_->halo.exchange(density, components, mesh::HaloMode::insert);
 }
 
 void DiracTransfer::interpolate(std::span<double> field, int components,
                                 std::span<double> marker_values) {
   check_sizes("interpolate", marker_values.size(), field.size(), components);
   const auto c = static_cast<std::size_t>(components);
-  mesh_->halo.exchange(field, components, flow::HaloMode::insert);
+  mesh_->halo.exchange(field, components, mesh::HaloMode::insert);
   std::fill(marker_values.begin(), marker_values.end(), 0.0);
   for (const auto& s : supports_) {
     double* value = &marker_values[c * static_cast<std::size_t>(s.marker)];

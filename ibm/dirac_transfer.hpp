@@ -80,7 +80,7 @@ class DiracTransfer {
   };
 
   // The mesh must outlive the transfer (its halo is used for every exchange).
-  explicit DiracTransfer(flow::LocalMesh& mesh, const TransferOptions& options = {});
+  explicit DiracTransfer(mesh::LocalMesh& mesh, const TransferOptions& options = {});
 
   // Collective. Assigns every marker to its evaluating rank and builds the corrected kernel
   // there. Throws the same error on every rank, naming the marker index and position, when a
@@ -109,7 +109,7 @@ class DiracTransfer {
   int num_markers() const { return num_markers_; }
   const std::vector<MarkerSupport>& supports() const { return supports_; }  // this rank's
   const std::vector<Weight>& weights() const { return weights_; }
-  const flow::LocalMesh& mesh() const { return *mesh_; }
+  const mesh::LocalMesh& mesh() const { return *mesh_; }
 
  private:
   // |a - b| up to whole periods.
@@ -121,7 +121,7 @@ class DiracTransfer {
   void check_sizes(const char* what, std::size_t marker_values, std::size_t node_values,
                    int components) const;
 
-  flow::LocalMesh* mesh_;
+  mesh::LocalMesh* mesh_;
   TransferOptions options_;
   structure::BucketGrid grid_;
   double h_max_ = 0.0;

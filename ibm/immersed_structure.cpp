@@ -21,7 +21,7 @@ std::span<Eigen::Vector3d> as_points(Eigen::Matrix3Xd& m) {
 
 }  // namespace
 
-ImmersedStructure::ImmersedStructure(flow::LocalMesh& mesh, ImmersedOptions options)
+ImmersedStructure::ImmersedStructure(mesh::LocalMesh& mesh, ImmersedOptions options)
     : mesh_(mesh),
       options_(options),
       transfer_(mesh, options.transfer),

@@ -113,7 +113,7 @@ struct ImmersedOptions {
 class ImmersedStructure {
  public:
   // The fluid mesh must outlive this object.
-  ImmersedStructure(flow::LocalMesh& mesh, ImmersedOptions options);
+  ImmersedStructure(mesh::LocalMesh& mesh, ImmersedOptions options);
 
   // Adds a solid (before the first step); returns its index. Its markers start at the mesh's
   // reference positions.
@@ -201,7 +201,7 @@ class ImmersedStructure {
   // out = Interp (P) Spread v on the coupled markers (P with `projected`). Collective.
   void coupled_response(const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd& out, bool projected);
 
-  flow::LocalMesh& mesh_;
+  mesh::LocalMesh& mesh_;
   ImmersedOptions options_;
   DiracTransfer transfer_;
   std::vector<std::unique_ptr<ImmersedBody>> bodies_;

@@ -1,13 +1,14 @@
 #include "ibm/rkpm.hpp"
 
-#include <cassert>
+#include "core/check.hpp"
 
 namespace valsalva::ibm {
 
 RkpmResult rkpm_correct(std::span<const Eigen::Vector3d> offset, std::span<const double> psi,
                         std::span<const double> volume, double length_scale, double min_rcond,
                         std::span<double> phi) {
-  assert(offset.size() == psi.size() && psi.size() == volume.size() && phi.size() == psi.size());
+  VALSALVA_DEBUG_CHECK(offset.size() == psi.size() && psi.size() == volume.size() &&
+                       phi.size() == psi.size());
   const double inv = 1.0 / length_scale;
   auto basis = [&](const Eigen::Vector3d& y) {
     return Eigen::Vector4d(1.0, y.x() * inv, y.y() * inv, y.z() * inv);

@@ -40,7 +40,7 @@ std::string hex(std::uint64_t h) {
 
 // Collective: rank 0 runs `action`; its error, if any, is raised on every rank.
 template <class F>
-void on_root(const flow::Comm& comm, F&& action) {
+void on_root(const core::Comm& comm, F&& action) {
   std::string error;
   if (comm.root()) {
     try {
@@ -72,14 +72,14 @@ std::uint64_t row_checksum(std::span<const std::int64_t> rows, std::span<const d
   return sum;
 }
 
-std::uint64_t global_checksum(const flow::Comm& comm, std::uint64_t local) {
+std::uint64_t global_checksum(const core::Comm& comm, std::uint64_t local) {
   std::uint64_t total = 0;
   if (MPI_Allreduce(&local, &total, 1, MPI_UINT64_T, MPI_SUM, comm.get()) != MPI_SUCCESS)
     throw std::runtime_error("checkpoint: MPI_Allreduce of a checksum failed");
   return total;
 }
 
-void write_checksum(h5::File& file, const flow::Comm& comm, const std::string& name,
+void write_checksum(h5::File& file, const core::Comm& comm, const std::string& name,
                     std::span<const std::int64_t> rows, std::span<const double> data, int cols) {
   const std::uint64_t sum = global_checksum(comm, row_checksum(rows, data, cols));
   file.write_attribute("checksum_" + name + "_hi", hi(sum));
@@ -88,7 +88,7 @@ void write_checksum(h5::File& file, const flow::Comm& comm, const std::string& n
 
 // Collective: every rank hashes one contiguous block of rows; throws naming file and dataset
 // when the data no longer match the checksum written with them.
-void verify_checksum(const h5::File& file, const flow::Comm& comm, const std::string& name) {
+void verify_checksum(const h5::File& file, const core::Comm& comm, const std::string& name) {
   const auto dims = file.dims(name);
   const std::int64_t n = dims.at(0);
   const int cols = dims.size() > 1 ? static_cast<int>(dims[1]) : 0;
@@ -110,20 +110,20 @@ void verify_checksum(const h5::File& file, const flow::Comm& comm, const std::st
 
 }  // namespace
 
-std::uint64_t mesh_hash(const flow::Mesh& mesh) {
+std::uint64_t mesh_hash(const mesh::Mesh& mesh) {
   Hasher hash;
   hash.add(static_cast<std::uint64_t>(mesh.num_nodes()));
   for (const auto& x : mesh.nodes)
     for (int c = 0; c < 3; ++c) hash.add(x[c]);
   hash.add(static_cast<std::uint64_t>(mesh.num_cells()));
-  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
+  for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
     hash.add(static_cast<std::uint64_t>(mesh.cell_types[c]));
     for (auto n : mesh.cell(c)) hash.add(static_cast<std::uint64_t>(n));
   }
   return hash.h;
 }
 
-CheckpointWriter::CheckpointWriter(const flow::LocalMesh& local, std::uint64_t mesh_hash,
+CheckpointWriter::CheckpointWriter(const mesh::LocalMesh& local, std::uint64_t mesh_hash,
                                    std::filesystem::path dir, std::string basename, int keep)
     : local_(&local),
       hash_(mesh_hash),
@@ -141,7 +141,7 @@ std::filesystem::path CheckpointWriter::path_of(std::int64_t step) const {
 
 std::filesystem::path CheckpointWriter::write(const flow::FlowState& state, std::int64_t step,
                                               double dt, std::span<const CheckpointArray> extras) {
-  const flow::LocalMesh& local = *local_;
+  const mesh::LocalMesh& local = *local_;
   const auto final_path = path_of(step);
   auto tmp_path = final_path;
   tmp_path += ".tmp";
@@ -187,7 +187,7 @@ std::filesystem::path CheckpointWriter::write(const flow::FlowState& state, std:
   return final_path;
 }
 
-CheckpointArray nodal_checkpoint_array(const std::string& name, const flow::LocalMesh& local,
+CheckpointArray nodal_checkpoint_array(const std::string& name, const mesh::LocalMesh& local,
                                        const flow::ScalarField& field) {
   if (field.size() < static_cast<std::size_t>(local.num_owned))
     throw std::invalid_argument(
@@ -201,13 +201,13 @@ CheckpointArray nodal_checkpoint_array(const std::string& name, const flow::Loca
   return a;
 }
 
-flow::ScalarField read_nodal_array(const CheckpointReader& reader, const flow::LocalMesh& local,
+flow::ScalarField read_nodal_array(const CheckpointReader& reader, const mesh::LocalMesh& local,
                                    const std::string& name) {
   const std::vector<std::int64_t> rows(local.dual_node.begin(), local.dual_node.end());
   return reader.read_array(name, rows);
 }
 
-CheckpointArray replicated_checkpoint_array(const std::string& name, const flow::LocalMesh& local,
+CheckpointArray replicated_checkpoint_array(const std::string& name, const mesh::LocalMesh& local,
                                             const std::vector<double>& values) {
   CheckpointArray a{name, static_cast<std::int64_t>(values.size()), 0, {}, {}};
   if (local.comm.root())
@@ -223,7 +223,7 @@ std::vector<double> read_replicated_array(const CheckpointReader& reader, const 
   return reader.read_array(name, all);
 }
 
-CheckpointArray edge_checkpoint_array(const std::string& name, const flow::LocalMesh& local,
+CheckpointArray edge_checkpoint_array(const std::string& name, const mesh::LocalMesh& local,
                                       const std::vector<double>& field) {
   if (field.size() != local.edges.size())
     throw std::invalid_argument(
@@ -242,7 +242,7 @@ CheckpointArray edge_checkpoint_array(const std::string& name, const flow::Local
   return a;
 }
 
-std::vector<double> read_edge_array(const CheckpointReader& reader, const flow::LocalMesh& local,
+std::vector<double> read_edge_array(const CheckpointReader& reader, const mesh::LocalMesh& local,
                                     const std::string& name) {
   const std::vector<std::int64_t> rows(local.global_edge.begin(), local.global_edge.end());
   std::vector<double> values = reader.read_array(name, rows);
@@ -267,7 +267,7 @@ std::optional<std::filesystem::path> latest_checkpoint(const std::filesystem::pa
   return best;
 }
 
-CheckpointReader::CheckpointReader(const flow::LocalMesh& local, std::uint64_t mesh_hash,
+CheckpointReader::CheckpointReader(const mesh::LocalMesh& local, std::uint64_t mesh_hash,
                                    std::filesystem::path path)
     : local_(&local), file_(local.comm.get(), std::move(path), h5::Mode::read) {
   const std::string where = fmt::format("checkpoint '{}'", file_.path().string());
@@ -295,7 +295,7 @@ CheckpointReader::CheckpointReader(const flow::LocalMesh& local, std::uint64_t m
 }
 
 void CheckpointReader::read_state(flow::FlowState& state) const {
-  const flow::LocalMesh& local = *local_;
+  const mesh::LocalMesh& local = *local_;
   const std::span<const std::int64_t> rows(local.dual_node.data(), local.dual_node.size());
   verify_checksum(file_, local.comm, "velocity");
   verify_checksum(file_, local.comm, "pressure");

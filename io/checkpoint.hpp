@@ -40,7 +40,7 @@ inline constexpr int checkpoint_format_version = 2;
 
 // 64-bit hash of node coordinates (bit patterns), cell types and connectivity: identifies the
 // mesh a checkpoint belongs to independently of the partition. Same value on every rank.
-std::uint64_t mesh_hash(const flow::Mesh& mesh);
+std::uint64_t mesh_hash(const mesh::Mesh& mesh);
 
 // A named array saved with the state: `rows` are this rank's global row ids (unique over ranks)
 // in a numbering of the caller's choice with `global_rows` rows; `cols` == 0 means 1-D.
@@ -63,7 +63,7 @@ struct CheckpointInfo {
 
 class CheckpointWriter {
  public:
-  CheckpointWriter(const flow::LocalMesh& local, std::uint64_t mesh_hash, std::filesystem::path dir,
+  CheckpointWriter(const mesh::LocalMesh& local, std::uint64_t mesh_hash, std::filesystem::path dir,
                    std::string basename = "checkpoint", int keep = 2);
 
   // Collective. Writes the owned nodes' velocity and pressure and the extra arrays; returns the
@@ -74,7 +74,7 @@ class CheckpointWriter {
   std::filesystem::path path_of(std::int64_t step) const;
 
  private:
-  const flow::LocalMesh* local_;
+  const mesh::LocalMesh* local_;
   std::uint64_t hash_;
   std::filesystem::path dir_;
   std::string basename_;
@@ -84,24 +84,24 @@ class CheckpointWriter {
 
 // A nodal field (owned values of `field`, local order) as an extra array `name` with rows by
 // dual node, and its inverse: every local node's value (owned and ghosts) of that array.
-CheckpointArray nodal_checkpoint_array(const std::string& name, const flow::LocalMesh& local,
+CheckpointArray nodal_checkpoint_array(const std::string& name, const mesh::LocalMesh& local,
                                        const flow::ScalarField& field);
 class CheckpointReader;
-flow::ScalarField read_nodal_array(const CheckpointReader& reader, const flow::LocalMesh& local,
+flow::ScalarField read_nodal_array(const CheckpointReader& reader, const mesh::LocalMesh& local,
                                    const std::string& name);
 
 // An edge field (one value per local edge, LocalMesh::edges orientation, e.g. the face flux of
 // flow::ProjectionRK4) as an extra array with rows by global edge (DualMetrics::edges, its
 // orientation), each edge written by the rank owning its first node; and its inverse: every
 // local edge's value. Collective.
-CheckpointArray edge_checkpoint_array(const std::string& name, const flow::LocalMesh& local,
+CheckpointArray edge_checkpoint_array(const std::string& name, const mesh::LocalMesh& local,
                                       const std::vector<double>& field);
-std::vector<double> read_edge_array(const CheckpointReader& reader, const flow::LocalMesh& local,
+std::vector<double> read_edge_array(const CheckpointReader& reader, const mesh::LocalMesh& local,
                                     const std::string& name);
 
 // A small array that every rank holds alike (e.g. the lumped outlets' states), written by rank 0
 // as one 1-D row per value, and its inverse (every rank reads all of it).
-CheckpointArray replicated_checkpoint_array(const std::string& name, const flow::LocalMesh& local,
+CheckpointArray replicated_checkpoint_array(const std::string& name, const mesh::LocalMesh& local,
                                             const std::vector<double>& values);
 std::vector<double> read_replicated_array(const CheckpointReader& reader, const std::string& name);
 
@@ -113,7 +113,7 @@ class CheckpointReader {
  public:
   // Collective. Throws std::runtime_error naming the file when it cannot be opened, has another
   // format version, or was written for another mesh (node count or hash differ).
-  CheckpointReader(const flow::LocalMesh& local, std::uint64_t mesh_hash,
+  CheckpointReader(const mesh::LocalMesh& local, std::uint64_t mesh_hash,
                    std::filesystem::path path);
 
   const CheckpointInfo& info() const { return info_; }
@@ -130,7 +130,7 @@ class CheckpointReader {
   std::vector<double> read_array(const std::string& name, std::span<const std::int64_t> rows) const;
 
  private:
-  const flow::LocalMesh* local_;
+  const mesh::LocalMesh* local_;
   h5::File file_;
   CheckpointInfo info_;
 };

@@ -4,14 +4,14 @@
 
 namespace valsalva::io {
 
-FieldOutput::FieldOutput(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
-                         const flow::LocalMesh& local, const std::filesystem::path& dir,
+FieldOutput::FieldOutput(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+                         const mesh::LocalMesh& local, const std::filesystem::path& dir,
                          const std::string& basename) {
-  std::unordered_map<flow::GlobalIndex, int> local_of_dual;
+  std::unordered_map<mesh::GlobalIndex, int> local_of_dual;
   for (int i = 0; i < local.num_owned; ++i) local_of_dual[local.dual_node[i]] = i;
   std::vector<std::int64_t> ids;
   std::vector<Eigen::Vector3d> coords;
-  for (flow::GlobalIndex n = 0; n < mesh.num_nodes(); ++n) {
+  for (mesh::GlobalIndex n = 0; n < mesh.num_nodes(); ++n) {
     auto it = local_of_dual.find(metrics.dual_of_mesh_node[n]);
     if (it == local_of_dual.end()) continue;
     ids.push_back(n);
@@ -20,7 +20,7 @@ FieldOutput::FieldOutput(const flow::Mesh& mesh, const flow::DualMetrics& metric
   }
   std::vector<std::uint8_t> types;
   std::vector<std::int64_t> offsets{0}, nodes;
-  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
+  for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
     const auto cell = mesh.cell(c);
     if (!local_of_dual.contains(metrics.dual_of_mesh_node[cell[0]])) continue;
     types.push_back(static_cast<std::uint8_t>(mesh.cell_types[c]));

@@ -15,8 +15,8 @@ namespace valsalva::io {
 
 class FieldOutput {
  public:
-  FieldOutput(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
-              const flow::LocalMesh& local, const std::filesystem::path& dir,
+  FieldOutput(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+              const mesh::LocalMesh& local, const std::filesystem::path& dir,
               const std::string& basename);
 
   // Fields are local arrays (owned nodes first, as in LocalMesh); only owned values are read.

@@ -76,7 +76,7 @@ struct BlockLayout {
 // Counts are in rows of one MPI datatype each, not in bytes, so that a rank may send more than
 // 2^31 bytes (a checkpoint with whole-mesh statistics: 88 B per node and bin).
 template <class U>
-std::vector<U> exchange(const flow::Comm& comm, std::span<const U> send,
+std::vector<U> exchange(const core::Comm& comm, std::span<const U> send,
                         std::span<const int> send_counts, std::size_t width,
                         std::vector<int>& recv_counts) {
   const int p = comm.size();
@@ -220,7 +220,7 @@ void File::close() {
 }
 
 void settle(MPI_Comm comm, const std::string& local_error) {
-  const flow::Comm world(comm);
+  const core::Comm world(comm);
   if (world.max(std::int64_t(local_error.empty() ? 0 : 1)) == 0) return;
   throw std::runtime_error(local_error.empty() ? "invalid input on another rank" : local_error);
 }
@@ -268,7 +268,7 @@ void read_run(Id file, bool parallel, const std::filesystem::path& path, const s
 // Every rank of a parallel file must create the same dataset shape.
 std::string same_shape(MPI_Comm comm, std::int64_t global_rows, int cols) {
   if (comm == MPI_COMM_NULL) return {};
-  const flow::Comm world(comm);
+  const core::Comm world(comm);
   const std::int64_t rows_hi = world.max(global_rows), rows_lo = -world.max(-global_rows);
   const std::int64_t cols_hi = world.max(std::int64_t(cols)),
                      cols_lo = -world.max(-std::int64_t(cols));
@@ -330,7 +330,7 @@ void File::write_rows(const std::string& name, std::int64_t global_rows, int col
 
   Run run = cover(sorted);
   if (parallel_) {
-    const flow::Comm world(comm_);
+    const core::Comm world(comm_);
     const BlockLayout layout{global_rows, world.size()};
     run = {static_cast<hsize_t>(layout.start(world.rank())),
            static_cast<hsize_t>(layout.start(world.rank() + 1) - layout.start(world.rank()))};
@@ -433,7 +433,7 @@ std::vector<T> File::read_rows(const std::string& name,
       std::copy_n(block.begin() + (unique[i] - run.start) * width, width,
                   values.begin() + i * width);
   } else {  // ask each block's rank for its rows; answers come back in the order asked
-    const flow::Comm world(comm_);
+    const core::Comm world(comm_);
     const BlockLayout layout{shape[0], world.size()};
     const std::vector<int> counts = layout.counts(unique);
     std::vector<int> asked_counts, answer_counts;

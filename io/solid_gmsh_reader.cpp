@@ -32,7 +32,7 @@ std::string group_name(int dim, int tag) {
 }  // namespace
 
 structure::SolidMesh solid_mesh_from_gmsh_model(const std::string& source) {
-  return gmsh_call(source, [&] {
+  return mesh::gmsh_call(source, [&] {
     std::vector<int> types;
     std::vector<std::vector<std::size_t>> tags, nodes;
     gmsh::model::mesh::getElements(types, tags, nodes, 3, -1);
@@ -46,18 +46,18 @@ structure::SolidMesh solid_mesh_from_gmsh_model(const std::string& source) {
         int dim = 0, order = 0, nn = 0, np = 0;
         std::vector<double> local;
         gmsh::model::mesh::getElementProperties(types[t], name, dim, order, nn, local, np);
-        throw MeshFileError(
+        throw mesh::MeshFileError(
             fmt::format("{}: element {} is a {} (Gmsh type {}); solid meshes take only 8-node or "
                         "27-node hexahedra",
                         source, tags[t].front(), name, types[t]));
       }
       if (hex_type && hex_type != types[t])
-        throw MeshFileError(fmt::format("{}: mixes 8-node and 27-node hexahedra (element {})",
-                                        source, tags[t].front()));
+        throw mesh::MeshFileError(fmt::format("{}: mixes 8-node and 27-node hexahedra (element {})",
+                                              source, tags[t].front()));
       hex_type = types[t];
     }
     if (!hex_type)
-      throw MeshFileError(
+      throw mesh::MeshFileError(
           fmt::format("{}: no hexahedra (no 3D mesh, or it is not recombined)", source));
     mesh.order = hex_type == 5 ? HexOrder::q1 : HexOrder::q2;
     const int nen = mesh.nodes_per_element();
@@ -117,7 +117,7 @@ structure::SolidMesh solid_mesh_from_gmsh_model(const std::string& source) {
             const std::size_t* qn = snodes[t].data() + q * stride;
             auto it = face_of.find(sorted({qn[0], qn[1], qn[2], qn[3]}));
             if (it == face_of.end())
-              throw MeshFileError(
+              throw mesh::MeshFileError(
                   fmt::format("{}: quadrangle {} of physical surface '{}' is not a face of any "
                               "hexahedron",
                               source, stags[t][q], name));
@@ -135,11 +135,11 @@ structure::SolidMesh read_solid_gmsh(const std::filesystem::path& path) {
   const std::string source = path.string();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
-    throw MeshFileError(fmt::format(
+    throw mesh::MeshFileError(fmt::format(
         "{}: not a readable mesh file (missing, a directory or a special file)", source));
-  check_msh_counts(path);
-  GmshSession session;
-  gmsh_call(source + ": cannot read the file", [&] { gmsh::open(source); });
+  mesh::check_msh_counts(path);
+  mesh::GmshSession session;
+  mesh::gmsh_call(source + ": cannot read the file", [&] { gmsh::open(source); });
   return solid_mesh_from_gmsh_model(source);
 }
 

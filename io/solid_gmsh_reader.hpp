@@ -14,7 +14,7 @@
 
 namespace valsalva::io {
 
-// Throws io::MeshFileError naming the file, and the element type or face for unsupported input
+// Throws mesh::MeshFileError naming the file, and the element type or face for unsupported input
 // (no hexahedra, mixed Q1/Q2, other volume elements, a surface quadrangle on no hexahedron).
 structure::SolidMesh read_solid_gmsh(const std::filesystem::path& path);
 

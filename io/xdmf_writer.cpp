@@ -19,7 +19,7 @@ static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "Vector3d arrays mu
 namespace {
 
 // MPI_Exscan leaves rank 0's result undefined.
-std::int64_t exclusive_prefix(const flow::Comm& comm, std::int64_t value) {
+std::int64_t exclusive_prefix(const core::Comm& comm, std::int64_t value) {
   std::int64_t before = 0;
   VALSALVA_MPI(MPI_Exscan(&value, &before, 1, MPI_INT64_T, MPI_SUM, comm.get()));
   return comm.rank() == 0 ? 0 : before;
@@ -58,10 +58,10 @@ std::string check_mesh(const std::string& who, std::int64_t global_nodes,
     if (types[c] >= kXdmfCells.size())
       return fmt::format("{}: cell {} has type {}; expected 0 tetra, 1 pyramid, 2 prism, 3 hexa",
                          who, c, int(types[c]));
-    const auto type = static_cast<flow::CellType>(types[c]);
-    if (offsets[c + 1] - offsets[c] != flow::node_count(type))
-      return fmt::format("{}: cell {} ({}) has {} nodes, expected {}", who, c, flow::name(type),
-                         offsets[c + 1] - offsets[c], flow::node_count(type));
+    const auto type = static_cast<mesh::CellType>(types[c]);
+    if (offsets[c + 1] - offsets[c] != mesh::node_count(type))
+      return fmt::format("{}: cell {} ({}) has {} nodes, expected {}", who, c, mesh::name(type),
+                         offsets[c + 1] - offsets[c], mesh::node_count(type));
     for (std::int64_t k = offsets[c]; k < offsets[c + 1]; ++k)
       if (cell_nodes[k] < 0 || cell_nodes[k] >= global_nodes)
         return fmt::format("{}: cell {} has node {} outside [0, {})", who, c, cell_nodes[k],
@@ -95,7 +95,7 @@ XdmfWriter::XdmfWriter(MPI_Comm comm, std::filesystem::path dir, std::string bas
       basename_(std::move(basename)),
       global_nodes_(global_nodes),
       owned_ids_(owned_node_global_ids.begin(), owned_node_global_ids.end()) {
-  const flow::Comm world(comm_);
+  const core::Comm world(comm_);
   rank_ = world.rank();
   const std::string who = fmt::format("XdmfWriter '{}'", (dir_ / basename_).string());
   std::string error;

@@ -33,7 +33,7 @@ struct VectorField {
 class XdmfWriter {
  public:
   // Collective. Writes <basename>_mesh.h5. Cells are the ones this rank owns: cell_types holds
-  // flow::CellType values (0 tetra, 1 pyramid, 2 prism, 3 hexa) with nodes in Gmsh order,
+  // mesh::CellType values (0 tetra, 1 pyramid, 2 prism, 3 hexa) with nodes in Gmsh order,
   // cell_offsets has cells + 1 entries into cell_nodes_global (global node ids).
   XdmfWriter(MPI_Comm comm, std::filesystem::path dir, std::string basename,
              std::int64_t global_nodes, std::span<const std::int64_t> owned_node_global_ids,

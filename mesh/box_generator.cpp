@@ -9,12 +9,12 @@
 
 #include "mesh/mesh_check.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 namespace {
 
-using flow::CellType;
-using flow::GlobalIndex;
+using mesh::CellType;
+using mesh::GlobalIndex;
 using Vec = Eigen::Vector3d;
 
 // Gmsh-ordered hexahedron corners as (i, j, k) offsets.
@@ -53,7 +53,7 @@ class BoxBuilder {
     make_grid_nodes();
   }
 
-  flow::Mesh build() {
+  mesh::Mesh build() {
     const auto [nx, ny, nz] = spec_.cells;
     for (int k = 0; k < nz; ++k)
       for (int j = 0; j < ny; ++j)
@@ -112,7 +112,7 @@ class BoxBuilder {
   void add_oriented(CellType type, std::vector<GlobalIndex> nodes) {
     mesh_.add_cell(type, nodes, 0);
     const GlobalIndex c = mesh_.num_cells() - 1;
-    if (flow::cell_volume(mesh_, c) >= 0) return;
+    if (mesh::cell_volume(mesh_, c) >= 0) return;
     // Mirror the ordering: swap two base nodes (and their top partners for prisms).
     const auto first = mesh_.cell_nodes.begin() + mesh_.cell_offsets[c];
     if (type == CellType::tetra) std::swap(first[1], first[2]);
@@ -153,7 +153,7 @@ class BoxBuilder {
     logical_.push_back({-1, -1, -1});
     const GlobalIndex apex = mesh_.num_nodes() - 1;
     const bool next_is_tetra = spec_.cell_type == "mixed" && type_of_cell(i + 1) == "tetra";
-    for (const auto& f : flow::cell_faces(CellType::hexa)) {
+    for (const auto& f : mesh::cell_faces(CellType::hexa)) {
       const bool plus_x = f == std::vector<int>{1, 2, 6, 5};
       if (plus_x && next_is_tetra) {
         add_oriented(CellType::tetra, {c[1], c[2], c[6], apex});
@@ -186,7 +186,7 @@ class BoxBuilder {
     std::vector<std::vector<GlobalIndex>> faces;
     for (GlobalIndex cidx = 0; cidx < mesh_.num_cells(); ++cidx) {
       const auto cell = mesh_.cell(cidx);
-      for (const auto& f : flow::cell_faces(mesh_.cell_types[cidx])) {
+      for (const auto& f : mesh::cell_faces(mesh_.cell_types[cidx])) {
         std::vector<GlobalIndex> nodes;
         for (int v : f) nodes.push_back(cell[v]);
         auto [it, inserted] = seen.try_emplace(key_of(nodes), 0);
@@ -213,13 +213,13 @@ class BoxBuilder {
   }
 
   const BoxSpec& spec_;
-  flow::Mesh mesh_;
+  mesh::Mesh mesh_;
   std::vector<std::array<int, 3>> logical_;
 };
 
 }  // namespace
 
-flow::Mesh generate_box(const BoxSpec& spec) {
+mesh::Mesh generate_box(const BoxSpec& spec) {
   for (int d = 0; d < 3; ++d) {
     if (spec.cells[d] < 1)
       throw std::invalid_argument(
@@ -239,4 +239,4 @@ flow::Mesh generate_box(const BoxSpec& spec) {
   return BoxBuilder(spec).build();
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

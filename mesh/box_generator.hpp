@@ -11,7 +11,7 @@
 
 #include "mesh/mesh.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 struct BoxSpec {
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();
@@ -24,6 +24,6 @@ struct BoxSpec {
 };
 
 // Throws std::invalid_argument naming the bad parameter.
-flow::Mesh generate_box(const BoxSpec& spec);
+mesh::Mesh generate_box(const BoxSpec& spec);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

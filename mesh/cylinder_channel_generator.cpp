@@ -10,7 +10,7 @@
 
 #include "mesh/gmsh_reader.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 namespace {
 
@@ -48,7 +48,7 @@ void check(const CylinderChannelSpec& s) {
 
 }  // namespace
 
-flow::Mesh generate_cylinder_channel_mesh(const CylinderChannelSpec& s) {
+mesh::Mesh generate_cylinder_channel_mesh(const CylinderChannelSpec& s) {
   check(s);
   const std::string source =
       fmt::format("cylinder_channel(size_near={:g}, size_far={:g}, layers={}, box_size={:g}, {})",
@@ -145,4 +145,4 @@ flow::Mesh generate_cylinder_channel_mesh(const CylinderChannelSpec& s) {
   return mesh_from_gmsh_model(source);
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

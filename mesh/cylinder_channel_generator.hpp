@@ -15,7 +15,7 @@
 
 #include "mesh/mesh.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 struct CylinderChannelSpec {
   double length = 2.2, height = 0.41;                     // m
@@ -33,6 +33,6 @@ struct CylinderChannelSpec {
 
 // Throws std::invalid_argument for an inconsistent spec (cylinder not inside the channel,
 // non-positive sizes, fewer than 3 layers, an empty or outside refinement box).
-flow::Mesh generate_cylinder_channel_mesh(const CylinderChannelSpec& spec);
+mesh::Mesh generate_cylinder_channel_mesh(const CylinderChannelSpec& spec);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

@@ -11,7 +11,7 @@
 #include "mesh/mesh_check.hpp"
 #include "mesh/periodic.hpp"
 
-namespace valsalva::flow {
+namespace valsalva::mesh {
 
 namespace {
 
@@ -231,7 +231,7 @@ void finish_derived_metrics(DualMetrics& m) {
 }  // namespace
 
 double mesh_volume(const Mesh& mesh) {
-  CompensatedSum total;
+  core::CompensatedSum total;
   for (GlobalIndex c = 0; c < mesh.num_cells(); ++c) total.add(cell_volume(mesh, c));
   return total.value();
 }
@@ -314,4 +314,4 @@ DualMetrics compute_dual_metrics(const Mesh& mesh) {
   return m;
 }
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::mesh

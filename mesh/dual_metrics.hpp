@@ -11,7 +11,7 @@
 
 #include "mesh/mesh.hpp"
 
-namespace valsalva::flow {
+namespace valsalva::mesh {
 
 // Symmetric 3x3 stored as xx, yy, zz, xy, xz, yz.
 using SymTensor = std::array<double, 6>;
@@ -53,4 +53,4 @@ DualMetrics compute_dual_metrics(const Mesh& mesh);
 // the dual construction: the reference for dual-volume sums.
 double mesh_volume(const Mesh& mesh);
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::mesh

@@ -11,7 +11,7 @@
 
 #include "mesh/gmsh_reader.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 namespace {
 
@@ -114,16 +114,16 @@ Disk triangulate_disk(double radius, double size, const DiskWallGrading& grading
   });
 }
 
-flow::Mesh extrude_disk(const Disk& disk, const std::vector<double>& z, const std::string& bottom,
+mesh::Mesh extrude_disk(const Disk& disk, const std::vector<double>& z, const std::string& bottom,
                         const std::string& top, const std::string& source) {
   if (z.size() < 2)
     throw std::invalid_argument(source + ": extrude_disk needs at least two z levels");
   for (std::size_t l = 1; l < z.size(); ++l)
     if (!(z[l] > z[l - 1]))
       throw std::invalid_argument(source + ": extrude_disk needs increasing z levels");
-  const auto n = static_cast<flow::GlobalIndex>(disk.nodes.size());
+  const auto n = static_cast<mesh::GlobalIndex>(disk.nodes.size());
   const int layers = static_cast<int>(z.size()) - 1;
-  flow::Mesh mesh;
+  mesh::Mesh mesh;
   mesh.source = source;
   mesh.add_region("fluid");
   const int wall = mesh.add_patch("wall"), zmin = mesh.add_patch(bottom),
@@ -143,18 +143,18 @@ flow::Mesh extrude_disk(const Disk& disk, const std::vector<double>& z, const st
         boundary.emplace_back(t[i], t[(i + 1) % 3]);
   for (int l = 0; l < layers; ++l) {
     for (const auto& t : disk.triangles) {
-      const std::array<flow::GlobalIndex, 6> prism{
+      const std::array<mesh::GlobalIndex, 6> prism{
           at(t[0], l), at(t[1], l), at(t[2], l), at(t[0], l + 1), at(t[1], l + 1), at(t[2], l + 1)};
-      mesh.add_cell(flow::CellType::prism, prism);
+      mesh.add_cell(mesh::CellType::prism, prism);
     }
     for (const auto& [a, b] : boundary) {
-      const std::array<flow::GlobalIndex, 4> quad{at(a, l), at(b, l), at(b, l + 1), at(a, l + 1)};
+      const std::array<mesh::GlobalIndex, 4> quad{at(a, l), at(b, l), at(b, l + 1), at(a, l + 1)};
       mesh.add_face(quad, wall);
     }
   }
   for (const auto& t : disk.triangles) {
-    const std::array<flow::GlobalIndex, 3> lower{at(t[0], 0), at(t[2], 0), at(t[1], 0)};
-    const std::array<flow::GlobalIndex, 3> upper{at(t[0], layers), at(t[1], layers),
+    const std::array<mesh::GlobalIndex, 3> lower{at(t[0], 0), at(t[2], 0), at(t[1], 0)};
+    const std::array<mesh::GlobalIndex, 3> upper{at(t[0], layers), at(t[1], layers),
                                                  at(t[2], layers)};
     mesh.add_face(lower, zmin);
     mesh.add_face(upper, zmax);
@@ -162,4 +162,4 @@ flow::Mesh extrude_disk(const Disk& disk, const std::vector<double>& z, const st
   return mesh;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

@@ -11,7 +11,7 @@
 
 #include "mesh/mesh.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 // Optional refinement of the disk towards its wall (sizes in metres; 0 = off). Why: the Stokes
 // layer of an oscillating pipe flow is thinner than a bulk cell (validation/womersley).
@@ -36,7 +36,7 @@ Disk triangulate_disk(double radius, double size, const DiskWallGrading& grading
 // Prisms between the consecutive levels z[0] < z[1] < ... (every node of a level has exactly
 // that z); region "fluid", patches "wall" (the side, quads facing outwards), `bottom` (z[0])
 // and `top` (z.back()), in that order.
-flow::Mesh extrude_disk(const Disk& disk, const std::vector<double>& z, const std::string& bottom,
+mesh::Mesh extrude_disk(const Disk& disk, const std::vector<double>& z, const std::string& bottom,
                         const std::string& top, const std::string& source);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

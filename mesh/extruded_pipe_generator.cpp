@@ -7,41 +7,37 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/comm.hpp"
 #include "mesh/prism_split.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 namespace {
 
 // Rank 0's disk on every rank of `comm` (an exception on rank 0 is thrown on every rank).
-Disk shared_disk(const ExtrudedPipeSpec& s, const std::string& source, MPI_Comm comm) {
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
+Disk shared_disk(const ExtrudedPipeSpec& s, const std::string& source, MPI_Comm mpi_comm) {
+  const core::Comm comm(mpi_comm);
   Disk disk;
   std::string error;
-  if (rank == 0) try {
+  if (comm.root()) try {
       disk = triangulate_disk(s.radius, s.target_size, s.grading, source);
     } catch (const std::exception& e) {
       error = e.what();
     }
-  long sizes[3] = {static_cast<long>(disk.nodes.size()), static_cast<long>(disk.triangles.size()),
-                   static_cast<long>(error.size())};
-  MPI_Bcast(sizes, 3, MPI_LONG, 0, comm);
-  if (sizes[2] > 0) {
-    error.resize(sizes[2]);
-    MPI_Bcast(error.data(), static_cast<int>(sizes[2]), MPI_CHAR, 0, comm);
-    throw std::invalid_argument(error);
-  }
+  comm.broadcast(error);
+  if (!error.empty()) throw std::invalid_argument(error);
+  int sizes[2] = {static_cast<int>(disk.nodes.size()), static_cast<int>(disk.triangles.size())};
+  comm.broadcast(std::span<int>(sizes));
   disk.nodes.resize(sizes[0]);
   disk.triangles.resize(sizes[1]);
-  MPI_Bcast(disk.nodes.data(), static_cast<int>(2 * sizes[0]), MPI_DOUBLE, 0, comm);
-  MPI_Bcast(disk.triangles.data(), static_cast<int>(3 * sizes[1]), MPI_INT, 0, comm);
+  comm.broadcast(std::span<double>(disk.nodes.data()->data(), 2 * disk.nodes.size()));
+  comm.broadcast(std::span<int>(disk.triangles.data()->data(), 3 * disk.triangles.size()));
   return disk;
 }
 
 }  // namespace
 
-flow::Mesh generate_extruded_pipe_mesh(const ExtrudedPipeSpec& s, MPI_Comm comm) {
+mesh::Mesh generate_extruded_pipe_mesh(const ExtrudedPipeSpec& s, MPI_Comm comm) {
   for (const auto& [name, value] :
        {std::pair{"radius", s.radius}, {"length", s.length}, {"target_size", s.target_size}})
     if (!(value > 0.0) || !std::isfinite(value))
@@ -64,4 +60,4 @@ flow::Mesh generate_extruded_pipe_mesh(const ExtrudedPipeSpec& s, MPI_Comm comm)
   return split_prisms_to_tetrahedra(extrude_disk(disk, z, "inlet", "outlet", source));
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

@@ -13,7 +13,7 @@
 #include "mesh/extruded_disk.hpp"
 #include "mesh/mesh.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 struct ExtrudedPipeSpec {
   double radius = 1;        // m
@@ -27,6 +27,6 @@ struct ExtrudedPipeSpec {
 // Gmsh's 2D BoundaryLayer rows are not deterministic (measured: the same spec gives different
 // nodes in two calls), while every rank must hold the same mesh. Throws
 // std::invalid_argument naming the bad parameter.
-flow::Mesh generate_extruded_pipe_mesh(const ExtrudedPipeSpec& spec, MPI_Comm comm = MPI_COMM_SELF);
+mesh::Mesh generate_extruded_pipe_mesh(const ExtrudedPipeSpec& spec, MPI_Comm comm = MPI_COMM_SELF);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

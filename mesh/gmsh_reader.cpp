@@ -15,22 +15,22 @@
 
 #include "mesh/msh_counts.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 namespace {
 
 std::atomic<bool> session_open{false};
 
 // Gmsh element type numbers (Gmsh reference manual, "MSH file format").
-std::optional<flow::CellType> cell_type_of(int gmsh_type) {
+std::optional<mesh::CellType> cell_type_of(int gmsh_type) {
   switch (gmsh_type) {
     case 4:
-      return flow::CellType::tetra;
+      return mesh::CellType::tetra;
     case 5:
-      return flow::CellType::hexa;
+      return mesh::CellType::hexa;
     case 6:
-      return flow::CellType::prism;
+      return mesh::CellType::prism;
     case 7:
-      return flow::CellType::pyramid;
+      return mesh::CellType::pyramid;
     default:
       return std::nullopt;
   }
@@ -73,12 +73,12 @@ class NodeNumbering {
                                         tags[i], at(std::size_t(earlier)), at(i)));
       }
       if (dense_)
-        index_[tags[i]] = static_cast<flow::GlobalIndex>(i);
+        index_[tags[i]] = static_cast<mesh::GlobalIndex>(i);
       else
-        sparse_[tags[i]] = static_cast<flow::GlobalIndex>(i);
+        sparse_[tags[i]] = static_cast<mesh::GlobalIndex>(i);
     }
   }
-  flow::GlobalIndex operator()(std::size_t tag) const {
+  mesh::GlobalIndex operator()(std::size_t tag) const {
     if (dense_) return tag < index_.size() ? index_[tag] : -1;
     auto it = sparse_.find(tag);
     return it == sparse_.end() ? -1 : it->second;
@@ -86,14 +86,14 @@ class NodeNumbering {
 
  private:
   bool dense_ = true;
-  std::vector<flow::GlobalIndex> index_;
-  std::unordered_map<std::size_t, flow::GlobalIndex> sparse_;
+  std::vector<mesh::GlobalIndex> index_;
+  std::unordered_map<std::size_t, mesh::GlobalIndex> sparse_;
 };
 
 // Compact node indices of element e (tag element_tag) of a Gmsh element block.
 void element_nodes(const NodeNumbering& number, const std::vector<std::size_t>& node_tags,
                    std::size_t element_tag, std::size_t e, int n, const std::string& source,
-                   std::vector<flow::GlobalIndex>& nodes) {
+                   std::vector<mesh::GlobalIndex>& nodes) {
   nodes.clear();
   for (int k = 0; k < n; ++k) {
     const std::size_t tag = node_tags[e * n + k];
@@ -135,13 +135,13 @@ EntityGroups groups_of_entities(int dim, const std::string& source) {
   return result;
 }
 
-void add_cells(flow::Mesh& mesh, const NodeNumbering& number, const std::string& source) {
+void add_cells(mesh::Mesh& mesh, const NodeNumbering& number, const std::string& source) {
   const auto groups = groups_of_entities(3, source);
   for (const auto& name : groups.names) mesh.add_region(name);
   const auto& regions = groups.group_of;
   gmsh::vectorpair entities;
   gmsh::model::getEntities(entities, 3);
-  std::vector<flow::GlobalIndex> nodes;
+  std::vector<mesh::GlobalIndex> nodes;
   for (const auto& [dim, entity] : entities) {
     auto group = regions.find(entity);
     // Volumes outside every physical group (files without groups) form the region "domain".
@@ -156,7 +156,7 @@ void add_cells(flow::Mesh& mesh, const NodeNumbering& number, const std::string&
             "{}: element {} is of unsupported type {}; only linear tetrahedra, hexahedra, "
             "prisms and pyramids are supported",
             source, tags[t].front(), gmsh_type_name(types[t])));
-      const int n = flow::node_count(*type);
+      const int n = mesh::node_count(*type);
       for (std::size_t e = 0; e < tags[t].size(); ++e) {
         element_nodes(number, node_tags[t], tags[t][e], e, n, source, nodes);
         mesh.add_cell(*type, nodes, region);
@@ -165,9 +165,9 @@ void add_cells(flow::Mesh& mesh, const NodeNumbering& number, const std::string&
   }
 }
 
-void add_boundary_faces(flow::Mesh& mesh, const NodeNumbering& number, const std::string& source) {
+void add_boundary_faces(mesh::Mesh& mesh, const NodeNumbering& number, const std::string& source) {
   // Surfaces outside every physical group (internal or untagged) are not boundary patches.
-  std::vector<flow::GlobalIndex> nodes;
+  std::vector<mesh::GlobalIndex> nodes;
   const auto groups = groups_of_entities(2, source);
   for (const auto& name : groups.names) mesh.add_patch(name);
   for (const auto& [entity, patch_name] : groups.group_of) {
@@ -231,9 +231,9 @@ GmshSession::~GmshSession() {
   session_open = false;
 }
 
-flow::Mesh mesh_from_gmsh_model(const std::string& source) {
+mesh::Mesh mesh_from_gmsh_model(const std::string& source) {
   return gmsh_call(source, [&] {
-    flow::Mesh mesh;
+    mesh::Mesh mesh;
     mesh.source = source;
     std::vector<std::size_t> tags;
     std::vector<double> coords, parametric;
@@ -251,7 +251,7 @@ flow::Mesh mesh_from_gmsh_model(const std::string& source) {
   });
 }
 
-flow::Mesh read_gmsh(const std::filesystem::path& path) {
+mesh::Mesh read_gmsh(const std::filesystem::path& path) {
   const std::string source = path.string();
   check_complete(path);
   check_msh_counts(path);
@@ -273,4 +273,4 @@ void generate_deterministic_mesh(int dimension) {
   gmsh::model::mesh::generate(dimension);
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

@@ -17,17 +17,17 @@
 #include "mesh/mesh.hpp"
 #include "mesh/mesh_check.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 // A mesh file that cannot be read or holds something we do not support.
-class MeshFileError : public flow::MeshError {
+class MeshFileError : public mesh::MeshError {
  public:
-  using flow::MeshError::MeshError;
+  using mesh::MeshError::MeshError;
 };
 
 // Reads a Gmsh mesh. Nodes are renumbered 0..n-1 in file order; cells keep Gmsh node order.
 // Throws MeshFileError naming the file (and the element tag and type for unsupported elements).
-flow::Mesh read_gmsh(const std::filesystem::path& path);
+mesh::Mesh read_gmsh(const std::filesystem::path& path);
 
 // Scoped Gmsh API use: initialise (no config files, silent, one thread) and finalise on exit.
 // Gmsh is one global, non-thread-safe state, so sessions may not nest or overlap.
@@ -53,8 +53,8 @@ decltype(auto) gmsh_call(const std::string& context, F&& f) {
 // random seed and no curvature-driven sizes, so that the same model gives the same mesh.
 void generate_deterministic_mesh(int dimension);
 
-// Converts the mesh of the current Gmsh model (inside a GmshSession) into a flow::Mesh;
+// Converts the mesh of the current Gmsh model (inside a GmshSession) into a mesh::Mesh;
 // `source` names the file or generator in error messages and in Mesh::source.
-flow::Mesh mesh_from_gmsh_model(const std::string& source);
+mesh::Mesh mesh_from_gmsh_model(const std::string& source);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

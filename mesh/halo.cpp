@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-namespace valsalva::flow {
+namespace valsalva::mesh {
 
 Halo::Halo(MPI_Comm comm, std::vector<Neighbour> neighbours)
     : comm_(comm), neighbours_(std::move(neighbours)) {
@@ -62,4 +62,4 @@ void Halo::finish() {
   active_ = false;
 }
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::mesh

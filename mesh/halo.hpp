@@ -10,7 +10,7 @@
 
 #include "core/comm.hpp"
 
-namespace valsalva::flow {
+namespace valsalva::mesh {
 
 enum class HaloMode { insert, add };
 
@@ -52,4 +52,4 @@ class Halo {
   bool active_ = false;
 };
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::mesh

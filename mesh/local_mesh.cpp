@@ -7,7 +7,7 @@
 #include <numeric>
 #include <stdexcept>
 
-namespace valsalva::flow {
+namespace valsalva::mesh {
 
 namespace {
 
@@ -52,7 +52,7 @@ std::vector<int> metis_partition(const DualMetrics& m, int parts) {
 
 }  // namespace
 
-std::vector<int> partition_nodes(const DualMetrics& metrics, const Comm& comm,
+std::vector<int> partition_nodes(const DualMetrics& metrics, const core::Comm& comm,
                                  const std::string& method) {
   const GlobalIndex n = metrics.num_nodes();
   std::vector<int> part(static_cast<std::size_t>(n), 0);
@@ -68,7 +68,7 @@ std::vector<int> partition_nodes(const DualMetrics& metrics, const Comm& comm,
     throw std::invalid_argument(
         fmt::format("partition method '{}' is not one of metis, block", method));
   if (comm.root()) part = metis_partition(metrics, comm.size());
-  VALSALVA_MPI(MPI_Bcast(part.data(), static_cast<int>(n), MPI_INT, 0, comm.get()));
+  comm.broadcast(std::span<int>(part.data(), n));
   return part;
 }
 
@@ -77,8 +77,8 @@ LocalMesh distribute(const Mesh& mesh, const DualMetrics& m, MPI_Comm mpi_comm,
   if (options.ghost_layers < 1)
     throw std::invalid_argument("partition: ghost_layers must be at least 1");
   LocalMesh local;
-  local.comm = Comm(mpi_comm);
-  const Comm& comm = local.comm;
+  local.comm = core::Comm(mpi_comm);
+  const core::Comm& comm = local.comm;
   const GlobalIndex n = m.num_nodes();
   const std::vector<int> part = partition_nodes(m, comm, options.method);
 
@@ -204,4 +204,4 @@ LocalMesh distribute(const Mesh& mesh, const DualMetrics& m, MPI_Comm mpi_comm,
   return local;
 }
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::mesh

@@ -12,7 +12,7 @@
 #include "mesh/halo.hpp"
 #include "mesh/mesh.hpp"
 
-namespace valsalva::flow {
+namespace valsalva::mesh {
 
 struct PartitionOptions {
   int ghost_layers = 2;          // the 4th-order scheme and the IBM kernels need >= 2
@@ -20,7 +20,7 @@ struct PartitionOptions {
 };
 
 struct LocalMesh {
-  Comm comm;
+  core::Comm comm;
   int num_owned = 0;                   // local nodes [0, num_owned) are owned
   std::vector<GlobalIndex> global_id;  // hypre numbering; owned ids are contiguous
   GlobalIndex first_owned = 0;         // global id of local node 0
@@ -65,7 +65,7 @@ LocalMesh distribute(const Mesh& mesh, const DualMetrics& metrics, MPI_Comm comm
                      const PartitionOptions& options = {});
 
 // Owner rank of every dual node (same on all ranks); exposed for tests and output.
-std::vector<int> partition_nodes(const DualMetrics& metrics, const Comm& comm,
+std::vector<int> partition_nodes(const DualMetrics& metrics, const core::Comm& comm,
                                  const std::string& method);
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::mesh

@@ -4,7 +4,7 @@
 #include <array>
 #include <stdexcept>
 
-namespace valsalva::flow {
+namespace valsalva::mesh {
 
 int node_count(CellType type) {
   switch (type) {
@@ -108,4 +108,4 @@ int Mesh::add_region(const std::string& region) {
   return static_cast<int>(region_names.size()) - 1;
 }
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::mesh

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-namespace valsalva::flow {
+namespace valsalva::mesh {
 
 using GlobalIndex = std::int64_t;
 
@@ -67,4 +67,4 @@ struct Mesh {
   int add_region(const std::string& name);  // returns existing index if present
 };
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::mesh

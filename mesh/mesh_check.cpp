@@ -12,7 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
-namespace valsalva::flow {
+namespace valsalva::mesh {
 namespace {
 
 // Calls f(volume, local face, global node) for every sub-tetrahedron of cell c.
@@ -300,4 +300,4 @@ void check_mesh(const Mesh& mesh) {
   check_boundary_covered(mesh, faces);
 }
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::mesh

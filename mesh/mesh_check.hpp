@@ -1,4 +1,4 @@
-// Validity checks of a flow::Mesh, and the cell geometry they rest on.
+// Validity checks of a mesh::Mesh, and the cell geometry they rest on.
 //
 // Cell volumes use the decomposition the median-dual metrics use: every cell is split into
 // sub-tetrahedra (x_a, edge midpoint, face centroid, cell centroid), two per face edge, so a
@@ -14,7 +14,7 @@
 
 #include "mesh/mesh.hpp"
 
-namespace valsalva::flow {
+namespace valsalva::mesh {
 
 // A mesh that is not usable: the message names mesh.source, the cell/face/node and the problem.
 class MeshError : public std::runtime_error {
@@ -42,4 +42,4 @@ Eigen::Vector3d face_area(const Mesh& mesh, std::span<const GlobalIndex> face_no
 // Longest edge of cell c (edges taken from its faces).
 double longest_edge(const Mesh& mesh, GlobalIndex c);
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::mesh

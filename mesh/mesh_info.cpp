@@ -10,11 +10,11 @@
 #include "mesh/dual_metrics.hpp"
 #include "mesh/mesh_check.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 namespace {
 
-using flow::CellType;
-using flow::GlobalIndex;
+using mesh::CellType;
+using mesh::GlobalIndex;
 
 // For each corner, its three edge neighbours ordered so that det > 0 in a valid cell (Gmsh
 // node order).
@@ -25,7 +25,7 @@ constexpr int prism_corners[6][4] = {{0, 1, 2, 3}, {1, 2, 0, 4}, {2, 0, 1, 5},
 constexpr int pyramid_corners[4][4] = {{0, 1, 3, 4}, {1, 2, 0, 4}, {2, 3, 1, 4}, {3, 0, 2, 4}};
 
 template <std::size_t N>
-double min_scaled_jacobian(const flow::Mesh& mesh, GlobalIndex c, const int (&corners)[N][4]) {
+double min_scaled_jacobian(const mesh::Mesh& mesh, GlobalIndex c, const int (&corners)[N][4]) {
   const auto nodes = mesh.cell(c);
   double worst = std::numeric_limits<double>::infinity();
   for (const auto& k : corners) {
@@ -38,19 +38,19 @@ double min_scaled_jacobian(const flow::Mesh& mesh, GlobalIndex c, const int (&co
   return worst;
 }
 
-double tet_mean_ratio(const flow::Mesh& mesh, GlobalIndex c) {
+double tet_mean_ratio(const mesh::Mesh& mesh, GlobalIndex c) {
   const auto n = mesh.cell(c);
   double sum_l2 = 0;
   for (int a = 0; a < 4; ++a)
     for (int b = a + 1; b < 4; ++b) sum_l2 += (mesh.nodes[n[a]] - mesh.nodes[n[b]]).squaredNorm();
-  const double v = flow::cell_volume(mesh, c);
+  const double v = mesh::cell_volume(mesh, c);
   if (sum_l2 == 0) return 0;
   return std::copysign(12.0 * std::pow(3.0 * std::abs(v), 2.0 / 3.0) / sum_l2, v);
 }
 
 }  // namespace
 
-double cell_quality(const flow::Mesh& mesh, GlobalIndex c) {
+double cell_quality(const mesh::Mesh& mesh, GlobalIndex c) {
   switch (mesh.cell_types[c]) {
     case CellType::tetra:
       return tet_mean_ratio(mesh, c);
@@ -64,7 +64,7 @@ double cell_quality(const flow::Mesh& mesh, GlobalIndex c) {
   return 0;
 }
 
-MeshInfo summarize_mesh(const flow::Mesh& mesh,
+MeshInfo summarize_mesh(const mesh::Mesh& mesh,
                         std::optional<std::span<const double>> dual_volumes) {
   MeshInfo info;
   info.source = mesh.source;
@@ -75,7 +75,7 @@ MeshInfo summarize_mesh(const flow::Mesh& mesh,
   for (GlobalIndex f = 0; f < mesh.num_faces(); ++f) {
     auto& patch = info.patches[mesh.face_patches[f]];
     ++patch.faces;
-    patch.area += flow::face_area(mesh, mesh.face(f)).norm();
+    patch.area += mesh::face_area(mesh, mesh.face(f)).norm();
   }
   for (const auto& name : mesh.region_names) info.regions.emplace_back(name, 0);
   info.min_cell_volume = std::numeric_limits<double>::infinity();
@@ -85,7 +85,7 @@ MeshInfo summarize_mesh(const flow::Mesh& mesh,
     const auto t = static_cast<std::size_t>(mesh.cell_types[c]);
     ++info.cells_of_type[t];
     ++info.regions[mesh.cell_regions[c]].second;
-    const double v = flow::cell_volume(mesh, c);
+    const double v = mesh::cell_volume(mesh, c);
     info.volume += v;
     info.min_cell_volume = std::min(info.min_cell_volume, v);
     info.max_cell_volume = std::max(info.max_cell_volume, v);
@@ -119,7 +119,7 @@ std::string format_mesh_info(const MeshInfo& info) {
     const auto& q = info.quality[t];
     out += fmt::format(
         "  {:<12} {:>10}   quality ({}): min {:.4f} (cell {}), mean {:.4f}, max {:.4f}\n",
-        flow::name(static_cast<CellType>(t)), info.cells_of_type[t], measure[t], q.min,
+        mesh::name(static_cast<CellType>(t)), info.cells_of_type[t], measure[t], q.min,
         q.worst_cell, q.mean, q.max);
   }
   for (const auto& [name, cells] : info.regions)
@@ -135,10 +135,10 @@ std::string format_mesh_info(const MeshInfo& info) {
   return out;
 }
 
-std::string mesh_info(const flow::Mesh& mesh) {
-  flow::check_mesh(mesh);
-  const flow::DualMetrics metrics = flow::compute_dual_metrics(mesh);
+std::string mesh_info(const mesh::Mesh& mesh) {
+  mesh::check_mesh(mesh);
+  const mesh::DualMetrics metrics = mesh::compute_dual_metrics(mesh);
   return format_mesh_info(summarize_mesh(mesh, std::span<const double>(metrics.volume)));
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

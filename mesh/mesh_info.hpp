@@ -19,42 +19,42 @@
 
 #include "mesh/mesh.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 struct QualityStats {
-  flow::GlobalIndex count = 0;
+  mesh::GlobalIndex count = 0;
   double min = 0, max = 0, mean = 0;
-  flow::GlobalIndex worst_cell = -1;
+  mesh::GlobalIndex worst_cell = -1;
 };
 
 struct MeshInfo {
   std::string source;
-  flow::GlobalIndex nodes = 0, cells = 0, boundary_faces = 0;
-  std::array<flow::GlobalIndex, 4> cells_of_type{};  // indexed by flow::CellType
+  mesh::GlobalIndex nodes = 0, cells = 0, boundary_faces = 0;
+  std::array<mesh::GlobalIndex, 4> cells_of_type{};  // indexed by mesh::CellType
   struct Patch {
     std::string name;
-    flow::GlobalIndex faces = 0;
+    mesh::GlobalIndex faces = 0;
     double area = 0;  // sum of |area vector| of its faces
   };
   std::vector<Patch> patches;
-  std::vector<std::pair<std::string, flow::GlobalIndex>> regions;  // name, cells
+  std::vector<std::pair<std::string, mesh::GlobalIndex>> regions;  // name, cells
   double volume = 0;  // sum of cell volumes (sub-tetrahedron decomposition)
   double min_cell_volume = 0, max_cell_volume = 0;
   std::optional<double> min_dual_volume, max_dual_volume, dual_volume_sum;
-  std::array<QualityStats, 4> quality{};  // indexed by flow::CellType
+  std::array<QualityStats, 4> quality{};  // indexed by mesh::CellType
 };
 
 // Quality of cell c as defined above (mean ratio for tetrahedra, scaled Jacobian otherwise).
-double cell_quality(const flow::Mesh& mesh, flow::GlobalIndex c);
+double cell_quality(const mesh::Mesh& mesh, mesh::GlobalIndex c);
 
 // Everything but the dual volumes comes from the mesh; dual volumes (one per dual node, e.g.
-// flow::DualMetrics::volume) are summarised when given.
-MeshInfo summarize_mesh(const flow::Mesh& mesh,
+// mesh::DualMetrics::volume) are summarised when given.
+MeshInfo summarize_mesh(const mesh::Mesh& mesh,
                         std::optional<std::span<const double>> dual_volumes = std::nullopt);
 
 std::string format_mesh_info(const MeshInfo& info);
 
-// check_mesh (throws flow::MeshError on a bad mesh), median-dual metrics, then the report.
-std::string mesh_info(const flow::Mesh& mesh);
+// check_mesh (throws mesh::MeshError on a bad mesh), median-dual metrics, then the report.
+std::string mesh_info(const mesh::Mesh& mesh);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

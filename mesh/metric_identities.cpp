@@ -4,12 +4,12 @@
 
 #include "core/compensated_sum.hpp"
 
-namespace valsalva::flow {
+namespace valsalva::mesh {
 
 MetricIdentities measure_metric_identities(const LocalMesh& local, double mesh_volume_reference,
                                            const Eigen::Vector3d& g) {
   MetricIdentities out;
-  CompensatedSum owned_volume;
+  core::CompensatedSum owned_volume;
   for (int i = 0; i < local.num_owned; ++i) owned_volume.add(local.volume[i]);
   out.volume_error = std::abs(local.comm.sum(owned_volume.value()) - mesh_volume_reference) /
                      mesh_volume_reference;
@@ -36,4 +36,4 @@ MetricIdentities measure_metric_identities(const LocalMesh& local, double mesh_v
   return out;
 }
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::mesh

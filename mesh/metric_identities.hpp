@@ -8,7 +8,7 @@
 
 #include "mesh/local_mesh.hpp"
 
-namespace valsalva::flow {
+namespace valsalva::mesh {
 
 struct MetricIdentities {
   double volume_error = 0;
@@ -16,8 +16,8 @@ struct MetricIdentities {
   double gradient_error = 0;
 };
 
-// Collective over local.comm; `mesh_volume_reference` from flow::mesh_volume.
+// Collective over local.comm; `mesh_volume_reference` from mesh::mesh_volume.
 MetricIdentities measure_metric_identities(const LocalMesh& local, double mesh_volume_reference,
                                            const Eigen::Vector3d& g = {0.3, -1.1, 2.4});
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::mesh

@@ -11,7 +11,7 @@
 #include "core/allocation_limit.hpp"
 #include "mesh/gmsh_reader.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 namespace {
 
@@ -65,10 +65,10 @@ void check_msh_counts(const std::filesystem::path& path) {
             "{}:{}: the {} header declares {:.4g} {}, but the file's {} hold at most {:.0f} "
             "({:g} bytes each at least): a corrupt header, not read (Gmsh would allocate for "
             "all of them)",
-            path.string(), number, s.marker, count, s.what, byte_size(size),
+            path.string(), number, s.marker, count, s.what, core::byte_size(size),
             std::floor(size / least), least));
     }
   }
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

@@ -7,10 +7,10 @@
 
 #include <filesystem>
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 // Throws MeshFileError naming the file, the header line, the count and the most the file's size
 // can hold (every node takes at least 8 bytes in ASCII, 28 in binary; every element 4 and 8).
 void check_msh_counts(const std::filesystem::path& path);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

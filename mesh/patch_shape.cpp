@@ -7,15 +7,15 @@
 
 #include "mesh/mesh_check.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
-PatchShape patch_shape(const flow::Mesh& mesh, int patch) {
+PatchShape patch_shape(const mesh::Mesh& mesh, int patch) {
   Eigen::Vector3d area_vector = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
   double total = 0;
-  for (flow::GlobalIndex f = 0; f < mesh.num_faces(); ++f) {
+  for (mesh::GlobalIndex f = 0; f < mesh.num_faces(); ++f) {
     if (mesh.face_patches[f] != patch) continue;
     const auto nodes = mesh.face(f);
-    const Eigen::Vector3d a = flow::face_area(mesh, nodes);
+    const Eigen::Vector3d a = mesh::face_area(mesh, nodes);
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
     for (auto n : nodes) centre += mesh.nodes[n];
     centre /= static_cast<double>(nodes.size());
@@ -28,7 +28,7 @@ PatchShape patch_shape(const flow::Mesh& mesh, int patch) {
   s.circularity = std::numeric_limits<double>::infinity();  // no faces, or a closed surface
   if (!(total > 0) || !(s.area > 1e-9 * total)) return s;
   const Eigen::Vector3d centroid = moment / total, normal = area_vector / s.area;
-  for (flow::GlobalIndex f = 0; f < mesh.num_faces(); ++f)
+  for (mesh::GlobalIndex f = 0; f < mesh.num_faces(); ++f)
     if (mesh.face_patches[f] == patch)
       for (auto n : mesh.face(f)) {
         const Eigen::Vector3d d = mesh.nodes[n] - centroid;
@@ -38,4 +38,4 @@ PatchShape patch_shape(const flow::Mesh& mesh, int patch) {
   return s;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

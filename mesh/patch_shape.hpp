@@ -7,7 +7,7 @@
 
 #include "mesh/mesh.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 struct PatchShape {
   double area = 0;         // |sum of the faces' area vectors|, m^2 (the projected area)
@@ -15,7 +15,7 @@ struct PatchShape {
   double circularity = 0;  // max_radius / sqrt(area / pi): 1 for a disc, above 1 otherwise
 };
 
-PatchShape patch_shape(const flow::Mesh& mesh, int patch);
+PatchShape patch_shape(const mesh::Mesh& mesh, int patch);
 
 // Largest circularity accepted for a circular-section profile. A regular polygon of N sides
 // inscribed in a circle has sqrt(pi / (N/2 sin(2 pi / N))): 1.100 for a hexagon (the coarsest
@@ -25,4 +25,4 @@ PatchShape patch_shape(const flow::Mesh& mesh, int patch);
 // sqrt(a/b) (refused beyond 1.25:1).
 inline constexpr double max_circularity = 1.12;
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

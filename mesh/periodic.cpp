@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
-namespace valsalva::flow {
+namespace valsalva::mesh {
 
 namespace {
 
@@ -135,4 +135,4 @@ PeriodicMap match_periodic_nodes(const Mesh& mesh, double relative_tolerance) {
   return map;
 }
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::mesh

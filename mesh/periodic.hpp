@@ -9,7 +9,7 @@
 
 #include "mesh/mesh.hpp"
 
-namespace valsalva::flow {
+namespace valsalva::mesh {
 
 struct PeriodicMap {
   // For every mesh node: the representative mesh node, and the shift with
@@ -22,4 +22,4 @@ struct PeriodicMap {
 // Throws MeshTopologyError naming the unmatched node, its position and the patches.
 PeriodicMap match_periodic_nodes(const Mesh& mesh, double relative_tolerance = 1e-8);
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::mesh

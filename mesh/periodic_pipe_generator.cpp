@@ -9,9 +9,9 @@
 #include "mesh/extruded_disk.hpp"
 #include "mesh/prism_split.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
-flow::Mesh generate_periodic_pipe_mesh(const PeriodicPipeSpec& s) {
+mesh::Mesh generate_periodic_pipe_mesh(const PeriodicPipeSpec& s) {
   for (const auto& [name, value] :
        {std::pair{"radius", s.radius}, {"length", s.length}, {"target_size", s.target_size}})
     if (!(value > 0.0) || !std::isfinite(value))
@@ -34,4 +34,4 @@ flow::Mesh generate_periodic_pipe_mesh(const PeriodicPipeSpec& s) {
   return s.split ? split_prisms_to_tetrahedra(mesh) : mesh;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

@@ -12,7 +12,7 @@
 
 #include "mesh/mesh.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 struct PeriodicPipeSpec {
   double radius = 1;       // m
@@ -23,6 +23,6 @@ struct PeriodicPipeSpec {
 };
 
 // Throws std::invalid_argument naming the bad parameter.
-flow::Mesh generate_periodic_pipe_mesh(const PeriodicPipeSpec& spec);
+mesh::Mesh generate_periodic_pipe_mesh(const PeriodicPipeSpec& spec);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

@@ -9,7 +9,7 @@
 
 #include "mesh/gmsh_reader.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 namespace {
 
@@ -30,11 +30,11 @@ void name_pipe_groups(const std::string& error, const std::vector<int>& inlet,
 
 }  // namespace
 
-flow::Mesh generate_pipe_mesh(double radius, double length, double target_size) {
+mesh::Mesh generate_pipe_mesh(double radius, double length, double target_size) {
   return generate_pipe_mesh(radius, length, target_size, PipeMeshOptions{});
 }
 
-flow::Mesh generate_pipe_mesh(double radius, double length, double target_size,
+mesh::Mesh generate_pipe_mesh(double radius, double length, double target_size,
                               const PipeMeshOptions& options) {
   for (const auto& [name, value] :
        {std::pair{"radius", radius}, {"length", length}, {"target_size", target_size}})
@@ -86,7 +86,7 @@ flow::Mesh generate_pipe_mesh(double radius, double length, double target_size,
   return mesh_from_gmsh_model(source);
 }
 
-flow::Mesh generate_bent_pipe_mesh(double radius, double bend_radius, double angle,
+mesh::Mesh generate_bent_pipe_mesh(double radius, double bend_radius, double angle,
                                    double target_size) {
   for (const auto& [name, value] : {std::pair{"radius", radius},
                                     {"bend_radius", bend_radius},
@@ -133,4 +133,4 @@ flow::Mesh generate_bent_pipe_mesh(double radius, double bend_radius, double ang
   return mesh_from_gmsh_model(source);
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

@@ -5,11 +5,11 @@
 
 #include "mesh/mesh.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 // radius, length and target_size in metres; target_size is Gmsh's maximum element size.
 // Throws std::invalid_argument for non-positive or non-finite arguments.
-flow::Mesh generate_pipe_mesh(double radius, double length, double target_size);
+mesh::Mesh generate_pipe_mesh(double radius, double length, double target_size);
 
 // Study knobs of the Gmsh 3D mesher (the defaults are generate_pipe_mesh's). Measured on the
 // Womersley pipe (bench_womersley_study --mesh_stats 1): Delaunay tetrahedra come out coarser
@@ -21,7 +21,7 @@ struct PipeMeshOptions {
   // the distance wall_distance (> 0) from it, m.
   double wall_size = 0, wall_distance = 0;
 };
-flow::Mesh generate_pipe_mesh(double radius, double length, double target_size,
+mesh::Mesh generate_pipe_mesh(double radius, double length, double target_size,
                               const PipeMeshOptions& options);
 
 // A curved pipe: a section of a torus (OpenCASCADE addTorus) of tube radius `radius` whose
@@ -29,7 +29,7 @@ flow::Mesh generate_pipe_mesh(double radius, double length, double target_size,
 // like generate_pipe_mesh (Delaunay, deterministic). Patches "inlet" (the end at angle 0),
 // "outlet" (the end at `angle`), "wall"; region "fluid". Throws std::invalid_argument for
 // non-positive or non-finite arguments, bend_radius <= radius or angle outside (0, 2 pi).
-flow::Mesh generate_bent_pipe_mesh(double radius, double bend_radius, double angle,
+mesh::Mesh generate_bent_pipe_mesh(double radius, double bend_radius, double angle,
                                    double target_size);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

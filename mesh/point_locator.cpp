@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 namespace {
 
-using flow::CellType;
+using mesh::CellType;
 
 Eigen::Vector3d reference_centre(CellType type) {
   switch (type) {
@@ -85,7 +85,7 @@ int shape_functions(CellType type, const Eigen::Vector3d& xi, std::array<double,
   return 0;
 }
 
-PointLocator::PointLocator(const flow::Mesh& mesh) : mesh_(&mesh) {
+PointLocator::PointLocator(const mesh::Mesh& mesh) : mesh_(&mesh) {
   lo_ = Eigen::Vector3d::Constant(INFINITY);
   hi_ = -lo_;
   for (const auto& x : mesh.nodes) lo_ = lo_.cwiseMin(x), hi_ = hi_.cwiseMax(x);
@@ -100,7 +100,7 @@ PointLocator::PointLocator(const flow::Mesh& mesh) : mesh_(&mesh) {
   // Two passes (count, fill) build the CSR bin -> cells, cells in ascending id.
   const std::int64_t nbins = std::int64_t(bins_[0]) * bins_[1] * bins_[2];
   bin_offsets_.assign(nbins + 1, 0);
-  auto for_bins_of_cell = [&](flow::GlobalIndex c, auto&& action) {
+  auto for_bins_of_cell = [&](mesh::GlobalIndex c, auto&& action) {
     Eigen::Vector3d a = Eigen::Vector3d::Constant(INFINITY), b = -a;
     for (auto v : mesh.cell(c)) a = a.cwiseMin(mesh.nodes[v]), b = b.cwiseMax(mesh.nodes[v]);
     const Eigen::Vector3d pad = 1e-6 * (b - a);
@@ -114,16 +114,16 @@ PointLocator::PointLocator(const flow::Mesh& mesh) : mesh_(&mesh) {
         for (int i = i0[0]; i <= i1[0]; ++i)
           action((std::int64_t(k) * bins_[1] + j) * bins_[0] + i);
   };
-  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c)
+  for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c)
     for_bins_of_cell(c, [&](std::int64_t b) { ++bin_offsets_[b + 1]; });
   for (std::int64_t b = 0; b < nbins; ++b) bin_offsets_[b + 1] += bin_offsets_[b];
   bin_cells_.resize(bin_offsets_.back());
   std::vector<std::int64_t> fill(bin_offsets_.begin(), bin_offsets_.end() - 1);
-  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c)
+  for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c)
     for_bins_of_cell(c, [&](std::int64_t b) { bin_cells_[fill[b]++] = c; });
 }
 
-std::optional<PointLocation> PointLocator::try_cell(flow::GlobalIndex c, const Eigen::Vector3d& x,
+std::optional<PointLocation> PointLocator::try_cell(mesh::GlobalIndex c, const Eigen::Vector3d& x,
                                                     double tolerance) const {
   const auto cell = mesh_->cell(c);
   const CellType type = mesh_->cell_types[c];
@@ -182,4 +182,4 @@ std::optional<PointLocation> PointLocator::locate(const Eigen::Vector3d& x,
   return std::nullopt;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

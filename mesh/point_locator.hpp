@@ -17,12 +17,12 @@
 
 #include "mesh/mesh.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 struct PointLocation {
-  flow::GlobalIndex cell = -1;
+  mesh::GlobalIndex cell = -1;
   int count = 0;                             // nodes of the cell
-  std::array<flow::GlobalIndex, 8> nodes{};  // mesh node ids
+  std::array<mesh::GlobalIndex, 8> nodes{};  // mesh node ids
   std::array<double, 8> weights{};           // sum to 1
   Eigen::Vector3d reference{0, 0, 0};        // reference coordinates in the cell
 
@@ -40,27 +40,27 @@ struct PointLocation {
 
 // Shape functions of `type` at reference point `xi` (Gmsh node order) and their derivatives
 // d N_k / d xi_j in row k; returns the node count.
-int shape_functions(flow::CellType type, const Eigen::Vector3d& xi, std::array<double, 8>& n,
+int shape_functions(mesh::CellType type, const Eigen::Vector3d& xi, std::array<double, 8>& n,
                     std::array<Eigen::Vector3d, 8>& dn);
 
 class PointLocator {
  public:
-  explicit PointLocator(const flow::Mesh& mesh);
+  explicit PointLocator(const mesh::Mesh& mesh);
 
   // The containing cell (lowest id if several), or nullopt when the point is outside the mesh.
   // `tolerance` is relative to the cell's reference size (points that far outside still count).
   std::optional<PointLocation> locate(const Eigen::Vector3d& x, double tolerance = 1e-9) const;
 
-  const flow::Mesh& mesh() const { return *mesh_; }
+  const mesh::Mesh& mesh() const { return *mesh_; }
 
  private:
-  std::optional<PointLocation> try_cell(flow::GlobalIndex c, const Eigen::Vector3d& x,
+  std::optional<PointLocation> try_cell(mesh::GlobalIndex c, const Eigen::Vector3d& x,
                                         double tolerance) const;
-  const flow::Mesh* mesh_;
+  const mesh::Mesh* mesh_;
   Eigen::Vector3d lo_, hi_, bin_size_;
   std::array<int, 3> bins_{1, 1, 1};
   std::vector<std::int64_t> bin_offsets_;
-  std::vector<flow::GlobalIndex> bin_cells_;
+  std::vector<mesh::GlobalIndex> bin_cells_;
 };
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

@@ -6,13 +6,13 @@
 
 #include "mesh/mesh_check.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 namespace {
 
-using flow::GlobalIndex;
+using mesh::GlobalIndex;
 
-double signed_volume(const flow::Mesh& mesh, const std::array<GlobalIndex, 4>& t) {
+double signed_volume(const mesh::Mesh& mesh, const std::array<GlobalIndex, 4>& t) {
   const auto& x = mesh.nodes;
   return (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).dot(x[t[3]] - x[t[0]]) / 6;
 }
@@ -43,7 +43,7 @@ std::array<std::array<GlobalIndex, 4>, 3> split_prism(std::span<const GlobalInde
       ++found;
     }
   if (found != 1)
-    throw flow::MeshError("split_prisms_to_tetrahedra: prism " + std::to_string(cell) +
+    throw mesh::MeshError("split_prisms_to_tetrahedra: prism " + std::to_string(cell) +
                           " has cyclic face diagonals and cannot be split without a new node");
   const auto a = [&](int k) { return p[order[k]]; };
   const auto b = [&](int k) { return p[order[k] + 3]; };
@@ -52,8 +52,8 @@ std::array<std::array<GlobalIndex, 4>, 3> split_prism(std::span<const GlobalInde
 
 }  // namespace
 
-flow::Mesh split_prisms_to_tetrahedra(const flow::Mesh& mesh) {
-  flow::Mesh out;
+mesh::Mesh split_prisms_to_tetrahedra(const mesh::Mesh& mesh) {
+  mesh::Mesh out;
   out.nodes = mesh.nodes;
   out.region_names = mesh.region_names;
   out.patch_names = mesh.patch_names;
@@ -62,16 +62,16 @@ flow::Mesh split_prisms_to_tetrahedra(const flow::Mesh& mesh) {
   for (GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
     const auto nodes = mesh.cell(c);
     const auto type = mesh.cell_types[c];
-    if (type == flow::CellType::tetra) {
+    if (type == mesh::CellType::tetra) {
       out.add_cell(type, nodes, mesh.cell_regions[c]);
-    } else if (type == flow::CellType::prism) {
+    } else if (type == mesh::CellType::prism) {
       for (auto t : split_prism(nodes, c)) {
         if (signed_volume(out, t) < 0) std::swap(t[0], t[1]);
-        out.add_cell(flow::CellType::tetra, t, mesh.cell_regions[c]);
+        out.add_cell(mesh::CellType::tetra, t, mesh.cell_regions[c]);
       }
     } else {
-      throw flow::MeshError("split_prisms_to_tetrahedra: " + mesh.source + " cell " +
-                            std::to_string(c) + " is a " + flow::name(type) +
+      throw mesh::MeshError("split_prisms_to_tetrahedra: " + mesh.source + " cell " +
+                            std::to_string(c) + " is a " + mesh::name(type) +
                             "; only tetrahedra and prisms can be split conformingly here");
     }
   }
@@ -94,4 +94,4 @@ flow::Mesh split_prisms_to_tetrahedra(const flow::Mesh& mesh) {
   return out;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

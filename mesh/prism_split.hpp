@@ -10,12 +10,12 @@
 
 #include "mesh/mesh.hpp"
 
-namespace valsalva::io {
+namespace valsalva::mesh {
 
 // Returns `mesh` with every prism replaced by three positively oriented tetrahedra and every
 // quadrilateral boundary face by two triangles; other cells, regions, patches and periodic
-// links are kept. Throws flow::MeshError when the mesh holds pyramids or hexahedra (their quad
+// links are kept. Throws mesh::MeshError when the mesh holds pyramids or hexahedra (their quad
 // faces would no longer match) or a prism whose three diagonals admit no split.
-flow::Mesh split_prisms_to_tetrahedra(const flow::Mesh& mesh);
+mesh::Mesh split_prisms_to_tetrahedra(const mesh::Mesh& mesh);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::mesh

@@ -6,9 +6,9 @@
 #include <stdexcept>
 #include <string>
 
-namespace valsalva::io {
+namespace valsalva::run {
 
-ImmersedCoupling build_immersed_coupling(const ImmersedSetup& setup, flow::LocalMesh& local) {
+ImmersedCoupling build_immersed_coupling(const scene::ImmersedSetup& setup, mesh::LocalMesh& local) {
   ImmersedCoupling c;
   c.structure = std::make_unique<ibm::ImmersedStructure>(local, setup.options);
   auto& ib = *c.structure;
@@ -16,7 +16,7 @@ ImmersedCoupling build_immersed_coupling(const ImmersedSetup& setup, flow::Local
   // Bodies released from a deformed shape (initial_stretch) start there; the bound below is
   // evaluated on it, where the stretched solid is stiffest.
   if (std::any_of(setup.structures.begin(), setup.structures.end(),
-                  [](const StructureSetup& s) { return s.initial.size() > 0; })) {
+                  [](const scene::StructureSetup& s) { return s.initial.size() > 0; })) {
     Eigen::Matrix3Xd x = ib.positions();
     for (int b = 0; b < ib.num_bodies(); ++b) {
       const auto& s = setup.structures[b];
@@ -36,4 +36,4 @@ ImmersedCoupling build_immersed_coupling(const ImmersedSetup& setup, flow::Local
   return c;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::run

@@ -9,7 +9,7 @@
 #include "mesh/local_mesh.hpp"
 #include "scene/scene_keys_structure.hpp"
 
-namespace valsalva::io {
+namespace valsalva::run {
 
 struct ImmersedCoupling {
   std::unique_ptr<ibm::ImmersedStructure> structure;
@@ -19,6 +19,6 @@ struct ImmersedCoupling {
 // Collective. `setup` and `local` must outlive the result (the bodies keep references). Throws
 // std::runtime_error naming the structures' marker ranges when a marker is outside the fluid
 // mesh or beyond its boundary, or when the bound cannot be evaluated.
-ImmersedCoupling build_immersed_coupling(const ImmersedSetup& setup, flow::LocalMesh& local);
+ImmersedCoupling build_immersed_coupling(const scene::ImmersedSetup& setup, mesh::LocalMesh& local);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::run

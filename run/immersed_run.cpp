@@ -9,11 +9,11 @@
 #include "run/immersed_coupling.hpp"
 #include "structure/stress_recovery.hpp"
 
-namespace valsalva::io {
+namespace valsalva::run {
 
 namespace fs = std::filesystem;
 
-ImmersedRun::ImmersedRun(ImmersedSetup setup, flow::LocalMesh& local, const fs::path& run_dir,
+ImmersedRun::ImmersedRun(scene::ImmersedSetup setup, mesh::LocalMesh& local, const fs::path& run_dir,
                          bool in_place, std::int64_t start_step)
     : setup_(std::move(setup)), local_(local), root_(local.comm.rank() == 0) {
   auto coupling = build_immersed_coupling(setup_, local_);
@@ -46,8 +46,8 @@ double ImmersedRun::max_dt(std::int64_t step) {
   return dt_bound_;
 }
 
-flow::StepCoupling ImmersedRun::coupling() {
-  flow::StepCoupling c;
+scene::StepCoupling ImmersedRun::coupling() {
+  scene::StepCoupling c;
   c.body_force = ib_->body_force();
   c.finish_step = [this](const flow::FlowState& s) { ib_->finish_step(s); };
   c.max_dt = [this](std::int64_t step) { return max_dt(step); };
@@ -59,7 +59,7 @@ flow::StepCoupling ImmersedRun::coupling() {
   return c;
 }
 
-void ImmersedRun::write(double time, flow::FieldSet& fields) {
+void ImmersedRun::write(double time, io::FieldSet& fields) {
   ib_->current_force_density(force_density_);  // collective
   fields.vectors.emplace_back("force_density", &force_density_);
   if (!root_) return;
@@ -111,10 +111,10 @@ void ImmersedRun::after_step(double time, std::int64_t step) {
   csv_.flush();
 }
 
-std::vector<CheckpointArray> ImmersedRun::checkpoint_arrays() const {
+std::vector<io::CheckpointArray> ImmersedRun::checkpoint_arrays() const {
   // Replicated markers: rank 0 contributes every row.
-  CheckpointArray a{"marker_positions", ib_->num_markers(), 3, {}, {}};
-  CheckpointArray bound{"immersed_dt_bound", 1, 2, {}, {}};  // bound, step it was evaluated at
+  io::CheckpointArray a{"marker_positions", ib_->num_markers(), 3, {}, {}};
+  io::CheckpointArray bound{"immersed_dt_bound", 1, 2, {}, {}};  // bound, step it was evaluated at
   if (root_) {
     const auto& x = ib_->positions();
     for (int m = 0; m < x.cols(); ++m) {
@@ -124,11 +124,11 @@ std::vector<CheckpointArray> ImmersedRun::checkpoint_arrays() const {
     bound.rows.push_back(0);
     bound.data = {dt_bound_, static_cast<double>(evaluated_at_)};
   }
-  std::vector<CheckpointArray> arrays{a, bound};
+  std::vector<io::CheckpointArray> arrays{a, bound};
   // Where the kernel supports were built (they are kept while markers stay near).
   const auto& at = ib_->located_at();
   if (static_cast<int>(at.size()) == ib_->num_coupled_markers()) {
-    CheckpointArray l{"marker_located_at", ib_->num_coupled_markers(), 3, {}, {}};
+    io::CheckpointArray l{"marker_located_at", ib_->num_coupled_markers(), 3, {}, {}};
     if (root_)
       for (std::size_t m = 0; m < at.size(); ++m) {
         l.rows.push_back(static_cast<std::int64_t>(m));
@@ -138,7 +138,7 @@ std::vector<CheckpointArray> ImmersedRun::checkpoint_arrays() const {
   }
   if (ib_->options().mode != ibm::CouplingMode::implicit) return arrays;
   // The implicit coupling's state: the last marker displacement (its extrapolated force).
-  CheckpointArray d{"marker_last_displacement", ib_->num_markers(), 3, {}, {}};
+  io::CheckpointArray d{"marker_last_displacement", ib_->num_markers(), 3, {}, {}};
   if (root_) {
     const auto& dx = ib_->last_displacement();
     for (int m = 0; m < dx.cols(); ++m) {
@@ -150,7 +150,7 @@ std::vector<CheckpointArray> ImmersedRun::checkpoint_arrays() const {
   return arrays;
 }
 
-void ImmersedRun::restore(const CheckpointReader& in) {
+void ImmersedRun::restore(const io::CheckpointReader& in) {
   if (!in.has("marker_positions"))
     throw std::runtime_error(
         "restart: the checkpoint has no marker positions (it was written by a run without "
@@ -190,4 +190,4 @@ void ImmersedRun::restore(const CheckpointReader& in) {
   evaluated_at_ = static_cast<std::int64_t>(bound[1]);
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::run

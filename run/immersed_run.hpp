@@ -22,14 +22,14 @@
 #include <memory>
 #include <vector>
 
-#include "flow/run_loop.hpp"
+#include "run/run_loop.hpp"
 #include "ibm/immersed_structure.hpp"
 #include "io/checkpoint.hpp"
 #include "io/solid_series.hpp"
 #include "mesh/local_mesh.hpp"
 #include "scene/scene_keys_structure.hpp"
 
-namespace valsalva::io {
+namespace valsalva::run {
 
 class ImmersedRun {
  public:
@@ -37,19 +37,19 @@ class ImmersedRun {
   // bound once; throws std::runtime_error naming the structure when a marker is outside the
   // mesh. `in_place` (a restart in its own run directory) appends to structures.csv and names
   // the Lagrangian series <name>_restart_<start_step>.
-  ImmersedRun(ImmersedSetup setup, flow::LocalMesh& local, const std::filesystem::path& run_dir,
+  ImmersedRun(scene::ImmersedSetup setup, mesh::LocalMesh& local, const std::filesystem::path& run_dir,
               bool in_place, std::int64_t start_step);
 
-  // For flow::RunOptions::coupling (captures `this`).
-  flow::StepCoupling coupling();
+  // For scene::RunOptions::coupling (captures `this`).
+  scene::StepCoupling coupling();
   // Collective: the Lagrangian output of every structure (rank 0 writes) and the force density
   // appended to `fields` (valid until the next call).
-  void write(double time, flow::FieldSet& fields);
+  void write(double time, io::FieldSet& fields);
   // Collective (reductions of nothing: structures are replicated): a row of structures.csv.
   void after_step(double time, std::int64_t step);
 
-  std::vector<CheckpointArray> checkpoint_arrays() const;
-  void restore(const CheckpointReader& in);
+  std::vector<io::CheckpointArray> checkpoint_arrays() const;
+  void restore(const io::CheckpointReader& in);
 
   const ibm::ImmersedStructure& structure() const { return *ib_; }
   double dt_bound() const { return dt_bound_; }
@@ -57,10 +57,10 @@ class ImmersedRun {
 
  private:
   double max_dt(std::int64_t step);
-  ImmersedSetup setup_;
-  flow::LocalMesh& local_;
+  scene::ImmersedSetup setup_;
+  mesh::LocalMesh& local_;
   std::unique_ptr<ibm::ImmersedStructure> ib_;
-  std::vector<SolidSeries> series_;
+  std::vector<io::SolidSeries> series_;
   std::ofstream csv_;
   flow::VectorField force_density_;
   double dt_bound_ = 0;
@@ -68,4 +68,4 @@ class ImmersedRun {
   bool root_ = false;
 };
 
-}  // namespace valsalva::io
+}  // namespace valsalva::run

@@ -28,7 +28,7 @@ const std::string& Phase::current() {
   return current_phase;
 }
 
-std::string mesh_phase(const io::Scene& scene) {
+std::string mesh_phase(const scene::Scene& scene) {
   const auto source = scene.get<std::string>("mesh.source");
   if (source == "gmsh")
     return fmt::format("reading the mesh mesh.file = '{}'", scene.path("mesh.file").string());

@@ -26,6 +26,6 @@ class Phase {
 };
 
 // "reading the mesh mesh.file = 'root.msh'" or "generating the mesh mesh.source = box".
-std::string mesh_phase(const io::Scene& scene);
+std::string mesh_phase(const scene::Scene& scene);
 
 }  // namespace valsalva::run

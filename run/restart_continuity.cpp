@@ -10,9 +10,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/comm.hpp"
 #include "io/hdf5_file.hpp"
 
-namespace valsalva::io {
+namespace valsalva::run {
 
 namespace fs = std::filesystem;
 
@@ -44,7 +45,7 @@ bool may_change(const std::string& key) {
 
 }  // namespace
 
-std::string restart_scene_change(const fs::path& recorded, const Scene& scene) {
+std::string restart_scene_change(const fs::path& recorded, const scene::Scene& scene) {
   toml::table old_table;
   try {
     old_table = toml::parse_file(recorded.string());
@@ -58,7 +59,7 @@ std::string restart_scene_change(const fs::path& recorded, const Scene& scene) {
   std::ostringstream recorded_text;
   recorded_text << old_table;
   try {
-    old_table = parse_scene(recorded_text.str(), scene.file()).table();
+    old_table = scene::parse_scene(recorded_text.str(), scene.file()).table();
   } catch (const std::exception&) {
   }
   std::map<std::string, std::string> before, after;
@@ -108,19 +109,19 @@ std::vector<fs::path> superseded_restart_outputs(const fs::path& dir, std::int64
   return found;
 }
 
-void continue_in_place(const fs::path& dir, const Scene& scene, std::int64_t step, double time,
-                       double dt, const std::vector<std::string>& series, const flow::Comm& comm) {
+void continue_in_place(const fs::path& dir, const scene::Scene& scene, std::int64_t step, double time,
+                       double dt, const std::vector<std::string>& series, const core::Comm& comm) {
   std::string error;
   if (comm.root()) {
     try {
       // A name the table does not know would be continued uncut (its rows after the checkpoint
       // repeated): a programming error, refused rather than skipped.
       for (const auto& name : series)
-        if (std::none_of(appended_series().begin(), appended_series().end(),
-                         [&](const AppendedSeries& s) { return s.file == name; }))
+        if (std::none_of(io::appended_series().begin(), io::appended_series().end(),
+                         [&](const io::AppendedSeries& s) { return s.file == name; }))
           throw std::logic_error(fmt::format(
               "restart: '{}' is not among the appended series that a restart cuts back", name));
-      for (const auto& s : appended_series()) {
+      for (const auto& s : io::appended_series()) {
         if (std::find(series.begin(), series.end(), s.file) == series.end()) continue;
         const fs::path file = dir / s.file;
         if (!fs::exists(file))
@@ -128,7 +129,7 @@ void continue_in_place(const fs::path& dir, const Scene& scene, std::int64_t ste
               "restart: '{}' is missing: the run wrote it and the restart would continue it "
               "without its earlier rows; restore it, or restart into another --out",
               file.string()));
-        if (const auto cut = truncate_series(file, s.by_step, step, time, dt); cut > 0)
+        if (const auto cut = io::truncate_series(file, s.by_step, step, time, dt); cut > 0)
           fmt::print("restart: {} rows of {} after the checkpoint removed\n", cut, s.file);
       }
       for (const auto& p : superseded_restart_outputs(dir, step)) {
@@ -146,7 +147,7 @@ void continue_in_place(const fs::path& dir, const Scene& scene, std::int64_t ste
       error = e.what();
     }
   }
-  h5::settle(comm.get(), error);
+  io::h5::settle(comm.get(), error);
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::run

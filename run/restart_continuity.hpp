@@ -18,7 +18,7 @@
 #include "io/appended_series.hpp"
 #include "scene/scene.hpp"
 
-namespace valsalva::io {
+namespace valsalva::run {
 
 // Keys a restart may change: time.end, time.max_steps, the output intervals and checkpoint
 // settings, run.* (progress and where results go), partition.* (results agree to round-off
@@ -26,7 +26,7 @@ namespace valsalva::io {
 // writes files of its own). Every other difference between the recorded scene
 // (the run directory's resolved_scene.toml) and `scene` is refused: the message names each key
 // and both values (a key only one of them has shows "(absent)"). Empty when none.
-std::string restart_scene_change(const std::filesystem::path& recorded, const Scene& scene);
+std::string restart_scene_change(const std::filesystem::path& recorded, const scene::Scene& scene);
 
 // Outputs of earlier restarts from checkpoint step >= `step` (fields_restart_<S>.xmf and its
 // HDF5 files, structures/<name>_restart_<S>*): they cover times after the checkpoint, which this
@@ -39,8 +39,8 @@ std::vector<std::filesystem::path> superseded_restart_outputs(const std::filesys
 // throws std::logic_error) must exist and is truncated, the superseded restart outputs are removed,
 // and the scene is recorded as resolved_scene_restart_<step>.toml. Rank 0 does the work and prints
 // what it cut; an error is thrown on every rank.
-void continue_in_place(const std::filesystem::path& dir, const Scene& scene, std::int64_t step,
+void continue_in_place(const std::filesystem::path& dir, const scene::Scene& scene, std::int64_t step,
                        double time, double dt, const std::vector<std::string>& series,
-                       const flow::Comm& comm);
+                       const core::Comm& comm);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::run

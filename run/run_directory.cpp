@@ -12,18 +12,11 @@
 #include <string>
 #include <vector>
 
-namespace valsalva::io {
+#include "core/comm.hpp"
+
+namespace valsalva::run {
 namespace fs = std::filesystem;
 namespace {
-
-void check_mpi(int code, const char* what) {
-  if (code != MPI_SUCCESS) {
-    char text[MPI_MAX_ERROR_STRING];
-    int length = 0;
-    MPI_Error_string(code, text, &length);
-    throw RunDirectoryError(fmt::format("{} failed: {}", what, std::string(text, length)));
-  }
-}
 
 // Every name valsalva writes at the top of a run directory (fields, analysis logs and the
 // folders of checkpoints, statistics, samples and Lagrangian meshes); --overwrite deletes these
@@ -146,12 +139,11 @@ std::string create(const fs::path& dir, bool overwrite, const std::string& resol
 
 }  // namespace
 
-RunDirectory RunDirectory::prepare(const fs::path& dir, bool overwrite, const Scene& scene,
+RunDirectory RunDirectory::prepare(const fs::path& dir, bool overwrite, const scene::Scene& scene,
                                    MPI_Comm comm) {
-  int rank = 0;
-  check_mpi(MPI_Comm_rank(comm, &rank), "MPI_Comm_rank");
+  const core::Comm ranks(comm);
   std::string message;
-  if (rank == 0) {
+  if (ranks.root()) {
     try {
       message = create(dir, overwrite, scene.resolved());
     } catch (const std::exception& e) {  // filesystem_error from iterators, bad_alloc
@@ -159,18 +151,15 @@ RunDirectory RunDirectory::prepare(const fs::path& dir, bool overwrite, const Sc
     }
   }
   // Everyone learns rank 0's outcome, so all ranks fail together.
-  int length = static_cast<int>(message.size());
-  check_mpi(MPI_Bcast(&length, 1, MPI_INT, 0, comm), "MPI_Bcast");
-  message.resize(static_cast<std::size_t>(length));
-  if (length > 0) check_mpi(MPI_Bcast(message.data(), length, MPI_CHAR, 0, comm), "MPI_Bcast");
+  ranks.broadcast(message);
   if (!message.empty()) throw RunDirectoryError(message);
   return RunDirectory(dir);
 }
 
-fs::path default_run_path(const Scene& scene) {
+fs::path default_run_path(const scene::Scene& scene) {
   const auto dir = scene.get<std::string>("run.output_dir");
   if (!dir.empty()) return dir;
   return fs::path("runs") / scene.file().stem();
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::run

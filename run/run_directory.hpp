@@ -13,7 +13,7 @@
 
 #include "scene/scene.hpp"
 
-namespace valsalva::io {
+namespace valsalva::run {
 
 class RunDirectoryError : public std::runtime_error {
  public:
@@ -28,7 +28,7 @@ class RunDirectory {
   // typo nor a copied scene or marker can wipe a user's folder). Rank 0 then writes the marker
   // and resolved_scene.toml; the other ranks wait. Every rank returns the same directory or
   // throws the same RunDirectoryError.
-  static RunDirectory prepare(const std::filesystem::path& dir, bool overwrite, const Scene& scene,
+  static RunDirectory prepare(const std::filesystem::path& dir, bool overwrite, const scene::Scene& scene,
                               MPI_Comm comm);
 
   const std::filesystem::path& path() const { return path_; }
@@ -43,6 +43,6 @@ class RunDirectory {
 };
 
 // run.output_dir, or runs/<scene file stem> when it is empty (relative to the working folder).
-std::filesystem::path default_run_path(const Scene& scene);
+std::filesystem::path default_run_path(const scene::Scene& scene);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::run

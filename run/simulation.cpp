@@ -13,6 +13,7 @@
 
 #include "analysis/run_analysis.hpp"
 #include "analysis/section_flux.hpp"
+#include "core/comm.hpp"
 #include "io/checkpoint.hpp"
 #include "io/field_output.hpp"
 #include "mesh/dual_metrics.hpp"
@@ -59,7 +60,7 @@ std::optional<fs::path> restart_checkpoint(const std::string& restart, const fs:
 
 // The period shown as cycle and phase: the first phase-averaged statistics, else the first
 // periodic inlet waveform; 0 when the run has none.
-double cycle_period(const io::AnalysisOptions& analysis,
+double cycle_period(const analysis::AnalysisOptions& analysis,
                     const std::vector<flow::BoundarySpec>& boundary) {
   for (const auto& s : analysis.statistics)
     if (s.phase.period > 0) return s.phase.period;
@@ -69,53 +70,53 @@ double cycle_period(const io::AnalysisOptions& analysis,
   return 0;
 }
 
-flow::Progress progress_mode(const io::Scene& scene, bool quiet) {
+scene::Progress progress_mode(const scene::Scene& scene, bool quiet) {
   const auto mode = scene.get<std::string>("run.progress");
-  if (quiet || mode == "quiet") return flow::Progress::quiet;
-  if (mode == "lines") return flow::Progress::lines;
-  if (mode == "status") return flow::Progress::status;
+  if (quiet || mode == "quiet") return scene::Progress::quiet;
+  if (mode == "lines") return scene::Progress::lines;
+  if (mode == "status") return scene::Progress::status;
   // Open MPI hands its processes a pseudo-terminal even when mpiexec's own output goes to a
   // file, so under mpiexec (OMPI_COMM_WORLD_SIZE, PMI_SIZE) "auto" keeps plain lines.
   const bool mpiexec = std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE");
-  return isatty(fileno(stdout)) && !mpiexec ? flow::Progress::status : flow::Progress::lines;
+  return isatty(fileno(stdout)) && !mpiexec ? scene::Progress::status : scene::Progress::lines;
 }
 
 }  // namespace
 
 struct Simulation::Parts {
-  Parts(const io::Scene& s, MPI_Comm c) : scene(s), comm(c) { MPI_Comm_rank(comm, &rank); }
+  Parts(const scene::Scene& s, MPI_Comm c) : scene(s), comm(c) { MPI_Comm_rank(comm, &rank); }
 
-  io::Scene scene;
+  scene::Scene scene;
   MPI_Comm comm;
   int rank = 0;
   bool print = true;
   fs::path run_path;
   bool in_place = false;
   std::optional<fs::path> checkpoint;
-  flow::Mesh mesh;
-  flow::DualMetrics metrics;
-  flow::LocalMesh local;
-  flow::PartitionOptions partition;
-  io::LesSetup les;
-  std::optional<io::RunAnalysis> analysis;
-  std::optional<io::ImmersedRun> immersed;
+  mesh::Mesh mesh;
+  mesh::DualMetrics metrics;
+  mesh::LocalMesh local;
+  mesh::PartitionOptions partition;
+  scene::LesSetup les;
+  std::optional<analysis::RunAnalysis> analysis;
+  std::optional<run::ImmersedRun> immersed;
   std::optional<valve::ValveMonitor> valve_monitor;
   std::map<std::string, std::unique_ptr<io::FieldOutput>> outputs;
   std::string fields_name = "fields";
-  std::optional<flow::RunLoop> loop;
+  std::optional<run::RunLoop> loop;
   std::uint64_t mesh_hash = 0;
   std::optional<io::CheckpointWriter> writer;
-  std::optional<io::StopSignal> stop;
+  std::optional<run::StopSignal> stop;
   fs::path last_checkpoint;
   Clock::time_point t0 = Clock::now(), last_write = Clock::now();
   StepObserver observer;
   VelocityModifier modifier;
   bool stop_requested = false;  // by the observer
 
-  void write_fields(const std::string& stream, double time, const flow::FieldSet& set);
+  void write_fields(const std::string& stream, double time, const io::FieldSet& set);
   void write_checkpoint(const flow::FlowState& state, std::int64_t step, double dt,
-                        flow::RunHooks::Moment moment);
-  void print_summary(const io::Scene& scene, double rho, double viscosity) const;
+                        run::RunHooks::Moment moment);
+  void print_summary(const scene::Scene& scene, double rho, double viscosity) const;
 };
 
 // Fields go to <basename>.xmf/.h5 in the run directory: "fields" at the output interval,
@@ -123,14 +124,14 @@ struct Simulation::Parts {
 // the sink on every rank. Continuing in place must not replace the earlier fields: they get a
 // name of their own (fields_name).
 void Simulation::Parts::write_fields(const std::string& stream, double time,
-                                     const flow::FieldSet& set) {
+                                     const io::FieldSet& set) {
   const std::string basename = stream == "fields" ? fields_name : stream;
   auto& o = outputs[basename];
   if (!o) o = std::make_unique<io::FieldOutput>(mesh, metrics, local, run_path, basename);
   std::vector<io::FieldOutput::Scalar> scalars;
   std::vector<io::FieldOutput::Vector> vectors;
-  flow::FieldSet all = set;
-  static const std::vector<io::PhaseStatistics> no_statistics;
+  io::FieldSet all = set;
+  static const std::vector<analysis::PhaseStatistics> no_statistics;
   les.add_fields(all, time, *set.state_velocity, analysis ? analysis->statistics() : no_statistics);
   if (immersed && stream == "fields") immersed->write(time, all);  // + the Lagrangian meshes
   for (const auto& [name, f] : all.scalars) scalars.push_back({name, f});
@@ -143,8 +144,8 @@ void Simulation::Parts::write_fields(const std::string& stream, double time,
 // Poisson warm start, the face flux, nu_sgs, the lumped outlets' states and the analysis
 // accumulators.
 void Simulation::Parts::write_checkpoint(const flow::FlowState& state, std::int64_t step, double dt,
-                                         flow::RunHooks::Moment moment) {
-  using Moment = flow::RunHooks::Moment;
+                                         run::RunHooks::Moment moment) {
+  using Moment = run::RunHooks::Moment;
   const auto every_steps =
       static_cast<std::int64_t>(scene.get<int>("output.checkpoint_every_steps"));
   const double every_seconds = 60 * scene.get<double>("output.checkpoint_every_minutes");
@@ -153,7 +154,7 @@ void Simulation::Parts::write_checkpoint(const flow::FlowState& state, std::int6
              (every_steps > 0 && step % every_steps == 0);
   if (every_seconds > 0) {
     int late = seconds_since(last_write) >= every_seconds ? 1 : 0;
-    MPI_Bcast(&late, 1, MPI_INT, 0, comm);
+    core::Comm(comm).broadcast(late);
     due = due || late != 0;
   }
   if (!due) return;
@@ -178,7 +179,7 @@ void Simulation::Parts::write_checkpoint(const flow::FlowState& state, std::int6
   last_write = Clock::now();
 }
 
-void Simulation::Parts::print_summary(const io::Scene& s, double rho, double viscosity) const {
+void Simulation::Parts::print_summary(const scene::Scene& s, double rho, double viscosity) const {
   if (rank != 0 || !print) return;
   fmt::print(
       "mesh: {} nodes ({} dual nodes), {} cells; partition: {} ranks, {} ghost layers, "
@@ -204,13 +205,13 @@ void Simulation::Parts::print_summary(const io::Scene& s, double rho, double vis
   }
 }
 
-Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI_Comm comm)
+Simulation::Simulation(const scene::Scene& scene_in, const RunRequest& request, MPI_Comm comm)
     : parts_(std::make_unique<Parts>(scene_in, comm)) {
   auto& p = *parts_;
   const auto& scene = p.scene;
   p.print = request.print;
   Phase phase("setting up the run of " + scene.file().string());
-  const auto dir = request.out.empty() ? io::default_run_path(scene) : request.out;
+  const auto dir = request.out.empty() ? run::default_run_path(scene) : request.out;
   const bool wipe = request.overwrite || scene.get<bool>("run.overwrite");
   // A restart continues in the run directory of the checkpoint when it is that directory (or
   // "latest"): nothing there is deleted, the logs are appended to and the fields go to a new
@@ -218,7 +219,7 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
   // prepared as for a new run, with the same --overwrite promise.
   p.checkpoint = restart_checkpoint(request.restart, dir);
   p.in_place =
-      p.checkpoint && fs::exists(dir / io::RunDirectory::resolved_scene_name) &&
+      p.checkpoint && fs::exists(dir / run::RunDirectory::resolved_scene_name) &&
       fs::equivalent(fs::absolute(*p.checkpoint).parent_path(), fs::absolute(dir / "checkpoints"));
   if (p.in_place && wipe)
     throw std::runtime_error(fmt::format(
@@ -227,40 +228,40 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
         p.checkpoint->string(), dir.string()));
   if (p.in_place)
     if (const auto change =
-            io::restart_scene_change(dir / io::RunDirectory::resolved_scene_name, scene);
+            run::restart_scene_change(dir / run::RunDirectory::resolved_scene_name, scene);
         !change.empty())
       throw std::runtime_error(change);
 
   // Everything the scene can get wrong is checked before the run directory is touched.
   phase.next(mesh_phase(scene));
-  p.mesh = io::build_mesh(scene, comm);
+  p.mesh = scene::build_mesh(scene, comm);
   phase.next(fmt::format("computing the dual metrics of the mesh ({} nodes, {} cells)",
                          p.mesh.num_nodes(), p.mesh.num_cells()));
-  p.metrics = flow::compute_dual_metrics(p.mesh);
+  p.metrics = mesh::compute_dual_metrics(p.mesh);
   phase.next("checking the scene against the mesh");
-  auto boundary = io::read_boundary_conditions(scene, p.mesh);
-  const auto analysis_options = io::read_analysis_options(scene, p.mesh);
-  auto immersed_setup = io::read_immersed_setup(scene, p.mesh);
-  const auto valve_options = io::read_valve_monitor_options(scene, p.mesh);
-  io::check_les_scene(scene);
-  io::flow_run_options(scene, dir);  // its checks (time step, output volume), before any write
-  io::check_initial_state(scene, p.mesh);
-  io::check_forcing(scene, boundary);
-  io::check_cycle_periods(scene);
-  io::check_step_count(scene, p.metrics);
+  auto boundary = scene::read_boundary_conditions(scene, p.mesh);
+  const auto analysis_options = scene::read_analysis_options(scene, p.mesh);
+  auto immersed_setup = scene::read_immersed_setup(scene, p.mesh);
+  const auto valve_options = scene::read_valve_monitor_options(scene, p.mesh);
+  scene::check_les_scene(scene);
+  scene::flow_run_options(scene, dir);  // its checks (time step, output volume), before any write
+  scene::check_initial_state(scene, p.mesh);
+  scene::check_forcing(scene, boundary);
+  scene::check_cycle_periods(scene);
+  scene::check_step_count(scene, p.metrics);
   p.run_path = dir;  // prepared below, once a checkpoint to restart from has been opened
 
   p.partition.ghost_layers = scene.get<int>("partition.ghost_layers");
   p.partition.method = scene.get<std::string>("partition.method");
   phase.next(fmt::format("partitioning the mesh ({} dual nodes, partition.method = {})",
                          p.metrics.num_nodes(), p.partition.method));
-  p.local = flow::distribute(p.mesh, p.metrics, comm, p.partition);
+  p.local = mesh::distribute(p.mesh, p.metrics, comm, p.partition);
   phase.next(
       fmt::format("setting up the LES model, the analysis and the structures ({} local nodes)",
                   p.local.num_local()));
 
-  auto run_options = io::flow_run_options(scene, p.run_path);
-  p.les = io::les_setup(scene, p.local);  // nu_sgs/nu joins the fields with a model
+  auto run_options = scene::flow_run_options(scene, p.run_path);
+  p.les = scene::les_setup(scene, p.local);  // nu_sgs/nu joins the fields with a model
   run_options.projection.subgrid_viscosity = p.les.subgrid_viscosity;
   run_options.output.progress = progress_mode(scene, request.quiet);
   run_options.output.print = request.print;
@@ -282,7 +283,7 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
                         fmt::format(">= {:.9g}", in->info().time));
   }
   // A checkpoint of another mesh or time is refused before a new run directory is made.
-  if (!p.in_place) io::RunDirectory::prepare(dir, wipe, scene, comm);
+  if (!p.in_place) run::RunDirectory::prepare(dir, wipe, scene, comm);
   if (in) {
     if (p.in_place) {
       std::vector<std::string> series{"log.csv"};
@@ -295,7 +296,7 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
       if (std::any_of(boundary.begin(), boundary.end(),
                       [](const flow::BoundarySpec& b) { return flow::lumped_type(b.type); }))
         series.push_back("outlets.csv");
-      io::continue_in_place(p.run_path, scene, in->info().step, in->info().time, in->info().dt,
+      run::continue_in_place(p.run_path, scene, in->info().step, in->info().time, in->info().dt,
                             series, p.local.comm);
     }
   }
@@ -344,7 +345,7 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
   run_options.boundary = std::move(boundary);
   phase.next(fmt::format("setting up the flow solver and the hypre Poisson matrix ({} local nodes)",
                          p.local.num_local()));
-  auto sink = [&p](const std::string& stream, double time, const flow::FieldSet& set) {
+  auto sink = [&p](const std::string& stream, double time, const io::FieldSet& set) {
     p.write_fields(stream, time, set);
   };
   if (run_options.forcing.type == flow::ForcingSpec::Type::flow_rate) {
@@ -353,12 +354,12 @@ Simulation::Simulation(const io::Scene& scene_in, const RunRequest& request, MPI
     const auto it = std::find_if(sections.begin(), sections.end(), [&](const auto& s) {
       return s.name == run_options.forcing.section;
     });
-    auto cut = std::make_shared<io::SectionFlux>(p.local, *it);
+    auto cut = std::make_shared<analysis::SectionFlux>(p.local, *it);
     run_options.section_flux = [cut](const flow::EdgeField& flux) { return cut->flux(flux); };
   }
   try {
     p.loop.emplace(p.mesh, p.metrics, p.local, run_options, sink);
-  } catch (const flow::RunError& e) {
+  } catch (const run::RunError& e) {
     if (e.key().empty()) throw;
     throw std::runtime_error(scene.location(e.key()).str() + ": " + e.what());
   }
@@ -399,7 +400,7 @@ void Simulation::modify_velocity(VelocityModifier modifier) {
 RunResult Simulation::run() {
   auto& p = *parts_;
   Phase phase("time stepping (fields, analysis and checkpoints written on the way)");
-  flow::RunHooks hooks;
+  run::RunHooks hooks;
   hooks.after_step = [this, &p](const flow::FlowState& state, std::int64_t step) {
     if (p.analysis) p.analysis->sample(state, step, p.loop->face_flux());
     if (p.immersed) p.immersed->after_step(state.time, step);
@@ -412,7 +413,7 @@ RunResult Simulation::run() {
     };
   if (p.writer)
     hooks.checkpoint = [&p](const flow::FlowState& state, std::int64_t step, double dt,
-                            flow::RunHooks::Moment moment) {
+                            run::RunHooks::Moment moment) {
       p.write_checkpoint(state, step, dt, moment);
     };
   hooks.stop_requested = [&p] {
@@ -431,7 +432,7 @@ RunResult Simulation::run() {
   result.run_path = p.run_path;
   try {
     result.summary = p.loop->run();
-  } catch (const flow::RunError& e) {
+  } catch (const run::RunError& e) {
     if (e.key().empty()) throw;
     throw std::runtime_error(p.scene.location(e.key()).str() + ": " + e.what());
   }
@@ -446,25 +447,25 @@ void Simulation::request_stop() const {
   parts_->stop_requested = true;
 }
 
-const flow::Mesh& Simulation::mesh() const {
+const mesh::Mesh& Simulation::mesh() const {
   return parts_->mesh;
 }
-const flow::DualMetrics& Simulation::metrics() const {
+const mesh::DualMetrics& Simulation::metrics() const {
   return parts_->metrics;
 }
-const flow::RunLoop& Simulation::loop() const {
+const run::RunLoop& Simulation::loop() const {
   return *parts_->loop;
 }
 const ibm::ImmersedStructure* Simulation::immersed() const {
   return parts_->immersed ? &parts_->immersed->structure() : nullptr;
 }
-const flow::LocalMesh& Simulation::local() const {
+const mesh::LocalMesh& Simulation::local() const {
   return parts_->local;
 }
 const flow::FlowState& Simulation::state() const {
   return parts_->loop->state();
 }
-const io::RunAnalysis* Simulation::analysis() const {
+const analysis::RunAnalysis* Simulation::analysis() const {
   return parts_->analysis ? &*parts_->analysis : nullptr;
 }
 double Simulation::subgrid_cpu_seconds() const {

@@ -12,7 +12,7 @@
 #include <memory>
 #include <string>
 
-#include "flow/run_loop.hpp"
+#include "run/run_loop.hpp"
 #include "mesh/local_mesh.hpp"
 #include "mesh/mesh.hpp"
 #include "scene/scene.hpp"
@@ -21,7 +21,7 @@ namespace valsalva::ibm {
 class ImmersedStructure;
 }
 
-namespace valsalva::io {
+namespace valsalva::analysis {
 class RunAnalysis;
 }
 
@@ -37,7 +37,7 @@ struct RunRequest {
 };
 
 struct RunResult {
-  flow::RunSummary summary;
+  run::RunSummary summary;
   std::filesystem::path run_path;         // the run directory (log.csv and the rest)
   std::filesystem::path fields_xmf;       // empty without field output
   std::filesystem::path last_checkpoint;  // empty when none was written
@@ -56,8 +56,8 @@ class Simulation {
  public:
   // Checks the whole scene against its mesh before the run directory is touched, then prepares
   // the directory (or continues one in place on a restart) and sets everything up. Throws
-  // io::SceneError / std::runtime_error naming the key, file or checkpoint at fault.
-  Simulation(const io::Scene& scene, const RunRequest& request, MPI_Comm comm = MPI_COMM_WORLD);
+  // scene::SceneError / std::runtime_error naming the key, file or checkpoint at fault.
+  Simulation(const scene::Scene& scene, const RunRequest& request, MPI_Comm comm = MPI_COMM_WORLD);
   ~Simulation();
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
@@ -71,24 +71,24 @@ class Simulation {
   // Before run(): change the velocity after every step (nothing by default).
   void modify_velocity(VelocityModifier modifier);
   // Runs to time.end (or time.max_steps, or a stop signal), writes the analysis results.
-  // Throws flow::RunError as std::runtime_error with the scene key's location when it names one.
+  // Throws run::RunError as std::runtime_error with the scene key's location when it names one.
   RunResult run();
 
   // From an observer: end the run after this step (RunSummary::stopped), e.g. once a
   // validation case's quantity is steady.
   void request_stop() const;  // const: observers receive the simulation read-only
 
-  const flow::Mesh& mesh() const;
-  const flow::DualMetrics& metrics() const;
-  const flow::LocalMesh& local() const;
+  const mesh::Mesh& mesh() const;
+  const mesh::DualMetrics& metrics() const;
+  const mesh::LocalMesh& local() const;
   const flow::FlowState& state() const;
-  const flow::RunLoop& loop() const;
+  const run::RunLoop& loop() const;
   // The immersed structures, or nullptr in a scene without [structure.<name>] tables.
   const ibm::ImmersedStructure* immersed() const;
   const std::filesystem::path& run_path() const;
   // What the scene measures ([wall_shear], [statistics], ...), null when it asks for nothing:
   // e.g. a validation case's observer reading the wall shear stress of the step.
-  const io::RunAnalysis* analysis() const;
+  const analysis::RunAnalysis* analysis() const;
   // Thread CPU time this rank spent in the subgrid model so far, s (0 without [les] model).
   double subgrid_cpu_seconds() const;
 

@@ -5,7 +5,7 @@
 
 #include "core/comm.hpp"
 
-namespace valsalva::io {
+namespace valsalva::run {
 
 namespace {
 
@@ -48,9 +48,7 @@ void StopSignal::clear() {
 }
 
 bool StopSignal::requested(MPI_Comm comm) const {
-  int local = received != 0 ? 1 : 0, any = 0;
-  VALSALVA_MPI(MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_LOR, comm));
-  return any != 0;
+  return core::Comm(comm).any(received != 0);
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::run

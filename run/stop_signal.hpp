@@ -3,13 +3,13 @@
 // that every rank stops at the same step, writes a checkpoint and exits cleanly.
 //
 // How the run loop uses it:
-//   io::StopSignal stop;                       // installs the handlers, restores them on scope
+//   run::StopSignal stop;                       // installs the handlers, restores them on scope
 //   exit for (...) { step(); if (stop.requested(comm)) { ckpt.write(...); break; } }
 #pragma once
 
 #include <mpi.h>
 
-namespace valsalva::io {
+namespace valsalva::run {
 
 class StopSignal {
  public:
@@ -28,4 +28,4 @@ class StopSignal {
   static void clear();
 };
 
-}  // namespace valsalva::io
+}  // namespace valsalva::run

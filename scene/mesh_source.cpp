@@ -15,7 +15,7 @@
 #include "mesh/periodic_pipe_generator.hpp"
 #include "mesh/pipe_generator.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 namespace {
 constexpr double min_mesh_span = 1e-6, max_mesh_span = 1e4;  // m
@@ -23,8 +23,8 @@ constexpr double min_mesh_span = 1e-6, max_mesh_span = 1e4;  // m
 
 namespace {
 
-BoxSpec box_spec(const Scene& scene) {
-  BoxSpec spec;
+mesh::BoxSpec box_spec(const Scene& scene) {
+  mesh::BoxSpec spec;
   const auto origin = scene.get<std::array<double, 3>>("mesh.box.origin");
   const auto length = scene.get<std::array<double, 3>>("mesh.box.length");
   spec.origin = Eigen::Vector3d(origin[0], origin[1], origin[2]);
@@ -33,8 +33,8 @@ BoxSpec box_spec(const Scene& scene) {
   // Each hexahedron holds at least a node (24 bytes), 8 node indices (64), an offset, a type and
   // a region (13), before any split into other cell types or the dual metrics.
   const auto& c = spec.cells;
-  if (const auto problem = allocation_problem(fmt::format("[{}, {}, {}] cells", c[0], c[1], c[2]),
-                                              double(c[0]) * c[1] * c[2], 101);
+  if (const auto problem = core::allocation_problem(
+          fmt::format("[{}, {}, {}] cells", c[0], c[1], c[2]), double(c[0]) * c[1] * c[2], 101);
       !problem.empty())
     throw scene.error("mesh.box.cells", problem);
   spec.cell_type = scene.get<std::string>("mesh.box.cell_type");
@@ -49,20 +49,20 @@ BoxSpec box_spec(const Scene& scene) {
 // has its own pressure null space and the Poisson solve fails far from the cause.
 }  // namespace
 
-std::string disconnected_pieces(const flow::Mesh& mesh) {
-  std::vector<flow::GlobalIndex> parent(static_cast<std::size_t>(mesh.num_nodes()));
-  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<flow::GlobalIndex>(i);
-  auto root = [&](flow::GlobalIndex n) {
+std::string disconnected_pieces(const mesh::Mesh& mesh) {
+  std::vector<mesh::GlobalIndex> parent(static_cast<std::size_t>(mesh.num_nodes()));
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<mesh::GlobalIndex>(i);
+  auto root = [&](mesh::GlobalIndex n) {
     while (parent[n] != n) n = parent[n] = parent[parent[n]];
     return n;
   };
-  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
+  for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
     const auto nodes = mesh.cell(c);
     for (std::size_t k = 1; k < nodes.size(); ++k) parent[root(nodes[k])] = root(nodes[0]);
   }
-  std::vector<flow::GlobalIndex> first_cell;  // one cell of each piece
-  std::vector<flow::GlobalIndex> seen;
-  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
+  std::vector<mesh::GlobalIndex> first_cell;  // one cell of each piece
+  std::vector<mesh::GlobalIndex> seen;
+  for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
     const auto r = root(mesh.cell(c)[0]);
     if (std::find(seen.begin(), seen.end(), r) == seen.end()) {
       seen.push_back(r);
@@ -78,12 +78,12 @@ std::string disconnected_pieces(const flow::Mesh& mesh) {
 
 namespace {}  // namespace
 
-flow::Mesh build_mesh(const Scene& scene, MPI_Comm comm) {
+mesh::Mesh build_mesh(const Scene& scene, MPI_Comm comm) {
   const std::string source = scene.get<std::string>("mesh.source");
-  flow::Mesh mesh;
+  mesh::Mesh mesh;
   if (source == "box") {
     try {
-      mesh = generate_box(box_spec(scene));
+      mesh = mesh::generate_box(box_spec(scene));
     } catch (const std::invalid_argument& e) {
       throw scene.error("mesh.box", e.what());
     }
@@ -91,10 +91,10 @@ flow::Mesh build_mesh(const Scene& scene, MPI_Comm comm) {
     const auto file = scene.path("mesh.file");
     if (!std::filesystem::exists(file))
       throw scene.error("mesh.file", fmt::format("file '{}' does not exist", file.string()));
-    mesh = read_gmsh(file);
+    mesh = mesh::read_gmsh(file);
   } else if (source == "cylinder_channel") {
     const std::string k = "mesh.cylinder_channel.";
-    CylinderChannelSpec spec;
+    mesh::CylinderChannelSpec spec;
     spec.size_near = scene.get<double>(k + "size_near");
     spec.size_far = scene.get<double>(k + "size_far");
     spec.grading_distance = scene.get<double>(k + "grading_distance");
@@ -113,13 +113,13 @@ flow::Mesh build_mesh(const Scene& scene, MPI_Comm comm) {
     spec.box_y1 = scene.get<double>(k + "box_y1");
     spec.box_transition = scene.get<double>(k + "box_transition");
     try {
-      mesh = generate_cylinder_channel_mesh(spec);
+      mesh = mesh::generate_cylinder_channel_mesh(spec);
     } catch (const std::invalid_argument& e) {
       throw scene.error("mesh.cylinder_channel", e.what());
     }
   } else if (source == "extruded_pipe") {
     const std::string k = "mesh.extruded_pipe.";
-    ExtrudedPipeSpec spec;
+    mesh::ExtrudedPipeSpec spec;
     spec.radius = scene.get<double>(k + "radius");
     spec.length = scene.get<double>(k + "length");
     spec.target_size = scene.get<double>(k + "size");
@@ -130,27 +130,27 @@ flow::Mesh build_mesh(const Scene& scene, MPI_Comm comm) {
     spec.grading.layer_ratio = scene.get<double>(k + "layer_ratio");
     spec.grading.layer_thickness = scene.get<double>(k + "layer_thickness");
     try {
-      mesh = generate_extruded_pipe_mesh(spec, comm);
+      mesh = mesh::generate_extruded_pipe_mesh(spec, comm);
     } catch (const std::invalid_argument& e) {
       throw scene.error("mesh.extruded_pipe", e.what());
     }
   } else if (source == "periodic_pipe") {
     const std::string k = "mesh.periodic_pipe.";
-    PeriodicPipeSpec spec;
+    mesh::PeriodicPipeSpec spec;
     spec.radius = scene.get<double>(k + "radius");
     spec.length = scene.get<double>(k + "length");
     spec.target_size = scene.get<double>(k + "size");
     spec.layers = scene.get<int>(k + "layers");
     spec.split = scene.get<std::string>(k + "cells") == "tetra";
     try {
-      mesh = generate_periodic_pipe_mesh(spec);
+      mesh = mesh::generate_periodic_pipe_mesh(spec);
     } catch (const std::invalid_argument& e) {
       throw scene.error("mesh.periodic_pipe", e.what());
     }
   } else {
-    mesh = generate_pipe_mesh(scene.get<double>("mesh.pipe.radius"),
-                              scene.get<double>("mesh.pipe.length"),
-                              scene.get<double>("mesh.pipe.size"));
+    mesh = mesh::generate_pipe_mesh(scene.get<double>("mesh.pipe.radius"),
+                                    scene.get<double>("mesh.pipe.length"),
+                                    scene.get<double>("mesh.pipe.size"));
   }
   const double scale = scene.get<double>("mesh.scale");
   if (scale != 1.0) {
@@ -177,7 +177,7 @@ flow::Mesh build_mesh(const Scene& scene, MPI_Comm comm) {
 
   for (const auto& pair : scene.names("mesh.periodic")) {
     const std::string prefix = "mesh.periodic." + pair;
-    flow::PeriodicLink link;
+    mesh::PeriodicLink link;
     link.master = scene.get<std::string>(prefix + ".master");
     link.slave = scene.get<std::string>(prefix + ".slave");
     const auto t = scene.get<std::array<double, 3>>(prefix + ".translation");
@@ -189,10 +189,10 @@ flow::Mesh build_mesh(const Scene& scene, MPI_Comm comm) {
                           fmt::format("{}", fmt::join(mesh.patch_names, ", ")));
     mesh.periodic.push_back(link);
   }
-  flow::check_mesh(mesh);
+  mesh::check_mesh(mesh);
   if (const auto pieces = disconnected_pieces(mesh); !pieces.empty())
     throw scene.error("mesh.source", pieces, "one connected mesh");
   return mesh;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

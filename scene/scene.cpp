@@ -6,7 +6,7 @@
 #include <limits>
 #include <sstream>
 
-namespace valsalva::io {
+namespace valsalva::scene {
 namespace {
 
 std::string join_lines(const std::vector<std::string>& lines) {
@@ -180,4 +180,4 @@ std::string Scene::resolved() const {
   return out.str();
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

@@ -17,7 +17,7 @@
 
 #include "scene/scene_schema.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 // Every problem found in a scene, one line each, formatted
 //   FILE:LINE:COLUMN: key 'a.b.c': problem (accepted: ...)
@@ -116,4 +116,4 @@ Scene parse_scene(std::string_view text, const std::filesystem::path& file,
 Scene parse_scene(std::string_view text, const std::filesystem::path& file,
                   const std::vector<std::string>& overrides, const Schema& schema = scene_schema());
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

@@ -9,7 +9,7 @@
 
 #include "io/waveform_table.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 namespace {
 
@@ -29,7 +29,7 @@ std::vector<PeriodicTable> periodic_tables(const Scene& scene) {
   std::vector<PeriodicTable> out;
   for (const auto& key : keys) {
     if (!scene.has(key)) continue;
-    const auto table = read_waveform_table(scene.path(key));
+    const auto table = io::read_waveform_table(scene.path(key));
     double largest = 0;
     for (double q : table.q) largest = std::max(largest, std::abs(q));
     if (std::abs(table.q.back() - table.q.front()) <= 1e-6 * largest)
@@ -64,4 +64,4 @@ void check_cycle_periods(const Scene& scene) {
       check_period(scene, "statistics." + name + ".period", tables);
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

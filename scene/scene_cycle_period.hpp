@@ -6,10 +6,10 @@
 
 #include "scene/scene.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 // Throws SceneError at the period key, naming the table file, its period and the accepted values.
 // Tables that are not one period (they cover the run instead) set no cycle and are not checked.
 void check_cycle_periods(const Scene& scene);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

@@ -7,8 +7,8 @@
 
 #include "scene/scene_schema.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 void write_scene_docs(std::ostream& out, const Schema& schema = scene_schema());
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

@@ -4,7 +4,7 @@
 
 #include "scene/scene_schema.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 void declare_run_keys(Schema& schema);        // scene/scene_keys_run.cpp
 void declare_mesh_keys(Schema& schema);       // scene/scene_keys_mesh.cpp
@@ -19,4 +19,4 @@ void declare_section_keys(Schema& schema);    // scene/scene_keys_sections.cpp
 void declare_structure_keys(Schema& schema);  // scene/scene_keys_structure.cpp
 void declare_valve_keys(Schema& schema);      // scene/scene_keys_valve.cpp
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

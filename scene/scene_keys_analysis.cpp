@@ -15,7 +15,7 @@
 #include "scene/scene_keys.hpp"
 #include "scene/scene_keys_sections.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 namespace {
 
@@ -28,7 +28,7 @@ void declare_every_steps(Schema& s, const std::string& table, const std::string&
 }
 
 template <class Inside>
-bool any_node(const flow::Mesh& mesh, Inside inside) {
+bool any_node(const mesh::Mesh& mesh, Inside inside) {
   return std::any_of(mesh.nodes.begin(), mesh.nodes.end(), inside);
 }
 
@@ -37,7 +37,7 @@ std::string format_vector(const Eigen::Vector3d& v) {
 }
 
 // "(x0, y0, z0) to (x1, y1, z1) m": the mesh's bounding box, for a region that misses it.
-std::string mesh_span(const flow::Mesh& mesh) {
+std::string mesh_span(const mesh::Mesh& mesh) {
   Eigen::Vector3d lo = mesh.nodes.front(), hi = lo;
   for (const auto& x : mesh.nodes) {
     lo = lo.cwiseMin(x);
@@ -189,8 +189,8 @@ void check_plain_name(const Scene& scene, const std::string& table, const std::s
         "[A-Za-z0-9_]+");
 }
 
-AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh) {
-  AnalysisOptions o;
+analysis::AnalysisOptions read_analysis_options(const Scene& scene, const mesh::Mesh& mesh) {
+  analysis::AnalysisOptions o;
   for (const auto& name : scene.names("probe")) {
     check_plain_name(scene, "probe", name);
     o.probes.points.push_back({name, scene_vector(scene, "probe." + name + ".position")});
@@ -200,7 +200,7 @@ AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh
   for (const auto& name : scene.names("sample")) {
     check_plain_name(scene, "sample", name);
     const std::string k = "sample." + name;
-    SampleOptions s;
+    analysis::SampleOptions s;
     s.name = name;
     s.plane = scene.get<std::string>(k + ".type") == "plane";
     s.origin = scene_vector(scene, k + ".origin");
@@ -208,8 +208,8 @@ AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh
     s.points = {n[0], s.plane ? n[1] : 1};
     // Each point keeps at least its position and u, v, w, p (56 bytes).
     if (const auto problem =
-            allocation_problem(fmt::format("{} x {} points", s.points[0], s.points[1]),
-                               double(s.points[0]) * s.points[1], 56);
+            core::allocation_problem(fmt::format("{} x {} points", s.points[0], s.points[1]),
+                                     double(s.points[0]) * s.points[1], 56);
         !problem.empty())
       throw scene.error(k + ".points", problem);
     if (s.plane) {
@@ -230,7 +230,7 @@ AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh
   for (const auto& name : scene.names("statistics")) {
     check_plain_name(scene, "statistics", name);
     const std::string k = "statistics." + name;
-    StatisticsOptions s;
+    analysis::StatisticsOptions s;
     s.phase.period = scene.get<double>(k + ".period");
     s.phase.bins = scene.get<int>(k + ".bins");
     if (s.phase.period == 0 && s.phase.bins != 1)
@@ -250,11 +250,11 @@ AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh
     s.every_steps = scene.get<int>(k + ".every_steps");
     s.write_interval = scene.get<double>(k + ".write_interval");
     const auto region = scene.get<std::string>(k + ".region");
-    s.region = region == "all"     ? StatisticsOptions::Region::all
-               : region == "plane" ? StatisticsOptions::Region::plane
-               : region == "line"  ? StatisticsOptions::Region::line
-                                   : StatisticsOptions::Region::box;
-    if (s.region == StatisticsOptions::Region::plane) {
+    s.region = region == "all"     ? analysis::StatisticsOptions::Region::all
+               : region == "plane" ? analysis::StatisticsOptions::Region::plane
+               : region == "line"  ? analysis::StatisticsOptions::Region::line
+                                   : analysis::StatisticsOptions::Region::box;
+    if (s.region == analysis::StatisticsOptions::Region::plane) {
       s.a = scene_vector(scene, k + ".point");
       s.b = scene_vector(scene, k + ".normal");
       if (!(s.b.norm() > 0)) throw scene.error(k + ".normal", "the normal is zero");
@@ -269,7 +269,7 @@ AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh
                         "misses the mesh: no node within reach; the mesh spans {}",
                         format_vector(s.a), format_vector(s.b), s.half_thickness, mesh_span(mesh)),
             "a point of a plane through the mesh");
-    } else if (s.region == StatisticsOptions::Region::box) {
+    } else if (s.region == analysis::StatisticsOptions::Region::box) {
       s.a = scene_vector(scene, k + ".lo");
       s.b = scene_vector(scene, k + ".hi");
       if (!(s.a.array() < s.b.array()).all())
@@ -284,7 +284,7 @@ AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh
                                       "spans {}",
                                       format_vector(s.a), format_vector(s.b), mesh_span(mesh)),
                           "a box overlapping the mesh");
-    } else if (s.region == StatisticsOptions::Region::line) {
+    } else if (s.region == analysis::StatisticsOptions::Region::line) {
       s.line = {scene_vector(scene, k + ".origin"), scene_vector(scene, k + ".end"),
                 scene.get<int>(k + ".points")};
       if (!((s.line.end - s.line.origin).norm() > 0))
@@ -320,4 +320,4 @@ AnalysisOptions read_analysis_options(const Scene& scene, const flow::Mesh& mesh
   return o;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

@@ -7,7 +7,7 @@
 #include <array>
 #include <cmath>
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 void declare_bar_shape_keys(Schema& s, const std::string& k) {
   s.real(k + ".root_arc_radius")
@@ -78,4 +78,4 @@ Eigen::Matrix3Xd bar_bend(const Scene& scene, const std::string& k,
   return d;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

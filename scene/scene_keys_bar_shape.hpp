@@ -10,7 +10,7 @@
 #include "scene/scene_keys.hpp"
 #include "structure/solid_mesh.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 // Declares <k>.root_arc_radius, <k>.root_arc_centre and <k>.initial_bend (k = "structure.<name>").
 void declare_bar_shape_keys(Schema& s, const std::string& k);
@@ -28,4 +28,4 @@ void conform_bar_root(const Scene& scene, const std::string& k, structure::Solid
 Eigen::Matrix3Xd bar_bend(const Scene& scene, const std::string& k,
                           const structure::SolidMesh& mesh);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

@@ -13,7 +13,7 @@
 #include "mesh/patch_shape.hpp"
 #include "scene/scene_keys.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 namespace {
 
@@ -107,10 +107,10 @@ void declare_inlet_pressure_keys(Schema& s, const std::string& b) {
 // under that key.
 flow::Waveform read_table(const Scene& scene, const std::string& key) {
   try {
-    auto table = read_waveform_table(scene.path(key));
-    check_table_wrap(table, scene.get<double>("time.end"), scene.path(key).string());
+    auto table = io::read_waveform_table(scene.path(key));
+    io::check_table_wrap(table, scene.get<double>("time.end"), scene.path(key).string());
     return table;
-  } catch (const TableError& e) {
+  } catch (const core::TableError& e) {
     throw scene.error(key, e.what());
   }
 }
@@ -305,7 +305,7 @@ void declare_boundary_keys(Schema& s) {
 }
 
 std::vector<flow::BoundarySpec> read_boundary_conditions(const Scene& scene,
-                                                         const flow::Mesh& mesh) {
+                                                         const mesh::Mesh& mesh) {
   std::set<std::string> periodic;
   for (const auto& link : mesh.periodic) periodic.insert({link.master, link.slave});
   const std::string patches = fmt::format("{}", fmt::join(mesh.patch_names, ", "));
@@ -343,8 +343,8 @@ std::vector<flow::BoundarySpec> read_boundary_conditions(const Scene& scene,
       }
       if (spec.profile == flow::InletProfile::poiseuille ||
           spec.profile == flow::InletProfile::womersley) {
-        const auto shape = patch_shape(mesh, mesh.patch_index(name));
-        if (shape.circularity > max_circularity)
+        const auto shape = mesh::patch_shape(mesh, mesh.patch_index(name));
+        if (shape.circularity > mesh::max_circularity)
           throw scene.error(
               key + ".profile",
               fmt::format("the {} profile assumes a circular section, but patch '{}' is not one: "
@@ -352,7 +352,7 @@ std::vector<flow::BoundarySpec> read_boundary_conditions(const Scene& scene,
                           "radius {:.4g} m of a disc of its area {:.4g} m^2 (a disc meshed with "
                           "6 or more sides is below {})",
                           profile, name, shape.max_radius, shape.circularity,
-                          shape.max_radius / shape.circularity, shape.area, max_circularity),
+                          shape.max_radius / shape.circularity, shape.area, mesh::max_circularity),
               "\"flat\", or \"plane_poiseuille\" between two parallel walls");
       }
       const auto waveform = scene.get<std::string>(key + ".waveform");
@@ -433,4 +433,4 @@ std::vector<flow::BoundarySpec> read_boundary_conditions(const Scene& scene,
   return specs;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

@@ -8,12 +8,12 @@
 #include "mesh/mesh.hpp"
 #include "scene/scene.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 // Throws SceneError (FILE:LINE): a [boundary.X] table for a patch the mesh lacks (listing the
 // mesh's patches) or for a periodic patch, a non-periodic patch without a table (naming it and
 // the accepted types), a waveform CSV that cannot be read (naming the CSV file and line).
 std::vector<flow::BoundarySpec> read_boundary_conditions(const Scene& scene,
-                                                         const flow::Mesh& mesh);
+                                                         const mesh::Mesh& mesh);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

@@ -12,7 +12,7 @@
 #include "scene/scene_keys.hpp"
 #include "scene/scene_keys_rheology.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 namespace {
 constexpr double max_field_outputs = 1e5;  // fields written per run (output.interval in s)
@@ -22,7 +22,7 @@ constexpr double default_density = 1100.0, default_viscosity = 3.6e-3;  // the r
 // The one rule for runs that would not end in a lifetime: a time step `dt` that takes more than
 // max_time_steps steps to time.end, unless time.max_steps caps the run. The implied step count
 // when refused, 0 when accepted.
-double refused_step_count(const flow::TimeOptions& t, double dt) {
+double refused_step_count(const scene::TimeOptions& t, double dt) {
   if (t.max_steps > 0 || !(dt > 0)) return 0;
   const double steps = t.end / dt;
   return steps > max_time_steps ? steps : 0;
@@ -385,8 +385,8 @@ void declare_flow_keys(Schema& s) {
       .doc("On SIGINT/SIGTERM write a checkpoint and stop cleanly at the end of the current step");
 }
 
-flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::path& run_dir) {
-  flow::RunOptions o;
+scene::RunOptions flow_run_options(const Scene& scene, const std::filesystem::path& run_dir) {
+  scene::RunOptions o;
   const double rho = scene.get<double>("flow.density");
   o.projection.density = rho;
   o.projection.viscosity = scene.get<double>("flow.viscosity") / rho;
@@ -420,8 +420,8 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   p.print_level = scene.get<int>("poisson.print_level");
   o.projection.periodic_pressure_damping = scene.get<bool>("poisson.periodic_damping");
   o.poisson_weights = scene.get<std::string>("poisson.weights") == "prism_slab"
-                          ? flow::PoissonWeights::prism_slab
-                          : flow::PoissonWeights::standard;
+                          ? scene::PoissonWeights::prism_slab
+                          : scene::PoissonWeights::standard;
 
   o.initial.type = scene.get<std::string>("initial.type");
   if (o.initial.type == "taylor_green" || o.initial.type == "taylor_green_3d" ||
@@ -499,9 +499,9 @@ flow::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pat
   return o;
 }
 
-void check_step_count(const Scene& scene, const flow::DualMetrics& metrics) {
+void check_step_count(const Scene& scene, const mesh::DualMetrics& metrics) {
   if (scene.get<double>("time.dt") > 0 || metrics.h.empty()) return;  // fixed dt: checked above
-  flow::TimeOptions t;
+  scene::TimeOptions t;
   t.end = scene.get<double>("time.end");
   t.max_steps = scene.get<std::int64_t>("time.max_steps");
   const double rho = scene.get<double>("flow.density");
@@ -564,7 +564,7 @@ void check_step_count(const Scene& scene, const flow::DualMetrics& metrics) {
                   mu * t.end / (fourier * h * h * max_time_steps)));
 }
 
-void check_initial_state(const Scene& scene, const flow::Mesh& mesh) {
+void check_initial_state(const Scene& scene, const mesh::Mesh& mesh) {
   const auto type = scene.get<std::string>("initial.type");
   if (type != "taylor_green" && type != "taylor_green_3d") return;
   const double length = scene.get<double>("initial.taylor_green.length");
@@ -594,4 +594,4 @@ void check_initial_state(const Scene& scene, const flow::Mesh& mesh) {
   }
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

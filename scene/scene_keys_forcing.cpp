@@ -11,7 +11,7 @@
 #include "scene/scene_keys.hpp"
 #include "scene/scene_keys_flow.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 void declare_forcing_keys(Schema& s) {
   s.section("forcing",
@@ -110,8 +110,8 @@ Eigen::Vector3d finite_vector(const Scene& scene, const std::string& key) {
 
 flow::Waveform table(const Scene& scene) {
   try {
-    auto factor = read_waveform_table(scene.path("forcing.file"));
-    check_table_wrap(factor, scene.get<double>("time.end"), scene.path("forcing.file").string());
+    auto factor = io::read_waveform_table(scene.path("forcing.file"));
+    io::check_table_wrap(factor, scene.get<double>("time.end"), scene.path("forcing.file").string());
     return factor;
   } catch (const std::exception& e) {
     throw scene.error("forcing.file", e.what());
@@ -185,4 +185,4 @@ void check_forcing(const Scene& scene, const std::vector<flow::BoundarySpec>& bo
                         "a scene whose [boundary.<patch>] are all walls or slip walls");
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

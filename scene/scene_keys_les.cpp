@@ -14,7 +14,7 @@
 #include "les/subgrid_viscosity.hpp"
 #include "scene/scene_keys.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 void declare_les_keys(Schema& s) {
   s.section("les", "Large Eddy Simulation: the subgrid-scale eddy viscosity added to nu.");
@@ -59,7 +59,7 @@ struct LesSetup::Shared {
   const flow::ScalarField* last = nullptr;  // the solver's nu_sgs array, filled last
   flow::ScalarField ratio, resolved, fraction;
   flow::ScalarField pope;  // pope_sgs_fraction (from the mesh alone), empty when not asked
-  const flow::LocalMesh* local = nullptr;
+  const mesh::LocalMesh* local = nullptr;
   double cpu_seconds = 0;  // thread CPU time inside the model, all calls
 };
 
@@ -67,8 +67,8 @@ double LesSetup::cpu_seconds() const {
   return shared ? shared->cpu_seconds : 0.0;
 }
 
-void LesSetup::add_fields(flow::FieldSet& set, double time, const flow::VectorField& velocity,
-                          const std::vector<PhaseStatistics>& statistics) const {
+void LesSetup::add_fields(io::FieldSet& set, double time, const flow::VectorField& velocity,
+                          const std::vector<analysis::PhaseStatistics>& statistics) const {
   if (!shared) return;
   auto& sh = *shared;
   const double scale = sh.nu > 0 ? 1.0 / sh.nu : 1.0;
@@ -78,7 +78,7 @@ void LesSetup::add_fields(flow::FieldSet& set, double time, const flow::VectorFi
   set.scalars.emplace_back(sh.nu > 0 ? "nu_sgs_over_nu" : "nu_sgs", &sh.ratio);
   if (!sh.pope.empty()) set.scalars.emplace_back("pope_sgs_fraction", &sh.pope);
   if (!sh.energy_fraction) return;
-  resolved_turbulent_energy(*sh.local, velocity, statistics, time, sh.resolved);
+  analysis::resolved_turbulent_energy(*sh.local, velocity, statistics, time, sh.resolved);
   sh.fraction.assign(sh.resolved.size(), 0.0);
   const std::vector<double> zero(sh.last ? 0 : sh.resolved.size(), 0.0);
   les::subgrid_energy_fraction(sh.last ? std::span<const double>(*sh.last) : zero,
@@ -119,7 +119,7 @@ void LesSetup::resume(const flow::ScalarField& nu_sgs) const {
   if (shared && !nu_sgs.empty()) shared->last = &nu_sgs;
 }
 
-LesSetup les_setup(const Scene& scene, const flow::LocalMesh& local) {
+LesSetup les_setup(const Scene& scene, const mesh::LocalMesh& local) {
   check_les_scene(scene);
   LesSetup out;
   out.model = scene.get<std::string>("les.model");
@@ -149,12 +149,12 @@ LesSetup les_setup(const Scene& scene, const flow::LocalMesh& local) {
   }
   out.subgrid_viscosity = [sh = out.shared](int stage, const flow::TensorField& grad,
                                             flow::ScalarField& nu_sgs) {
-    const double t0 = flow::thread_cpu_seconds();
+    const double t0 = core::thread_cpu_seconds();
     sh->model(stage, grad, nu_sgs);
-    sh->cpu_seconds += flow::thread_cpu_seconds() - t0;
+    sh->cpu_seconds += core::thread_cpu_seconds() - t0;
     sh->last = &nu_sgs;
   };
   return out;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

@@ -8,11 +8,11 @@
 
 #include "analysis/phase_statistics.hpp"
 #include "flow/operators.hpp"
-#include "flow/run_loop.hpp"
+#include "io/field_set.hpp"
 #include "mesh/local_mesh.hpp"
 #include "scene/scene.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 struct LesSetup {
   std::string model = "none";
@@ -24,10 +24,10 @@ struct LesSetup {
   // (les/sgs_energy.hpp, resolved energy from `statistics` or `velocity`,
   // analysis/sgs_energy_field.hpp; les/pope_estimate.hpp with les.integral_length); a no-op for
   // "none". The pointers stay valid until the next call.
-  void add_fields(flow::FieldSet& set, double time, const flow::VectorField& velocity,
-                  const std::vector<PhaseStatistics>& statistics = {}) const;
+  void add_fields(io::FieldSet& set, double time, const flow::VectorField& velocity,
+                  const std::vector<analysis::PhaseStatistics>& statistics = {}) const;
 
-  // After a restart: `nu_sgs` (the solver's restored array, flow::RunLoop::subgrid_viscosity())
+  // After a restart: `nu_sgs` (the solver's restored array, run::RunLoop::subgrid_viscosity())
   // is the one the fields show until the first stage refills it.
   void resume(const flow::ScalarField& nu_sgs) const;
   // Thread CPU time spent in the model so far, s (this rank; 0 for "none"): its share of a step
@@ -45,6 +45,6 @@ void check_les_scene(const Scene& scene);
 
 // [les] for `local` (filter width = cube root of the dual volume, LocalMesh::h). Throws
 // SceneError naming les.constant for a constant the model rejects (and as check_les_scene).
-LesSetup les_setup(const Scene& scene, const flow::LocalMesh& local);
+LesSetup les_setup(const Scene& scene, const mesh::LocalMesh& local);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

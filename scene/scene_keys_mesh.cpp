@@ -2,7 +2,7 @@
 // built-in box and pipe generators, and periodic patch pairs.
 #include "scene/scene_keys.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 void declare_mesh_keys(Schema& s) {
   s.section("mesh", "Where the fluid mesh comes from.");
@@ -222,4 +222,4 @@ void declare_mesh_keys(Schema& s) {
       .doc("Vector from a master node to its slave node");
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

@@ -1,7 +1,7 @@
 // Scene keys of the parallel decomposition (flow/ partitioning and halo exchange).
 #include "scene/scene_keys.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 void declare_partition_keys(Schema& s) {
   s.section("partition", "How the mesh nodes are distributed over MPI ranks.");
@@ -18,4 +18,4 @@ void declare_partition_keys(Schema& s) {
       .doc("METIS k-way partition of the node graph, or contiguous blocks of global node numbers");
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

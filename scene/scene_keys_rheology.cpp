@@ -4,7 +4,7 @@
 
 #include "scene/scene_keys.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 void declare_rheology_keys(Schema& s) {
   s.choice("flow.viscosity_model", {"newtonian", "carreau_yasuda", "casson", "power_law"})
@@ -109,4 +109,4 @@ flow::ViscosityModel read_viscosity_model(const Scene& scene) {
   return m;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

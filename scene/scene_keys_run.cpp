@@ -1,7 +1,7 @@
 // Scene keys of a run as a whole: where results go and how often progress is printed.
 #include "scene/scene_keys.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 void declare_run_keys(Schema& s) {
   s.section("run", "Where results go and how the run reports progress.");
@@ -33,4 +33,4 @@ void declare_run_keys(Schema& s) {
           "status on a terminal, lines otherwise and under mpiexec");
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

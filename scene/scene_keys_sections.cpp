@@ -5,7 +5,7 @@
 #include "scene/scene_keys.hpp"
 #include "scene/scene_keys_analysis.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 void declare_section_keys(Schema& s) {
   const std::string k = "section.<name>";
@@ -46,22 +46,22 @@ void declare_section_keys(Schema& s) {
       .doc("Evaluate the section fluxes every this many time steps");
 }
 
-SectionsOptions read_section_options(const Scene& scene) {
-  SectionsOptions o;
+analysis::SectionsOptions read_section_options(const Scene& scene) {
+  analysis::SectionsOptions o;
   for (const auto& name : scene.names("section")) {
     check_plain_name(scene, "section", name);
     const std::string k = "section." + name;
-    SectionOptions s;
+    analysis::SectionOptions s;
     s.name = name;
     s.point = scene_vector(scene, k + ".point");
     s.normal = scene_vector(scene, k + ".normal");
     if (!(s.normal.norm() > 0)) throw scene.error(k + ".normal", "the normal is zero");
     const auto bound = scene.get<std::string>(k + ".bound");
     if (bound == "disc") {
-      s.bound = SectionOptions::Bound::disc;
+      s.bound = analysis::SectionOptions::Bound::disc;
       s.radius = scene.get<double>(k + ".radius");
     } else if (bound == "box") {
-      s.bound = SectionOptions::Bound::box;
+      s.bound = analysis::SectionOptions::Bound::box;
       s.lo = scene_vector(scene, k + ".lo");
       s.hi = scene_vector(scene, k + ".hi");
       if (!(s.lo.array() < s.hi.array()).all())
@@ -74,4 +74,4 @@ SectionsOptions read_section_options(const Scene& scene) {
   return o;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

@@ -5,9 +5,9 @@
 #include "analysis/analysis_options.hpp"
 #include "scene/scene.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 // Throws SceneError naming the key for bad names, a zero normal or a box with lo >= hi.
-SectionsOptions read_section_options(const Scene& scene);
+analysis::SectionsOptions read_section_options(const Scene& scene);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

@@ -16,7 +16,7 @@
 #include "structure/mesh_generators.hpp"
 #include "structure/sphere_shell.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 void declare_structure_keys(Schema& s) {
   s.section("immersed",
@@ -281,7 +281,7 @@ structure::SolidMesh build_solid_mesh(const Scene& scene, const std::string& k) 
   const auto type = scene.get<std::string>(k + ".mesh");
   if (type == "gmsh") {
     try {
-      return read_solid_gmsh(scene.path(k + ".file"));
+      return io::read_solid_gmsh(scene.path(k + ".file"));
     } catch (const std::exception& e) {
       throw scene.error(k + ".file", e.what());
     }
@@ -348,7 +348,7 @@ Eigen::Matrix3Xd initial_positions(const Scene& scene, const std::string& k,
 }
 
 // The markers' periodic box: the mesh's periodic links must be translations along the axes.
-std::optional<ibm::PeriodicBox> periodic_box(const Scene& scene, const flow::Mesh& mesh) {
+std::optional<ibm::PeriodicBox> periodic_box(const Scene& scene, const mesh::Mesh& mesh) {
   if (mesh.periodic.empty()) return std::nullopt;
   ibm::PeriodicBox box;
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300);
@@ -438,7 +438,7 @@ void read_contact(const Scene& scene, const std::string& k, const structure::Sol
 
 }  // namespace
 
-ImmersedSetup read_immersed_setup(const Scene& scene, const flow::Mesh& mesh) {
+ImmersedSetup read_immersed_setup(const Scene& scene, const mesh::Mesh& mesh) {
   ImmersedSetup out;
   const auto names = scene.names("structure");
   if (names.empty()) return out;
@@ -524,4 +524,4 @@ ImmersedSetup read_immersed_setup(const Scene& scene, const flow::Mesh& mesh) {
   return out;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

@@ -16,7 +16,7 @@
 #include "structure/material.hpp"
 #include "structure/solid_mesh.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 // One [structure.<name>] table: its Lagrangian mesh placed in the fluid, its material and the
 // node sets held by the tether.
@@ -43,6 +43,6 @@ struct ImmersedSetup {
 // markers). Throws SceneError naming the key for a bad generator size, an unknown node set, a
 // tether missing its stiffness, material parameters the law rejects, or a structure in a mesh
 // whose periodic directions are not along the axes.
-ImmersedSetup read_immersed_setup(const Scene& scene, const flow::Mesh& mesh);
+ImmersedSetup read_immersed_setup(const Scene& scene, const mesh::Mesh& mesh);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

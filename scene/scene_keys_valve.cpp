@@ -9,7 +9,7 @@
 #include "scene/scene_keys.hpp"
 #include "scene/scene_keys_boundary.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 void declare_valve_keys(Schema& s) {
   s.section("valve",
@@ -94,9 +94,9 @@ void declare_valve_keys(Schema& s) {
       .doc("Radial cells of the orifice area's polar grid (its raster error ~ 1 / rings)");
 }
 
-std::optional<ValveMonitorOptions> read_valve_monitor_options(const Scene& scene,
-                                                              const flow::Mesh& mesh) {
-  ValveMonitorOptions o;
+std::optional<analysis::ValveMonitorOptions> read_valve_monitor_options(const Scene& scene,
+                                                              const mesh::Mesh& mesh) {
+  analysis::ValveMonitorOptions o;
   o.structure = scene.get<std::string>("valve.structure");
   if (o.structure.empty()) return std::nullopt;
   const auto structures = scene.names("structure");
@@ -145,4 +145,4 @@ std::optional<ValveMonitorOptions> read_valve_monitor_options(const Scene& scene
   return o;
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

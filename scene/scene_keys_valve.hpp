@@ -9,12 +9,12 @@
 #include "scene/scene.hpp"
 #include "scene/scene_schema.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 void declare_valve_keys(Schema& schema);
 // Empty when valve.structure is empty. Throws SceneError naming the key for an unknown
 // structure or patch, a zero axis, a non-positive annulus radius or TPG radius.
-std::optional<ValveMonitorOptions> read_valve_monitor_options(const Scene& scene,
-                                                              const flow::Mesh& mesh);
+std::optional<analysis::ValveMonitorOptions> read_valve_monitor_options(const Scene& scene,
+                                                              const mesh::Mesh& mesh);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

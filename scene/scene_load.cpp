@@ -11,7 +11,7 @@
 
 #include "scene/scene.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 namespace {
 
 std::string join(std::string_view a, std::string_view b) {
@@ -513,4 +513,4 @@ Scene load_scene(const std::filesystem::path& file, const std::vector<std::strin
   return parse_scene(text.str(), file, overrides, schema);
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

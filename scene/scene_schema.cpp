@@ -12,7 +12,7 @@
 
 #include "scene/scene_keys.hpp"
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 const Schema& scene_schema() {
   static const Schema schema = [] {
@@ -515,4 +515,4 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
   return row[b.size()];
 }
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

@@ -17,7 +17,7 @@
 #include <variant>
 #include <vector>
 
-namespace valsalva::io {
+namespace valsalva::scene {
 
 enum class KeyType {
   boolean,
@@ -154,4 +154,4 @@ std::string accepted_values(const KeyDecl& key);   // "> 0", "\"box\", \"gmsh\""
 std::string format_value(const KeyValue& value);   // TOML literal: 1.0, "hexa", [1, 2, 3]
 std::size_t edit_distance(std::string_view a, std::string_view b);
 
-}  // namespace valsalva::io
+}  // namespace valsalva::scene

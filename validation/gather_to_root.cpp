@@ -6,26 +6,15 @@
 namespace valsalva::validation {
 
 std::vector<double> gather_to_root(const std::vector<double>& mine, MPI_Comm comm) {
-  int size = 0, rank = 0;
-  VALSALVA_MPI(MPI_Comm_size(comm, &size));
-  VALSALVA_MPI(MPI_Comm_rank(comm, &rank));
-  const int n = static_cast<int>(mine.size());
-  std::vector<int> counts(size), offsets(size, 0);
-  VALSALVA_MPI(MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm));
-  for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
-  std::vector<double> all(rank == 0 ? offsets.back() + counts.back() : 0);
-  VALSALVA_MPI(MPI_Gatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
-                           MPI_DOUBLE, 0, comm));
-  return all;
+  return core::Comm(comm).gather_to_root(mine);
 }
 
-std::vector<double> velocity_by_dual_node(const flow::LocalMesh& local, const flow::VectorField& u,
+std::vector<double> velocity_by_dual_node(const mesh::LocalMesh& local, const flow::VectorField& u,
                                           std::int64_t dual_nodes) {
   std::vector<double> all(3 * static_cast<std::size_t>(dual_nodes), 0.0);
   for (int j = 0; j < local.num_owned; ++j)
     for (int c = 0; c < 3; ++c) all[3 * local.dual_node[j] + c] = u[j][c];
-  VALSALVA_MPI(MPI_Allreduce(MPI_IN_PLACE, all.data(), static_cast<int>(all.size()), MPI_DOUBLE,
-                             MPI_SUM, local.comm.get()));
+  local.comm.sum_in_place(all);
   return all;
 }
 

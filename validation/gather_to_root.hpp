@@ -16,7 +16,7 @@ namespace valsalva::validation {
 std::vector<double> gather_to_root(const std::vector<double>& mine, MPI_Comm comm);
 
 // Collective: u (3 values per node) by dual node (global order), the same on every rank.
-std::vector<double> velocity_by_dual_node(const flow::LocalMesh& local, const flow::VectorField& u,
+std::vector<double> velocity_by_dual_node(const mesh::LocalMesh& local, const flow::VectorField& u,
                                           std::int64_t dual_nodes);
 
 }  // namespace valsalva::validation

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "core/comm.hpp"
 #include "validation/case.hpp"
 
 namespace valsalva::validation {
@@ -82,7 +83,7 @@ bool run_plot_script(const Context& ctx) {
     ok = std::system(cmd.c_str()) == 0 ? 1 : 0;
     if (!ok) fmt::print(stderr, "validate: plot script failed: {}\n", cmd);
   }
-  MPI_Bcast(&ok, 1, MPI_INT, 0, ctx.comm);
+  core::Comm(ctx.comm).broadcast(ok);
   return ok == 1;
 }
 

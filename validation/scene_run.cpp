@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <system_error>
 
+#include "core/comm.hpp"
 #include "run/data_dir.hpp"
 #include "scene/scene.hpp"
 
@@ -28,10 +29,7 @@ class ScratchDir {
         throw std::runtime_error(fmt::format("cannot create a scratch run directory {}", pattern));
       name = pattern;
     }
-    int size = static_cast<int>(name.size());
-    MPI_Bcast(&size, 1, MPI_INT, 0, comm);
-    name.resize(size);
-    MPI_Bcast(name.data(), size, MPI_CHAR, 0, comm);
+    core::Comm(comm).broadcast(name);
     path_ = name;
   }
   ~ScratchDir() {
@@ -71,7 +69,7 @@ run::RunResult run_scene_file(const std::filesystem::path& scene_file,
                               const SceneRun& measure) {
   std::optional<ScratchDir> scratch;
   if (run_dir.empty()) scratch.emplace(comm);
-  const auto scene = io::load_scene(scene_file, overrides);
+  const auto scene = scene::load_scene(scene_file, overrides);
   run::Simulation simulation(scene, level_request(scratch ? scratch->path() : run_dir), comm);
   if (measure.initial_velocity) simulation.set_initial_velocity(measure.initial_velocity);
   if (measure.at_start) measure.at_start(simulation);

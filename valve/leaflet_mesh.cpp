@@ -130,8 +130,8 @@ SolidMesh valve_leaflets(const ValveGeometry& g) {
 
 void write_leaflets_gmsh(const std::filesystem::path& file, const SolidMesh& mesh) {
   const std::string source = file.string();
-  io::GmshSession session;
-  io::gmsh_call(source, [&] {
+  mesh::GmshSession session;
+  mesh::gmsh_call(source, [&] {
     gmsh::model::add("leaflets");
     const int nen = mesh.nodes_per_element();
     std::size_t element_tag = 1;
@@ -186,7 +186,7 @@ void write_leaflets_gmsh(const std::filesystem::path& file, const SolidMesh& mes
 SolidMesh read_valve_leaflets(const std::filesystem::path& file) {
   SolidMesh m = io::read_solid_gmsh(file);
   if (m.order != structure::HexOrder::q2)
-    throw io::MeshFileError(
+    throw mesh::MeshFileError(
         fmt::format("{}: valve leaflet meshes must be 27-node (Q2) hexahedra", file.string()));
   const char* need =
       " (valve leaflet meshes need leaflet<i>, leaflet<i>_{attachment, free_edge, aortic_face, "
@@ -195,13 +195,14 @@ SolidMesh read_valve_leaflets(const std::filesystem::path& file) {
   try {
     leaflets = leaflet_groups(m).size();  // the per-leaflet groups, one check for both readers
   } catch (const std::invalid_argument& e) {
-    throw io::MeshFileError(e.what() + std::string(need));
+    throw mesh::MeshFileError(e.what() + std::string(need));
   }
   if (leaflets != 3)
-    throw io::MeshFileError(fmt::format("{}: {} leaflets, not 3{}", file.string(), leaflets, need));
+    throw mesh::MeshFileError(
+        fmt::format("{}: {} leaflets, not 3{}", file.string(), leaflets, need));
   for (const char* set : kSets)
     if (!m.surface_sets.count(set) || m.surface_sets.at(set).empty())
-      throw io::MeshFileError(
+      throw mesh::MeshFileError(
           fmt::format("{}: physical group '{}' is missing or empty{}", file.string(), set, need));
   return m;
 }

@@ -54,7 +54,7 @@ std::array<int, 2> leaflet_elements(const ValveGeometry& g);
 void write_leaflets_gmsh(const std::filesystem::path& file, const structure::SolidMesh& leaflets);
 
 // Reads leaflets.msh (io::read_solid_gmsh) and checks that the sets above are all there and not
-// empty; throws io::MeshFileError naming the file and the missing group.
+// empty; throws mesh::MeshFileError naming the file and the missing group.
 structure::SolidMesh read_valve_leaflets(const std::filesystem::path& file);
 
 // Leaflet i (1, 2, 3) of such a mesh as a mesh of its own, nodes renumbered, with the sets

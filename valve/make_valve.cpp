@@ -46,9 +46,9 @@ void require_attachment(const AttachmentCheck& c, const fs::path& root_msh,
 
 AttachmentCheck check_attachment(const fs::path& root_msh, const fs::path& leaflets_msh,
                                  const ValveGeometry& g) {
-  const flow::Mesh fluid = io::read_gmsh(root_msh);
+  const mesh::Mesh fluid = mesh::read_gmsh(root_msh);
   const structure::SolidMesh leaflets = read_valve_leaflets(leaflets_msh);
-  const io::PointLocator locator(fluid);
+  const mesh::PointLocator locator(fluid);
   AttachmentCheck c;
   for (int n : leaflets.node_set("attachment")) {
     const Eigen::Vector3d x = leaflets.X.col(n);

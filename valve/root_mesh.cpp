@@ -184,9 +184,9 @@ RootMeshSummary write_root_mesh(const std::filesystem::path& file, const ValveGe
   const auto t0 = std::chrono::steady_clock::now();
   const std::string source = file.string();
   RootMeshSummary s;
-  io::GmshSession session;
+  mesh::GmshSession session;
   gmsh::vectorpair fluid;
-  io::gmsh_call(source + ": building the root geometry (OpenCASCADE)", [&] {
+  mesh::gmsh_call(source + ": building the root geometry (OpenCASCADE)", [&] {
     gmsh::model::add("valve_root");
     const Lumen lum = lumen(g);
     const gmsh::vectorpair fr = frame(g);
@@ -197,7 +197,7 @@ RootMeshSummary write_root_mesh(const std::filesystem::path& file, const ValveGe
     occ::synchronize();
   });
   if (fluid.empty())
-    throw io::MeshFileError(source + ": cutting the frame out of the lumen left no fluid volume");
+    throw mesh::MeshFileError(source + ": cutting the frame out of the lumen left no fluid volume");
   for (const auto& [dim, tag] : fluid) {
     double v = 0;
     occ::getMass(dim, tag, v);
@@ -207,19 +207,19 @@ RootMeshSummary write_root_mesh(const std::filesystem::path& file, const ValveGe
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   };
   s.cad_seconds = since(t0);
-  io::gmsh_call(source + ": meshing the root", [&] {
+  mesh::gmsh_call(source + ": meshing the root", [&] {
     gmsh::option::setNumber("Mesh.MeshSizeMax", g.fluid_far_size());
     gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 1);
     if (g.fluid_far_size() > g.mesh_size) set_valve_region_size(g);
     const auto t1 = std::chrono::steady_clock::now();
-    io::generate_deterministic_mesh(2);
+    mesh::generate_deterministic_mesh(2);
     s.surface_seconds = since(t1);
     const auto t2 = std::chrono::steady_clock::now();
-    io::generate_deterministic_mesh(3);
+    mesh::generate_deterministic_mesh(3);
     s.volume_seconds = since(t2);
   });
-  io::gmsh_call(source + ": writing", [&] {
+  mesh::gmsh_call(source + ": writing", [&] {
     gmsh::vectorpair boundary;
     gmsh::model::getBoundary(fluid, boundary, true, false, false);
     std::map<std::string, std::vector<int>> patches;
@@ -227,7 +227,7 @@ RootMeshSummary write_root_mesh(const std::filesystem::path& file, const ValveGe
       patches[classify(g, std::abs(tag))].push_back(std::abs(tag));
     for (const char* name : {"inlet", "outlet", "wall", "frame"}) {
       if (patches[name].empty())
-        throw io::MeshFileError(
+        throw mesh::MeshFileError(
             fmt::format("{}: no boundary surface classified as '{}'", source, name));
       const int pg = gmsh::model::addPhysicalGroup(2, patches[name]);
       gmsh::model::setPhysicalName(2, pg, name);

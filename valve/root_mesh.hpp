@@ -29,7 +29,7 @@ struct RootMeshSummary {
   double cad_seconds = 0, surface_seconds = 0, volume_seconds = 0;  // the steps of it
 };
 
-// Writes root.msh (MSH 4.1 binary) for `g`. Throws io::MeshFileError naming the step when the
+// Writes root.msh (MSH 4.1 binary) for `g`. Throws mesh::MeshFileError naming the step when the
 // CAD construction fails.
 RootMeshSummary write_root_mesh(const std::filesystem::path& file, const ValveGeometry& g);
 

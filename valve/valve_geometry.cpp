@@ -40,7 +40,7 @@ const ValveKey& find_key(const std::string& name, const std::string& where) {
   if (it != keys.end()) return *it;
   const auto nearest =
       std::min_element(keys.begin(), keys.end(), [&](const auto& a, const auto& b) {
-        return io::edit_distance(name, a.name) < io::edit_distance(name, b.name);
+        return scene::edit_distance(name, a.name) < scene::edit_distance(name, b.name);
       });
   throw std::invalid_argument(
       fmt::format("{}: unknown valve key '{}' (did you mean '{}'? keys: {})", where, name,

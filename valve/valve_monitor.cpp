@@ -39,15 +39,15 @@ int free_edge_midpoint(const structure::SolidMesh& m, const std::string& prefix)
   return best;
 }
 
-io::RegionMean region(const flow::LocalMesh& local, const Eigen::Vector3d& c, double r,
+analysis::RegionMean region(const mesh::LocalMesh& local, const Eigen::Vector3d& c, double r,
                       const char* key) {
-  return io::RegionMean(local, c, r, fmt::format("valve.{}", key));
+  return analysis::RegionMean(local, c, r, fmt::format("valve.{}", key));
 }
 
 }  // namespace
 
-ValveMonitor::ValveMonitor(const flow::LocalMesh& local, const ibm::ImmersedStructure& structure,
-                           int body, io::ValveMonitorOptions options,
+ValveMonitor::ValveMonitor(const mesh::LocalMesh& local, const ibm::ImmersedStructure& structure,
+                           int body, analysis::ValveMonitorOptions options,
                            const std::filesystem::path& run_dir, bool append)
     : local_(&local),
       structure_(&structure),
@@ -104,7 +104,7 @@ void ValveMonitor::sample(const flow::FlowState& state, std::int64_t step) {
   const auto fluxes = flow::patch_fluxes(*local_, state.velocity);
   const double inflow = -fluxes[inlet_], outflow = fluxes[outlet_];
   const double tpg =
-      (upstream_(state.pressure) - downstream_(state.pressure)) / io::pascal_per_mmhg;
+      (upstream_(state.pressure) - downstream_(state.pressure)) / analysis::pascal_per_mmhg;
   if (!local_->comm.root()) return;
 
   const Eigen::Matrix3Xd x = structure_->body_positions(body_);

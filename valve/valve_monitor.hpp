@@ -12,7 +12,7 @@
 //                     flow taken at the inlet
 // The open cycle's samples are saved in checkpoints, so a restarted run completes it; a restart
 // in place cuts valve_cycles.csv back to the cycles completed before that open cycle (valve.csv
-// is cut by io::continue_in_place).
+// is cut by run::continue_in_place).
 #pragma once
 
 #include <filesystem>
@@ -35,8 +35,8 @@ class ValveMonitor {
   // Collective. `structure` must outlive the monitor. Throws std::runtime_error naming the
   // structure or set when the leaflets lack node sets leaflet1..3 / leaflet<i>_free_edge, or a
   // pressure region holds no node. `append`: continue the CSV files of an earlier run.
-  ValveMonitor(const flow::LocalMesh& local, const ibm::ImmersedStructure& structure, int body,
-               io::ValveMonitorOptions options, const std::filesystem::path& run_dir, bool append);
+  ValveMonitor(const mesh::LocalMesh& local, const ibm::ImmersedStructure& structure, int body,
+               analysis::ValveMonitorOptions options, const std::filesystem::path& run_dir, bool append);
 
   // Collective: the row due after step `step` (step 0 = the initial state).
   void sample(const flow::FlowState& state, std::int64_t step);
@@ -52,12 +52,12 @@ class ValveMonitor {
   };
   void cut_cycles_csv();  // rank 0, restart in place
 
-  const flow::LocalMesh* local_;
+  const mesh::LocalMesh* local_;
   const ibm::ImmersedStructure* structure_;
   int body_ = 0;
-  io::ValveMonitorOptions options_;
+  analysis::ValveMonitorOptions options_;
   std::vector<Leaflet> leaflets_;
-  io::RegionMean upstream_, downstream_;
+  analysis::RegionMean upstream_, downstream_;
   int inlet_ = -1, outlet_ = -1;
   analysis::CycleTracker cycles_;
   std::ofstream csv_, cycles_csv_;

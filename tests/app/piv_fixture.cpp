@@ -27,14 +27,14 @@ int main(int argc, char** argv) {
   }
   const std::filesystem::path out = argv[1];
   std::filesystem::create_directories(out);
-  const auto mesh = io::generate_box({});
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, MPI_COMM_SELF, {2, "metis"});
+  const auto mesh = mesh::generate_box({});
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_SELF, {2, "metis"});
   auto mean = [](const Eigen::Vector3d& x) {
     return Eigen::Vector3d(0.2 + 0.5 * x.x(), 0.4 + 0.1 * x.y(), 0.3 * x.x());
   };
-  const auto nodes = io::all_owned_nodes(local);
-  io::PhaseStatistics stats(local, {0.0, 1, 0.0, 1000.0, "stats"}, nodes);
+  const auto nodes = analysis::all_owned_nodes(local);
+  analysis::PhaseStatistics stats(local, {0.0, 1, 0.0, 1000.0, "stats"}, nodes);
   auto rms = [](const Eigen::Vector3d& x) { return 0.05 * (1 + x.y()); };
   // Two samples mean +- a: RMS a in every component (not constant, so its correlation is defined).
   for (double sign : {1.0, -1.0}) {

@@ -27,8 +27,8 @@ inline std::vector<MeshKind> order_mesh_kinds() {
   return {{"hexa", 0.0, true}, {"tetra", 0.0, true}, {"tetra", 0.2, false}};
 }
 
-inline io::BoxSpec periodic_box(const std::string& type, int n, double perturbation = 0.0) {
-  io::BoxSpec spec;
+inline mesh::BoxSpec periodic_box(const std::string& type, int n, double perturbation = 0.0) {
+  mesh::BoxSpec spec;
   spec.cell_type = type;
   spec.cells = {n, n, n};
   spec.perturbation = perturbation;
@@ -40,29 +40,29 @@ inline io::BoxSpec periodic_box(const std::string& type, int n, double perturbat
 // prisms (optional) and a Gmsh Delaunay bent pipe.
 struct NamedMesh {
   std::string name;
-  flow::Mesh mesh;
+  mesh::Mesh mesh;
 };
 inline std::vector<NamedMesh> energy_meshes(bool with_prisms) {
   std::vector<NamedMesh> out;
-  out.push_back({"hexa", io::generate_box(periodic_box("hexa", 6))});
-  out.push_back({"split tetra", io::generate_box(periodic_box("tetra", 6))});
-  out.push_back({"perturbed tetra", io::generate_box(periodic_box("tetra", 6, 0.2))});
-  if (with_prisms) out.push_back({"prism", io::generate_box(periodic_box("prism", 6))});
+  out.push_back({"hexa", mesh::generate_box(periodic_box("hexa", 6))});
+  out.push_back({"split tetra", mesh::generate_box(periodic_box("tetra", 6))});
+  out.push_back({"perturbed tetra", mesh::generate_box(periodic_box("tetra", 6, 0.2))});
+  if (with_prisms) out.push_back({"prism", mesh::generate_box(periodic_box("prism", 6))});
   out.push_back(
-      {"gmsh bent pipe", io::generate_bent_pipe_mesh(0.5, 1.5, std::numbers::pi / 2, 0.25)});
+      {"gmsh bent pipe", mesh::generate_bent_pipe_mesh(0.5, 1.5, std::numbers::pi / 2, 0.25)});
   return out;
 }
 
 // The box `spec` distributed over `comm` with 2 ghost layers (the mesh is not kept).
-inline flow::LocalMesh local_box(const io::BoxSpec& spec, MPI_Comm comm = MPI_COMM_WORLD) {
-  const auto mesh = io::generate_box(spec);
-  return flow::distribute(mesh, flow::compute_dual_metrics(mesh), comm, {2, "metis"});
+inline mesh::LocalMesh local_box(const mesh::BoxSpec& spec, MPI_Comm comm = MPI_COMM_WORLD) {
+  const auto mesh = mesh::generate_box(spec);
+  return mesh::distribute(mesh, mesh::compute_dual_metrics(mesh), comm, {2, "metis"});
 }
 
 // Owned values of `component`-wide nodal data, summed over ranks into dual-node order.
-inline std::vector<double> gather_by_dual_node(const flow::LocalMesh& mesh,
+inline std::vector<double> gather_by_dual_node(const mesh::LocalMesh& mesh,
                                                const std::vector<double>& values, int components,
-                                               flow::GlobalIndex global_nodes) {
+                                               mesh::GlobalIndex global_nodes) {
   std::vector<double> out(static_cast<std::size_t>(global_nodes * components), 0.0);
   for (int i = 0; i < mesh.num_owned; ++i)
     for (int c = 0; c < components; ++c)

@@ -22,21 +22,21 @@ using Vec = Eigen::Vector3d;
 namespace {
 
 struct Box {
-  flow::Mesh mesh;
-  flow::DualMetrics metrics;
-  flow::LocalMesh local;
+  mesh::Mesh mesh;
+  mesh::DualMetrics metrics;
+  mesh::LocalMesh local;
   // A slab with n cells along y (the shear direction) and 4 along x and z, h = 1/n.
   explicit Box(int n) {
     auto spec = test::periodic_box("hexa", n);
     spec.cells = {4, n, 4};
     spec.length = Vec(4.0 / n, 1.0, 4.0 / n);
-    mesh = io::generate_box(spec);
-    metrics = flow::compute_dual_metrics(mesh);
-    local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
+    mesh = mesh::generate_box(spec);
+    metrics = mesh::compute_dual_metrics(mesh);
+    local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD);
   }
 };
 
-flow::FlowState at_rest(const flow::LocalMesh& m) {
+flow::FlowState at_rest(const mesh::LocalMesh& m) {
   return {flow::VectorField(m.num_local(), Vec::Zero()), flow::ScalarField(m.num_local(), 0.0),
           0.0};
 }

@@ -10,7 +10,7 @@
 #include <numbers>
 
 #include "field_test_utils.hpp"
-#include "flow/run_loop.hpp"
+#include "run/run_loop.hpp"
 #include "scene/mesh_source.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_keys_boundary.hpp"
@@ -21,19 +21,19 @@ namespace {
 
 // Channel [0, L] x [0, H] x [0, 3h] on nx x ny x 3 hexahedra, periodic in z.
 struct Channel {
-  flow::Mesh mesh;
-  flow::DualMetrics metrics;
-  flow::LocalMesh local;
+  mesh::Mesh mesh;
+  mesh::DualMetrics metrics;
+  mesh::LocalMesh local;
   double depth = 0;
   Channel(int nx, int ny, double length, double height, MPI_Comm comm = MPI_COMM_WORLD) {
-    io::BoxSpec box;
+    mesh::BoxSpec box;
     box.cells = {nx, ny, 3};
     depth = 3 * height / ny;
     box.length = Eigen::Vector3d(length, height, depth);
     box.periodic = {false, false, true};
-    mesh = io::generate_box(box);
-    metrics = flow::compute_dual_metrics(mesh);
-    local = flow::distribute(mesh, metrics, comm);
+    mesh = mesh::generate_box(box);
+    metrics = mesh::compute_dual_metrics(mesh);
+    local = mesh::distribute(mesh, metrics, comm);
   }
   int patch(const std::string& name) const {
     for (std::size_t p = 0; p < local.patch_names.size(); ++p)
@@ -50,8 +50,8 @@ std::vector<flow::BoundarySpec> channel_conditions(flow::Waveform q, flow::Bound
           flow::boundary_spec("ymax", flow::BoundaryType::wall)};
 }
 
-flow::RunOptions channel_options(double nu, double end) {
-  flow::RunOptions o;
+scene::RunOptions channel_options(double nu, double end) {
+  scene::RunOptions o;
   o.projection.density = 1.0;
   o.projection.viscosity = nu;
   o.projection.poisson.tolerance = 1e-10;
@@ -82,7 +82,7 @@ TEST_CASE("steady plane Poiseuille flow develops from a flat inlet") {
     q.mean = U * H * c.depth;
     auto options = channel_options(nu, 1.2 * H * H / nu);
     options.boundary = channel_conditions(q, outlet);
-    flow::RunLoop loop(c.mesh, c.metrics, c.local, options);
+    run::RunLoop loop(c.mesh, c.metrics, c.local, options);
     const auto summary = loop.run();
     // Profile u(y) = 6 U y (H - y) / H^2 / (1 - h^2) at x = 2 (developed, away from the
     // outlet), and the pressure gradient dp/dx = -12 rho nu U / H^2 / (1 - h^2) between x = 1.5
@@ -128,7 +128,7 @@ TEST_CASE("inlet flux equals Q(t) and mass is conserved to round-off with a puls
   auto q = sine(0.5 * area, 0.4 * area, 0.5);
   auto options = channel_options(0.05, 0.37);
   options.boundary = channel_conditions(q, flow::BoundaryType::convective_outlet);
-  flow::RunLoop loop(c.mesh, c.metrics, c.local, options);
+  run::RunLoop loop(c.mesh, c.metrics, c.local, options);
   const auto summary = loop.run();
   const auto flux = loop.boundary()->patch_fluxes(loop.state().velocity);
   const double t = loop.state().time;
@@ -148,7 +148,7 @@ TEST_CASE("inlet and outlet exchange roles while Q(t) < 0") {
   auto options = channel_options(0.05, 0.7);
   options.boundary = channel_conditions(q, flow::BoundaryType::convective_outlet);
   options.boundary[0].swap_with = "xmax";
-  flow::RunLoop loop(c.mesh, c.metrics, c.local, options);
+  run::RunLoop loop(c.mesh, c.metrics, c.local, options);
   const auto summary = loop.run();
   const auto& s = loop.state();
   const double t = s.time, qt = q(t);
@@ -189,19 +189,19 @@ TEST_CASE("missing and unknown boundary conditions are refused, naming the patch
   Channel c(4, 4, 1.0, 1.0);
   auto options = channel_options(0.1, 0.1);
   options.boundary = {flow::boundary_spec("xmin", flow::BoundaryType::wall)};
-  CHECK_THROWS_WITH_AS(flow::RunLoop(c.mesh, c.metrics, c.local, options),
+  CHECK_THROWS_WITH_AS(run::RunLoop(c.mesh, c.metrics, c.local, options),
                        doctest::Contains("patches 'xmax', 'ymin', 'ymax' of the mesh have no "
                                          "boundary condition (give each non-periodic patch one "
                                          "of: wall, slip, inlet"),
-                       flow::RunError);
+                       run::RunError);
   options.boundary.push_back(flow::boundary_spec("inlet", flow::BoundaryType::wall));
   CHECK_THROWS_WITH_AS(
-      flow::RunLoop(c.mesh, c.metrics, c.local, options),
+      run::RunLoop(c.mesh, c.metrics, c.local, options),
       doctest::Contains("patch 'inlet', which is not in the mesh (its patches: xmin, xmax"),
-      flow::RunError);
+      run::RunError);
   options.boundary = {flow::boundary_spec("zmin", flow::BoundaryType::wall)};
-  CHECK_THROWS_WITH_AS(flow::RunLoop(c.mesh, c.metrics, c.local, options),
-                       doctest::Contains("'zmin', which is periodic"), flow::RunError);
+  CHECK_THROWS_WITH_AS(run::RunLoop(c.mesh, c.metrics, c.local, options),
+                       doctest::Contains("'zmin', which is periodic"), run::RunError);
 }
 
 TEST_CASE("slip walls: an impulsively started stream between them becomes uniform") {
@@ -213,7 +213,7 @@ TEST_CASE("slip walls: an impulsively started stream between them becomes unifor
   auto options = channel_options(0.05, 10.0);
   options.boundary = channel_conditions(q, flow::BoundaryType::convective_outlet);
   options.boundary[2].type = options.boundary[3].type = flow::BoundaryType::slip;
-  flow::RunLoop stream(c.mesh, c.metrics, c.local, options);
+  run::RunLoop stream(c.mesh, c.metrics, c.local, options);
   const auto summary = stream.run();
   double worst = 0;
   for (int j = 0; j < c.local.num_owned; ++j)
@@ -382,8 +382,8 @@ type = "wall"
 [boundary.ymax]
 type = "wall"
 )";
-  const auto scene = io::parse_scene(scene_text, "t.toml");
-  const auto specs = io::read_boundary_conditions(scene, io::build_mesh(scene));
+  const auto scene = scene::parse_scene(scene_text, "t.toml");
+  const auto specs = scene::read_boundary_conditions(scene, scene::build_mesh(scene));
   bool found = false;
   for (const auto& spec : specs)
     if (spec.patch == "xmin") {

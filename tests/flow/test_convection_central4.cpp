@@ -50,20 +50,20 @@ struct Errors {
 };
 
 struct Built {
-  flow::Mesh mesh;
-  flow::DualMetrics metrics;
-  flow::LocalMesh local;
+  mesh::Mesh mesh;
+  mesh::DualMetrics metrics;
+  mesh::LocalMesh local;
 };
 
 Built build(const test::MeshKind& kind, int n, int ghost_layers = 2) {
   Built m;
-  m.mesh = io::generate_box(test::periodic_box(kind.type, n, kind.perturbation));
-  m.metrics = flow::compute_dual_metrics(m.mesh);
-  m.local = flow::distribute(m.mesh, m.metrics, MPI_COMM_WORLD, {ghost_layers, "metis"});
+  m.mesh = mesh::generate_box(test::periodic_box(kind.type, n, kind.perturbation));
+  m.metrics = mesh::compute_dual_metrics(m.mesh);
+  m.local = mesh::distribute(m.mesh, m.metrics, MPI_COMM_WORLD, {ghost_layers, "metis"});
   return m;
 }
 
-Errors measure(const flow::LocalMesh& local, flow::ConvectionScheme& scheme, int n,
+Errors measure(const mesh::LocalMesh& local, flow::ConvectionScheme& scheme, int n,
                VectorField* result = nullptr) {
   VectorField u(local.num_local()), conv;
   for (int i = 0; i < local.num_local(); ++i) u[i] = u_exact(local.position[i]);
@@ -136,9 +136,9 @@ TEST_CASE("central4: np = N reproduces one rank; fewer than 2 ghost layers are r
       m.local, std::vector<double>(conv.data()->data(), conv.data()->data() + 3 * conv.size()), 3,
       m.local.global_nodes);
   // Serial reference on every rank.
-  const auto mesh = io::generate_box(test::periodic_box(kind.type, 8, kind.perturbation));
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto serial = flow::distribute(mesh, metrics, MPI_COMM_SELF, {2, "metis"});
+  const auto mesh = mesh::generate_box(test::periodic_box(kind.type, 8, kind.perturbation));
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto serial = mesh::distribute(mesh, metrics, MPI_COMM_SELF, {2, "metis"});
   flow::ConvectionCentral4 serial_scheme(serial);
   VectorField serial_conv;
   measure(serial, serial_scheme, 8, &serial_conv);

@@ -17,7 +17,7 @@ struct Closure {
   double max_interior = 0;  // max |sum S + sum A| / (area scale), over all nodes
 };
 
-double max_closure(const flow::DualMetrics& m) {
+double max_closure(const mesh::DualMetrics& m) {
   std::vector<Eigen::Vector3d> sum(m.num_nodes(), Eigen::Vector3d::Zero());
   for (std::size_t e = 0; e < m.edges.size(); ++e) {
     sum[m.edges[e][0]] += m.edge_normal[e];
@@ -25,12 +25,12 @@ double max_closure(const flow::DualMetrics& m) {
   }
   for (const auto& b : m.boundary) sum[b.node] += b.area;
   double worst = 0;
-  for (flow::GlobalIndex j = 0; j < m.num_nodes(); ++j)
+  for (mesh::GlobalIndex j = 0; j < m.num_nodes(); ++j)
     worst = std::max(worst, sum[j].norm() / (m.h[j] * m.h[j]));
   return worst;
 }
 
-double max_gradient_error(const flow::DualMetrics& m, const Eigen::Vector3d& g) {
+double max_gradient_error(const mesh::DualMetrics& m, const Eigen::Vector3d& g) {
   std::vector<Eigen::Vector3d> raw(m.num_nodes(), Eigen::Vector3d::Zero());
   for (std::size_t e = 0; e < m.edges.size(); ++e) {
     const double dphi = g.dot(m.edge_vector[e]);  // phi_k - phi_j for phi = g.x
@@ -38,7 +38,7 @@ double max_gradient_error(const flow::DualMetrics& m, const Eigen::Vector3d& g) 
     raw[m.edges[e][1]] += 0.5 * dphi * m.edge_normal[e];
   }
   double worst = 0;
-  for (flow::GlobalIndex j = 0; j < m.num_nodes(); ++j) {
+  for (mesh::GlobalIndex j = 0; j < m.num_nodes(); ++j) {
     const Eigen::Vector3d grad = m.gradient_correction[j] * (raw[j] / m.volume[j]);
     worst = std::max(worst, (grad - g).norm() / g.norm());
   }
@@ -51,7 +51,7 @@ TEST_CASE("dual metrics on box meshes of every cell type") {
   for (std::string type : {"hexa", "tetra", "prism", "pyramid", "mixed"}) {
     for (double perturbation : {0.0, 0.2}) {
       for (bool periodic : {false, true}) {
-        io::BoxSpec spec;
+        mesh::BoxSpec spec;
         spec.cell_type = type;
         spec.cells = {8, 5, 4};
         spec.length = Eigen::Vector3d(1.0, 0.7, 0.5);
@@ -60,13 +60,13 @@ TEST_CASE("dual metrics on box meshes of every cell type") {
         CAPTURE(type);
         CAPTURE(perturbation);
         CAPTURE(periodic);
-        const auto mesh = io::generate_box(spec);
-        const auto m = flow::compute_dual_metrics(mesh);
-        flow::CompensatedSum sum;
+        const auto mesh = mesh::generate_box(spec);
+        const auto m = mesh::compute_dual_metrics(mesh);
+        core::CompensatedSum sum;
         for (double v : m.volume) sum.add(v);
         const double total = sum.value();
         CHECK(std::abs(total - 0.35) / 0.35 < 1e-12);
-        CHECK(std::abs(flow::mesh_volume(mesh) - 0.35) / 0.35 < 1e-12);
+        CHECK(std::abs(mesh::mesh_volume(mesh) - 0.35) / 0.35 < 1e-12);
         CHECK(max_closure(m) < 1e-12);
         CHECK(max_gradient_error(m, Eigen::Vector3d(1.3, -0.4, 2.1)) < 1e-10);
       }

@@ -42,20 +42,20 @@ struct Measure {
   double form_difference = 0;  // |C_skew - C_flux form| / |C_skew|
 };
 
-double inner(const flow::LocalMesh& m, const flow::VectorField& a, const flow::VectorField& b) {
+double inner(const mesh::LocalMesh& m, const flow::VectorField& a, const flow::VectorField& b) {
   double s = 0;
   for (int i = 0; i < m.num_owned; ++i) s += m.volume[i] * a[i].dot(b[i]);
   return m.comm.sum(s);
 }
 
-double relative_energy_rate(const flow::LocalMesh& m, const flow::VectorField& u,
+double relative_energy_rate(const mesh::LocalMesh& m, const flow::VectorField& u,
                             const flow::VectorField& c) {
   return std::abs(inner(m, u, c)) / std::sqrt(inner(m, u, u) * inner(m, c, c));
 }
 
-Measure measure(const flow::Mesh& mesh, const std::string& scheme) {
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+Measure measure(const mesh::Mesh& mesh, const std::string& scheme) {
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
   flow::ProjectionOptions options;
   options.scheme = scheme;
   options.fourth_order_operators = scheme == "central4";

@@ -1,4 +1,4 @@
-// The time-dependent and the flow-rate drives of [forcing] through flow::RunLoop, on a box
+// The time-dependent and the flow-rate drives of [forcing] through run::RunLoop, on a box
 // periodic in x, y and z at 1 and 2 ranks, where a uniform force only moves the fluid as a whole
 // (convection and viscosity of a uniform field vanish, its divergence is zero):
 // - a sine force F0 + A sin(2 pi t / T + phi) accelerates the fluid as its time integral / rho;
@@ -17,7 +17,7 @@
 
 #include "analysis/section_flux.hpp"
 #include "field_test_utils.hpp"
-#include "flow/run_loop.hpp"
+#include "run/run_loop.hpp"
 
 using namespace valsalva;
 using Vec = Eigen::Vector3d;
@@ -27,18 +27,18 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 struct Box {
-  flow::Mesh mesh;
-  flow::DualMetrics metrics;
-  flow::LocalMesh local;
+  mesh::Mesh mesh;
+  mesh::DualMetrics metrics;
+  mesh::LocalMesh local;
   Box() {
-    mesh = io::generate_box(test::periodic_box("tetra", 4, 0.1));  // 1 m^3, irregular cells
-    metrics = flow::compute_dual_metrics(mesh);
-    local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
+    mesh = mesh::generate_box(test::periodic_box("tetra", 4, 0.1));  // 1 m^3, irregular cells
+    metrics = mesh::compute_dual_metrics(mesh);
+    local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD);
   }
 };
 
-flow::RunOptions options(double end, double dt) {
-  flow::RunOptions o;
+scene::RunOptions options(double end, double dt) {
+  scene::RunOptions o;
   o.projection.density = 1.3;
   o.projection.viscosity = 0.01;
   o.time.end = end;
@@ -48,7 +48,7 @@ flow::RunOptions options(double end, double dt) {
 }
 
 // Max over owned nodes of |u - expected| (collective).
-double deviation(const flow::LocalMesh& local, const flow::VectorField& u, const Vec& expected) {
+double deviation(const mesh::LocalMesh& local, const flow::VectorField& u, const Vec& expected) {
   double worst = 0;
   for (int j = 0; j < local.num_owned; ++j) worst = std::max(worst, (u[j] - expected).norm());
   return local.comm.max(worst);
@@ -66,7 +66,7 @@ TEST_CASE("a sine and a table force move a periodic box as their time integrals"
   o.forcing.amplitude = Vec(0.0, 2.0, 1.0);
   o.forcing.period = period, o.forcing.phase = phase;
   {
-    flow::RunLoop loop(box.mesh, box.metrics, box.local, o);
+    run::RunLoop loop(box.mesh, box.metrics, box.local, o);
     loop.run();
     const double w = 2 * kPi / period;
     const Vec integral = o.forcing.force * end +
@@ -83,7 +83,7 @@ TEST_CASE("a sine and a table force move a periodic box as their time integrals"
   o.forcing.waveform = flow::Waveform::Kind::table;
   o.forcing.factor = flow::table_waveform({0.0, 0.1, 0.2}, {1.0, -2.0, 1.0});  // period 0.2
   {
-    flow::RunLoop loop(box.mesh, box.metrics, box.local, o);
+    run::RunLoop loop(box.mesh, box.metrics, box.local, o);
     loop.run();
     // int_0^0.5 s dt: two periods (-0.1 each) and the first half period (-0.05).
     const Vec expected = o.forcing.force * (2 * -0.1 - 0.05) / o.projection.density;
@@ -101,15 +101,15 @@ TEST_CASE("the flow-rate drive holds the flux of a section and takes the force t
   o.forcing.flow_rate.kind = flow::Waveform::Kind::sine;
   o.forcing.flow_rate.mean = 0.5, o.forcing.flow_rate.amplitude = 0.2;
   o.forcing.flow_rate.period = 0.25;
-  io::SectionOptions cut;
+  analysis::SectionOptions cut;
   cut.name = "cut", cut.point = Vec(0.55, 0.5, 0.5), cut.normal = Vec(1, 0, 0);
-  const auto section = std::make_shared<io::SectionFlux>(box.local, cut);
+  const auto section = std::make_shared<analysis::SectionFlux>(box.local, cut);
   o.section_flux = [section](const flow::EdgeField& f) { return section->flux(f); };
-  flow::RunLoop loop(box.mesh, box.metrics, box.local, o);
+  run::RunLoop loop(box.mesh, box.metrics, box.local, o);
   const auto& q = o.forcing.flow_rate;
   const double area = 1.0;  // the box's section across x
   double worst_flux = 0, worst_force = 0, worst_velocity = 0, previous = 0;  // at rest: Q = 0
-  flow::RunHooks hooks;
+  run::RunHooks hooks;
   hooks.after_step = [&](const flow::FlowState& state, std::int64_t) {
     const double t = state.time;
     worst_flux = std::max(worst_flux, std::abs(section->flux(loop.face_flux()) / q(t) - 1));

@@ -14,14 +14,14 @@ using namespace valsalva;
 
 namespace {
 
-flow::Mesh test_mesh(const std::string& type, bool periodic) {
-  io::BoxSpec spec;
+mesh::Mesh test_mesh(const std::string& type, bool periodic) {
+  mesh::BoxSpec spec;
   spec.cell_type = type;
   spec.cells = {8, 6, 5};
   spec.length = Eigen::Vector3d(1.0, 0.6, 0.5);
   spec.perturbation = type == "tetra" ? 0.2 : 0.0;
   spec.periodic = {false, periodic, periodic};
-  return io::generate_box(spec);
+  return mesh::generate_box(spec);
 }
 
 }  // namespace
@@ -32,14 +32,14 @@ TEST_CASE("distributed dual metrics and halo") {
       CAPTURE(type);
       CAPTURE(periodic);
       const auto mesh = test_mesh(type, periodic);
-      const auto metrics = flow::compute_dual_metrics(mesh);
-      auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+      const auto metrics = mesh::compute_dual_metrics(mesh);
+      auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
       const auto& comm = local.comm;
 
       // Ownership covers every node exactly once.
       CHECK(comm.sum(static_cast<std::int64_t>(local.num_owned)) == metrics.num_nodes());
 
-      const auto id = flow::measure_metric_identities(local, flow::mesh_volume(mesh),
+      const auto id = mesh::measure_metric_identities(local, mesh::mesh_volume(mesh),
                                                       Eigen::Vector3d(0.7, -1.9, 0.35));
       CHECK(id.volume_error < 1e-12);
       CHECK(id.closure_error < 1e-12);
@@ -50,7 +50,7 @@ TEST_CASE("distributed dual metrics and halo") {
       for (int i = 0; i < local.num_owned; ++i)
         field[i] =
             Eigen::Vector3d(local.global_id[i], 2.0 * local.global_id[i], local.position[i].x());
-      local.halo.exchange(field, flow::HaloMode::insert);
+      local.halo.exchange(field, mesh::HaloMode::insert);
       int wrong = 0;
       for (int i = local.num_owned; i < local.num_local(); ++i)
         wrong += field[i] != Eigen::Vector3d(local.global_id[i], 2.0 * local.global_id[i],
@@ -60,7 +60,7 @@ TEST_CASE("distributed dual metrics and halo") {
       // Halo add: every ghost copy contributes 1 to its owner; the total equals the number of
       // ghost copies, and owners see 1 + (number of ranks holding a copy).
       std::vector<double> ones(local.num_local(), 1.0);
-      local.halo.exchange(ones, flow::HaloMode::add);
+      local.halo.exchange(ones, mesh::HaloMode::add);
       double owned_sum = 0;
       for (int i = 0; i < local.num_owned; ++i) owned_sum += ones[i];
       const auto ghosts = comm.sum(static_cast<std::int64_t>(local.num_local() - local.num_owned));

@@ -10,24 +10,24 @@
 
 #include "field_test_utils.hpp"
 #include "flow/lumped_outlets.hpp"
-#include "flow/run_loop.hpp"
+#include "run/run_loop.hpp"
 
 using namespace valsalva;
 
 namespace {
 
 struct Box {
-  flow::Mesh mesh;
-  flow::DualMetrics metrics;
-  flow::LocalMesh local;
+  mesh::Mesh mesh;
+  mesh::DualMetrics metrics;
+  mesh::LocalMesh local;
   explicit Box(bool periodic_z) {
-    io::BoxSpec box;
+    mesh::BoxSpec box;
     box.cells = {12, 4, 3};
     box.length = Eigen::Vector3d(3.0, 1.0, 0.75);
     box.periodic = {false, false, periodic_z};
-    mesh = io::generate_box(box);
-    metrics = flow::compute_dual_metrics(mesh);
-    local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
+    mesh = mesh::generate_box(box);
+    metrics = mesh::compute_dual_metrics(mesh);
+    local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD);
   }
   int patch(const std::string& name) const {
     for (std::size_t p = 0; p < local.patch_names.size(); ++p)
@@ -36,8 +36,8 @@ struct Box {
   }
 };
 
-flow::RunOptions options(double end) {
-  flow::RunOptions o;
+scene::RunOptions options(double end) {
+  scene::RunOptions o;
   o.projection.density = 1.0;
   o.projection.viscosity = 0.05;
   o.projection.poisson.tolerance = 1e-12;
@@ -123,7 +123,7 @@ TEST_CASE(
     o.boundary = {inlet(0.6, 0.3), std::move(outlet),
                   flow::boundary_spec("ymin", flow::BoundaryType::wall),
                   flow::boundary_spec("ymax", flow::BoundaryType::wall)};
-    auto loop = std::make_unique<flow::RunLoop>(box.mesh, box.metrics, box.local, o);
+    auto loop = std::make_unique<run::RunLoop>(box.mesh, box.metrics, box.local, o);
     loop->run();
     return loop;
   };
@@ -161,9 +161,9 @@ TEST_CASE("two RCR outlets: the projection uses the law's end-of-step pressure, 
                 flow::boundary_spec("ymin", flow::BoundaryType::wall),
                 flow::boundary_spec("zmin", flow::BoundaryType::slip),
                 flow::boundary_spec("zmax", flow::BoundaryType::slip)};
-  flow::RunLoop loop(box.mesh, box.metrics, box.local, o);
+  run::RunLoop loop(box.mesh, box.metrics, box.local, o);
   double worst = 0, scale = 0;
-  flow::RunHooks hooks;
+  run::RunHooks hooks;
   hooks.after_step = [&](const flow::FlowState&, std::int64_t) {
     const auto* lumped = loop.solver().lumped_outlets();
     worst = std::max(worst, lumped->last_mismatch());
@@ -200,9 +200,9 @@ TEST_CASE("a resistance outlet next to a fixed pressure outlet: shared nodes kee
                 flow::boundary_spec("ymin", flow::BoundaryType::wall),
                 flow::boundary_spec("zmin", flow::BoundaryType::wall),
                 flow::boundary_spec("zmax", flow::BoundaryType::wall)};
-  flow::RunLoop loop(box.mesh, box.metrics, box.local, o);
+  run::RunLoop loop(box.mesh, box.metrics, box.local, o);
   double worst = 0;
-  flow::RunHooks hooks;
+  run::RunHooks hooks;
   hooks.after_step = [&](const flow::FlowState&, std::int64_t) {
     worst = std::max(worst, loop.solver().lumped_outlets()->last_mismatch());
   };

@@ -50,7 +50,7 @@ struct Errors {
 };
 
 // Volume-weighted L2 errors of every operator at owned nodes.
-Errors operator_errors(const flow::LocalMesh& mesh) {
+Errors operator_errors(const mesh::LocalMesh& mesh) {
   const int n = mesh.num_local();
   ScalarField phi(n), div, lap;
   VectorField u(n), grad, conv, visc;
@@ -89,7 +89,7 @@ using test::local_box;
 TEST_CASE("operators are exact for linear fields") {
   for (std::string type : {"tetra", "hexa", "mixed"}) {
     CAPTURE(type);
-    io::BoxSpec spec;
+    mesh::BoxSpec spec;
     spec.cell_type = type;
     spec.cells = {5, 4, 6};
     spec.length = Eigen::Vector3d(1.0, 0.8, 1.2);
@@ -182,7 +182,7 @@ TEST_CASE("operators at np ranks reproduce one rank") {
   const auto par = local_box(spec, MPI_COMM_WORLD);
   const auto ser = local_box(spec, MPI_COMM_SELF);
   const auto nodes = par.comm.sum(static_cast<std::int64_t>(par.num_owned));
-  auto run = [&](const flow::LocalMesh& mesh) {
+  auto run = [&](const mesh::LocalMesh& mesh) {
     const int n = mesh.num_local();
     ScalarField phi(n), div, lap;
     VectorField u(n), grad, conv, visc;
@@ -220,14 +220,14 @@ TEST_CASE("viscous with the P1 stiffness weights and no correction is exact for 
   // weights is the median-dual flux of the piecewise-linear field, so a linear field has zero
   // Laplacian at every node of a perturbed tetrahedral mesh, boundary nodes included (their
   // boundary-face flux grad v . A closes the dual volume).
-  io::BoxSpec spec;
+  mesh::BoxSpec spec;
   spec.cell_type = "tetra";
   spec.cells = {5, 4, 6};
   spec.length = Eigen::Vector3d(1.0, 0.8, 0.3);  // flat cells, as in the DFG slab
   spec.perturbation = 0.2;
-  const auto box = io::generate_box(spec);
-  const auto metrics = flow::compute_dual_metrics(box);
-  const auto mesh = flow::distribute(box, metrics, MPI_COMM_WORLD, {2, "metis"});
+  const auto box = mesh::generate_box(spec);
+  const auto metrics = mesh::compute_dual_metrics(box);
+  const auto mesh = mesh::distribute(box, metrics, MPI_COMM_WORLD, {2, "metis"});
   const auto p1 = flow::poisson_weights(box, metrics, mesh);
   Eigen::Matrix3d A;
   A << 0.3, -1.2, 0.5, 2.0, -0.4, 0.9, -0.6, 1.1, 0.1;
@@ -250,12 +250,12 @@ TEST_CASE("viscous with the slab stiffness weights of prisms is exact for linear
   // flow::slab_stiffness_weights on the right prisms of an extruded disk (the cylinder slab's
   // cells unsplit): the lumped tensor-product weights close the dual volumes like the P1 ones,
   // so a linear field has zero Laplacian at every node, boundary nodes included.
-  io::PeriodicPipeSpec spec;
+  mesh::PeriodicPipeSpec spec;
   spec.radius = 0.5, spec.target_size = 0.15, spec.layers = 3, spec.length = 0.2;
-  auto pipe = io::generate_periodic_pipe_mesh(spec);
+  auto pipe = mesh::generate_periodic_pipe_mesh(spec);
   pipe.periodic.clear();  // zmin / zmax as plain boundaries: a linear field is not periodic
-  const auto metrics = flow::compute_dual_metrics(pipe);
-  const auto mesh = flow::distribute(pipe, metrics, MPI_COMM_WORLD, {2, "metis"});
+  const auto metrics = mesh::compute_dual_metrics(pipe);
+  const auto mesh = mesh::distribute(pipe, metrics, MPI_COMM_WORLD, {2, "metis"});
   Eigen::Matrix3d A;
   A << 0.3, -1.2, 0.5, 2.0, -0.4, 0.9, -0.6, 1.1, 0.1;
   VectorField v(mesh.num_local()), visc;

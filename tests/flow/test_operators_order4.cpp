@@ -71,16 +71,16 @@ struct Fields {
 };
 
 struct Built {
-  flow::Mesh mesh;
-  flow::DualMetrics metrics;
-  flow::LocalMesh local;
+  mesh::Mesh mesh;
+  mesh::DualMetrics metrics;
+  mesh::LocalMesh local;
 };
 
 Built build(const test::MeshKind& kind, int n, MPI_Comm comm = MPI_COMM_WORLD) {
   Built m;
-  m.mesh = io::generate_box(test::periodic_box(kind.type, n, kind.perturbation));
-  m.metrics = flow::compute_dual_metrics(m.mesh);
-  m.local = flow::distribute(m.mesh, m.metrics, comm, {2, "metis"});
+  m.mesh = mesh::generate_box(test::periodic_box(kind.type, n, kind.perturbation));
+  m.metrics = mesh::compute_dual_metrics(m.mesh);
+  m.local = mesh::distribute(m.mesh, m.metrics, comm, {2, "metis"});
   return m;
 }
 
@@ -194,7 +194,7 @@ TEST_CASE("4th-order operators: np = N reproduces one rank") {
   const Built m = build(kind, 8);
   const Built serial = build(kind, 8, MPI_COMM_SELF);
   const Fields f = apply(m, true), s = apply(serial, true);
-  auto by_node = [](const flow::LocalMesh& local, const std::vector<double>& values, int c) {
+  auto by_node = [](const mesh::LocalMesh& local, const std::vector<double>& values, int c) {
     return test::gather_by_dual_node(local, values, c, local.global_nodes);
   };
   CHECK(test::max_abs_difference(by_node(m.local, test::flatten(f.grad), 3),
@@ -206,16 +206,16 @@ TEST_CASE("4th-order operators: np = N reproduces one rank") {
 }
 
 TEST_CASE("4th-order operators: refused with one ghost layer and with an LES model") {
-  const auto mesh = io::generate_box(test::periodic_box("hexa", 6));
-  const auto metrics = flow::compute_dual_metrics(mesh);
+  const auto mesh = mesh::generate_box(test::periodic_box("hexa", 6));
+  const auto metrics = mesh::compute_dual_metrics(mesh);
   int size = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   if (size > 1) {
-    const auto thin = flow::distribute(mesh, metrics, MPI_COMM_WORLD, {1, "metis"});
+    const auto thin = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {1, "metis"});
     CHECK_THROWS_WITH_AS(flow::Order4Operators(thin, flow::laplacian_weights(thin)),
                          doctest::Contains("at least 2 ghost layers"), std::invalid_argument);
   }
-  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
   flow::ProjectionOptions options;
   options.fourth_order_operators = true;
   options.subgrid_viscosity = [](int, const TensorField&, ScalarField&) {};

@@ -29,17 +29,17 @@ double lap_exact(const Eigen::Vector3d& x) {
 }
 
 struct Box {
-  flow::Mesh mesh;
-  flow::DualMetrics metrics;
-  flow::LocalMesh local;
+  mesh::Mesh mesh;
+  mesh::DualMetrics metrics;
+  mesh::LocalMesh local;
   std::vector<double> weights;
 };
 
-std::unique_ptr<Box> local_box(const io::BoxSpec& spec, MPI_Comm comm) {
+std::unique_ptr<Box> local_box(const mesh::BoxSpec& spec, MPI_Comm comm) {
   auto box = std::make_unique<Box>();
-  box->mesh = io::generate_box(spec);
-  box->metrics = flow::compute_dual_metrics(box->mesh);
-  box->local = flow::distribute(box->mesh, box->metrics, comm, {2, "metis"});
+  box->mesh = mesh::generate_box(spec);
+  box->metrics = mesh::compute_dual_metrics(box->mesh);
+  box->local = mesh::distribute(box->mesh, box->metrics, comm, {2, "metis"});
   box->weights = flow::poisson_weights(box->mesh, box->metrics, box->local);
   return box;
 }

@@ -40,7 +40,7 @@ double random_unit(std::uint64_t id, int component) {  // SplitMix64 of (id, com
 }
 
 template <class T>
-double inner(const flow::LocalMesh& m, const std::vector<T>& a, const std::vector<T>& b) {
+double inner(const mesh::LocalMesh& m, const std::vector<T>& a, const std::vector<T>& b) {
   double s = 0;
   for (int i = 0; i < m.num_owned; ++i) {
     if constexpr (std::is_same_v<T, double>)
@@ -57,7 +57,7 @@ struct Fields {
 };
 
 // Random u (zero at boundary nodes) and p with valid ghosts.
-Fields random_fields(const flow::LocalMesh& local) {
+Fields random_fields(const mesh::LocalMesh& local) {
   std::vector<char> wall(local.num_local(), 0);
   for (const auto& b : local.boundary) wall[b.node] = 1;
   Fields f{flow::VectorField(local.num_local()), flow::ScalarField(local.num_local())};
@@ -73,8 +73,8 @@ Fields random_fields(const flow::LocalMesh& local) {
 
 TEST_CASE("the nodal pressure gradient is the adjoint of the projection's divergence") {
   for (const auto& c : test::energy_meshes(false)) {
-    const auto metrics = flow::compute_dual_metrics(c.mesh);
-    const auto local = flow::distribute(c.mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+    const auto metrics = mesh::compute_dual_metrics(c.mesh);
+    const auto local = mesh::distribute(c.mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
     const auto f = random_fields(local);
     flow::VectorField g;
     flow::ScalarField d;
@@ -97,8 +97,8 @@ TEST_CASE("the nodal pressure gradient is the adjoint of the projection's diverg
 
 TEST_CASE("the approximate projection is a contraction: D G is bounded by the Poisson matrix") {
   for (const auto& c : test::energy_meshes(false)) {
-    const auto metrics = flow::compute_dual_metrics(c.mesh);
-    const auto local = flow::distribute(c.mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+    const auto metrics = mesh::compute_dual_metrics(c.mesh);
+    const auto local = mesh::distribute(c.mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
     const auto weights = flow::poisson_weights(c.mesh, metrics, local);
     flow::PoissonOptions options;
     options.tolerance = 1e-12;
@@ -125,9 +125,9 @@ TEST_CASE("the approximate projection is a contraction: D G is bounded by the Po
 }
 
 TEST_CASE("an inviscid random divergence-free field on perturbed tetrahedra never gains energy") {
-  const auto mesh = io::generate_box(test::periodic_box("tetra", 6, 0.2));
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  const auto mesh = mesh::generate_box(test::periodic_box("tetra", 6, 0.2));
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
   for (const std::string scheme : {"central2", "central4"}) {
     flow::ProjectionOptions options;
     options.scheme = scheme;

@@ -16,7 +16,7 @@
 #include <string>
 
 #include "field_test_utils.hpp"
-#include "flow/run_loop.hpp"
+#include "run/run_loop.hpp"
 #include "validation/bench/womersley_run.hpp"
 
 using namespace valsalva;
@@ -53,10 +53,10 @@ void check_agreement(const Fields& on_comm, const Fields& alone, const std::stri
 Fields taylor_green(MPI_Comm comm, bool order4 = false) {
   auto spec = test::periodic_box("tetra", 12, order4 ? 0.2 : 0.0);
   spec.length = Eigen::Vector3d::Constant(2 * std::numbers::pi);
-  const auto mesh = io::generate_box(spec);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, comm);
-  flow::RunOptions o;
+  const auto mesh = mesh::generate_box(spec);
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto local = mesh::distribute(mesh, metrics, comm);
+  scene::RunOptions o;
   o.projection.density = 1.0;
   o.projection.viscosity = 0.01;
   o.projection.poisson.tolerance = 1e-13;
@@ -68,11 +68,11 @@ Fields taylor_green(MPI_Comm comm, bool order4 = false) {
   o.time.end = 1.0;
   o.time.max_steps = 6;
   o.output.print = false;
-  flow::RunLoop loop(mesh, metrics, local, o);
+  run::RunLoop loop(mesh, metrics, local, o);
   loop.run();
   std::vector<double> u;
   for (const auto& v : loop.state().velocity) u.insert(u.end(), {v.x(), v.y(), v.z()});
-  const auto n = static_cast<flow::GlobalIndex>(metrics.num_nodes());
+  const auto n = static_cast<mesh::GlobalIndex>(metrics.num_nodes());
   return {test::gather_by_dual_node(local, u, 3, n),
           test::gather_by_dual_node(local, loop.state().pressure, 1, n)};
 }

@@ -14,7 +14,7 @@
 
 #include "field_test_utils.hpp"
 #include "flow/body_forcing.hpp"
-#include "flow/run_loop.hpp"
+#include "run/run_loop.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_keys_flow.hpp"
 
@@ -24,23 +24,23 @@ namespace {
 
 // A Taylor-Green set-up in units U0 = L = 1, rho = 1, Re = 100 on n x n x 3 hexahedra.
 struct Setup {
-  flow::Mesh mesh;
-  flow::DualMetrics metrics;
-  flow::LocalMesh local;
+  mesh::Mesh mesh;
+  mesh::DualMetrics metrics;
+  mesh::LocalMesh local;
   Setup(int n, MPI_Comm comm, bool periodic_z = true) {
-    io::BoxSpec box;
+    mesh::BoxSpec box;
     const double two_pi = 2 * std::numbers::pi;
     box.cells = {n, n, 3};
     box.length = Eigen::Vector3d(two_pi, two_pi, 3 * two_pi / n);
     box.periodic = {true, true, periodic_z};
-    mesh = io::generate_box(box);
-    metrics = flow::compute_dual_metrics(mesh);
-    local = flow::distribute(mesh, metrics, comm);
+    mesh = mesh::generate_box(box);
+    metrics = mesh::compute_dual_metrics(mesh);
+    local = mesh::distribute(mesh, metrics, comm);
   }
 };
 
-flow::RunOptions tgv_options(double end) {
-  flow::RunOptions o;
+scene::RunOptions tgv_options(double end) {
+  scene::RunOptions o;
   o.projection.density = 1.0;
   o.projection.viscosity = 0.01;
   o.projection.poisson.tolerance = 1e-13;  // np agreement to 1e-10 needs a tight projection
@@ -54,8 +54,8 @@ flow::RunOptions tgv_options(double end) {
 struct Recorder {
   std::vector<std::pair<std::string, double>> writes;
   std::vector<std::string> names;
-  flow::FieldSink sink() {
-    return [this](const std::string& base, double t, const flow::FieldSet& set) {
+  io::FieldSink sink() {
+    return [this](const std::string& base, double t, const io::FieldSet& set) {
       writes.emplace_back(base, t);
       names.clear();
       for (const auto& s : set.scalars) names.push_back(s.first);
@@ -74,12 +74,12 @@ TEST_CASE("Taylor-Green run of a non-Newtonian fluid: no error against the Newto
   auto& cy = options.projection.rheology;
   cy.law = flow::ViscosityLaw::carreau_yasuda;
   cy.mu_0 = 0.05, cy.mu_inf = 0.01, cy.lambda = 1, cy.a = 2, cy.n = 0.5;
-  flow::RunLoop loop(s.mesh, s.metrics, s.local, options);
+  run::RunLoop loop(s.mesh, s.metrics, s.local, options);
   const auto summary = loop.run();
   CHECK(summary.steps > 0);
   CHECK_FALSE(summary.taylor_green);
   options.projection.rheology = {};  // the same run Newtonian: reported
-  flow::RunLoop newtonian(s.mesh, s.metrics, s.local, options);
+  run::RunLoop newtonian(s.mesh, s.metrics, s.local, options);
   CHECK(newtonian.run().taylor_green);
 }
 
@@ -90,7 +90,7 @@ TEST_CASE("Taylor-Green run: exact-solution error, output times, rank independen
   options.output.print = true;  // the progress lines hold collectives too: run them at np 2
   options.output.log_every = 2;
   Recorder rec;
-  flow::RunLoop loop(s.mesh, s.metrics, s.local, options, rec.sink());
+  run::RunLoop loop(s.mesh, s.metrics, s.local, options, rec.sink());
   const auto summary = loop.run();
   REQUIRE(summary.taylor_green);
   const auto& e = *summary.taylor_green;
@@ -132,9 +132,9 @@ TEST_CASE("Taylor-Green run: exact-solution error, output times, rank independen
 
   // The same run on one rank (every rank runs it alone) agrees to 1e-10 of U0.
   Setup serial(16, MPI_COMM_SELF);
-  flow::RunLoop alone(serial.mesh, serial.metrics, serial.local, options);
+  run::RunLoop alone(serial.mesh, serial.metrics, serial.local, options);
   alone.run();
-  const auto n = static_cast<flow::GlobalIndex>(s.metrics.num_nodes());
+  const auto n = static_cast<mesh::GlobalIndex>(s.metrics.num_nodes());
   const auto a = test::gather_by_dual_node(s.local, test::flatten(loop.state().velocity), 3, n);
   const auto b =
       test::gather_by_dual_node(serial.local, test::flatten(alone.state().velocity), 3, n);
@@ -150,7 +150,7 @@ TEST_CASE("time.land_on_output = false: full steps only, fields at the first ste
   options.output.interval = 0.2;
   options.time.land_on_output = false;
   Recorder rec;
-  flow::RunLoop loop(s.mesh, s.metrics, s.local, options, rec.sink());
+  run::RunLoop loop(s.mesh, s.metrics, s.local, options, rec.sink());
   const auto summary = loop.run();
   CHECK(summary.steps == 4);
   CHECK(summary.time == doctest::Approx(0.5).epsilon(1e-14));
@@ -162,7 +162,7 @@ TEST_CASE("time.land_on_output = false: full steps only, fields at the first ste
   // Landing on the output times (the default) splits those steps: 0.125, 0.2, 0.3, 0.4, 0.5.
   options.time.land_on_output = true;
   Recorder landing;
-  flow::RunLoop landed(s.mesh, s.metrics, s.local, options, landing.sink());
+  run::RunLoop landed(s.mesh, s.metrics, s.local, options, landing.sink());
   CHECK(landed.run().steps == 5);
   REQUIRE(landing.writes.size() == 4);
   CHECK(landing.writes[1].second == doctest::Approx(0.2).epsilon(1e-14));
@@ -174,8 +174,8 @@ TEST_CASE("time.land_on: the step before each listed time is shortened to land o
   options.time.dt = 0.125;                  // full steps at 0.125, 0.25, 0.375, 0.5
   options.time.land_on = {0.05, 0.3, 0.9};  // sorted as the scene reader does; 0.9 > end: ignored
   std::vector<double> times;
-  flow::RunLoop loop(s.mesh, s.metrics, s.local, options);
-  flow::RunHooks hooks;
+  run::RunLoop loop(s.mesh, s.metrics, s.local, options);
+  run::RunHooks hooks;
   hooks.after_step = [&times](const flow::FlowState& state, std::int64_t) {
     times.push_back(state.time);
   };
@@ -193,7 +193,7 @@ TEST_CASE("time.land_on: the step before each listed time is shortened to land o
 TEST_CASE("vorticity of the Taylor-Green field is 2 U0/L sin x sin y to 2nd order") {
   Setup s(32, MPI_COMM_WORLD);
   auto options = tgv_options(0.0);
-  flow::RunLoop loop(s.mesh, s.metrics, s.local, options);
+  run::RunLoop loop(s.mesh, s.metrics, s.local, options);
   flow::TensorField grad;
   flow::VectorField omega;
   flow::gradient(s.local, loop.state().velocity, grad);
@@ -223,11 +223,11 @@ TEST_CASE("a time step beyond the RK4 stability limit is refused, one below it r
   const double limit = 1 / ((1 + std::cos(h)) / (2 * h) / flow::rk4_imaginary_limit +
                             12 * 0.01 / (h * h) / flow::rk4_real_limit);
   options.time.dt = 1.02 * limit;
-  flow::RunLoop refused(s.mesh, s.metrics, s.local, options);
+  run::RunLoop refused(s.mesh, s.metrics, s.local, options);
   try {
     refused.run();
     FAIL("a time step above the limit ran");
-  } catch (const flow::RunError& e) {
+  } catch (const run::RunError& e) {
     const std::string what = e.what();
     MESSAGE(what);
     CHECK(what.find("time.dt") != std::string::npos);
@@ -238,7 +238,7 @@ TEST_CASE("a time step beyond the RK4 stability limit is refused, one below it r
   }
   options.time.dt = 0.95 * limit;
   options.time.end = 20 * options.time.dt;
-  flow::RunLoop runs(s.mesh, s.metrics, s.local, options);
+  run::RunLoop runs(s.mesh, s.metrics, s.local, options);
   const auto summary = runs.run();
   CHECK(summary.steps == 20);
   // Stable at CFL 2.1: no node's speed grows above the initial U0 = 1 (measured L2 error 10%,
@@ -250,8 +250,8 @@ TEST_CASE("a time step beyond the RK4 stability limit is refused, one below it r
   // An adaptive step from a CFL target beyond the limit is refused, naming time.cfl.
   options.time.dt = 0;
   options.time.cfl = 3.5;
-  flow::RunLoop adaptive(s.mesh, s.metrics, s.local, options);
-  CHECK_THROWS_WITH_AS(adaptive.run(), doctest::Contains("lower time.cfl"), flow::RunError);
+  run::RunLoop adaptive(s.mesh, s.metrics, s.local, options);
+  CHECK_THROWS_WITH_AS(adaptive.run(), doctest::Contains("lower time.cfl"), run::RunError);
 }
 
 TEST_CASE("a blow-up stops the run with a diagnosis after writing the last good state") {
@@ -261,11 +261,11 @@ TEST_CASE("a blow-up stops the run with a diagnosis after writing the last good 
   options.enforce_stability_limit = false;
   options.velocity_limit = 10;  // U0 = 1
   Recorder rec;
-  flow::RunLoop loop(s.mesh, s.metrics, s.local, options, rec.sink());
+  run::RunLoop loop(s.mesh, s.metrics, s.local, options, rec.sink());
   try {
     loop.run();
     FAIL("an unstable run finished");
-  } catch (const flow::RunError& e) {
+  } catch (const run::RunError& e) {
     const std::string what = e.what();
     MESSAGE(what);
     CHECK(what.find("velocity") != std::string::npos);
@@ -302,9 +302,9 @@ TEST_CASE("the state guard names the field and the position of a non-finite node
 TEST_CASE("non-periodic patches without a boundary condition are refused, naming them") {
   Setup s(8, MPI_COMM_WORLD, /*periodic_z=*/false);
   try {
-    flow::RunLoop(s.mesh, s.metrics, s.local, tgv_options(1.0));
+    run::RunLoop(s.mesh, s.metrics, s.local, tgv_options(1.0));
     FAIL("a mesh with open patches and no conditions ran");
-  } catch (const flow::RunError& e) {
+  } catch (const run::RunError& e) {
     CHECK(std::string(e.what()).find("patches 'zmin', 'zmax' of the mesh have no boundary "
                                      "condition") != std::string::npos);
     CHECK(e.key() == "boundary");
@@ -312,7 +312,7 @@ TEST_CASE("non-periodic patches without a boundary condition are refused, naming
 }
 
 TEST_CASE("scene keys become run options") {
-  const auto scene = io::parse_scene(R"(
+  const auto scene = scene::parse_scene(R"(
 [mesh]
 source = "box"
 [flow]
@@ -332,7 +332,7 @@ interval_unit = "steps"
 fields = ["vorticity"]
 )",
                                      "s.toml");
-  const auto o = io::flow_run_options(scene, "dir");
+  const auto o = scene::flow_run_options(scene, "dir");
   CHECK(o.projection.viscosity == doctest::Approx(1e-6));
   CHECK(o.time.cfl == 0.4);
   CHECK(o.initial.length == 0.01);
@@ -342,36 +342,36 @@ fields = ["vorticity"]
   CHECK(o.output.log_every == 10);
   CHECK(o.time.land_on_output);  // the defaults
   CHECK_FALSE(o.projection.stiffness_viscous);
-  const auto full_steps = io::parse_scene(
+  const auto full_steps = scene::parse_scene(
       "[mesh]\nsource = \"box\"\n[time]\nland_on_output = false\n[flow]\n"
       "viscous_weights = \"stiffness\"\n",
       "l.toml");
-  const auto f = io::flow_run_options(full_steps, "dir");
+  const auto f = scene::flow_run_options(full_steps, "dir");
   CHECK_FALSE(f.time.land_on_output);
   CHECK(f.projection.stiffness_viscous);
-  const auto fractional = io::parse_scene(
+  const auto fractional = scene::parse_scene(
       "[mesh]\nsource = \"box\"\n[output]\ninterval = 2.5\ninterval_unit = \"steps\"\n", "f.toml");
-  CHECK_THROWS_WITH_AS(io::flow_run_options(fractional, "dir"),
-                       doctest::Contains("f.toml:4:1: key 'output.interval'"), io::SceneError);
+  CHECK_THROWS_WITH_AS(scene::flow_run_options(fractional, "dir"),
+                       doctest::Contains("f.toml:4:1: key 'output.interval'"), scene::SceneError);
 }
 
 TEST_CASE("time.scheme and time.project_stages become run options; unknown schemes are refused") {
   const auto defaults =
-      io::flow_run_options(io::parse_scene("[mesh]\nsource = \"box\"\n", "d.toml"), "dir");
+      scene::flow_run_options(scene::parse_scene("[mesh]\nsource = \"box\"\n", "d.toml"), "dir");
   CHECK(defaults.projection.time_scheme == flow::TimeScheme::rk4_jameson);
   CHECK_FALSE(defaults.projection.project_stages);
-  const auto classic = io::flow_run_options(
-      io::parse_scene("[mesh]\nsource = \"box\"\n[time]\nscheme = \"rk4_classic\"\n"
+  const auto classic = scene::flow_run_options(
+      scene::parse_scene("[mesh]\nsource = \"box\"\n[time]\nscheme = \"rk4_classic\"\n"
                       "project_stages = true\n",
                       "c.toml"),
       "dir");
   CHECK(classic.projection.time_scheme == flow::TimeScheme::rk4_classic);
   CHECK(classic.projection.project_stages);
   CHECK_THROWS_WITH_AS(
-      io::parse_scene("[mesh]\nsource = \"box\"\n[time]\nscheme = \"rk4\"\n", "u.toml"),
+      scene::parse_scene("[mesh]\nsource = \"box\"\n[time]\nscheme = \"rk4\"\n", "u.toml"),
       doctest::Contains("u.toml:4:10: key 'time.scheme': unknown value \"rk4\" (accepted: "
                         "\"rk4_jameson\", \"rk4_classic\")"),
-      io::SceneError);
+      scene::SceneError);
 }
 
 TEST_CASE("the 3D Taylor-Green initial state: closed-form pressure and a consistent start") {
@@ -397,15 +397,15 @@ TEST_CASE("the 3D Taylor-Green initial state: closed-form pressure and a consist
   // difference of the discrete pressure; at rest with p = 0 it would be 1).
   auto box = test::periodic_box("hexa", 16);
   box.length = Eigen::Vector3d::Constant(2 * std::numbers::pi);
-  const auto mesh = io::generate_box(box);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
-  flow::RunOptions o;
+  const auto mesh = mesh::generate_box(box);
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD);
+  scene::RunOptions o;
   o.projection.viscosity = 1.0 / 1600;
   o.initial = {"taylor_green_3d", 1.0, 1.0};
   o.time.end = o.time.dt = 0.01;
   o.output.print = false;
-  flow::RunLoop loop(mesh, metrics, local, o);
+  run::RunLoop loop(mesh, metrics, local, o);
   const flow::TaylorGreen3d exact{1.0, 1.0, 1.0};
   double worst = 0, p_max = 0;
   for (int j = 0; j < local.num_owned; ++j) {
@@ -424,7 +424,7 @@ TEST_CASE("the 3D Taylor-Green initial state: closed-form pressure and a consist
 }
 
 TEST_CASE("taylor_green_3d needs a mesh periodic in z too") {
-  const auto scene = io::parse_scene(R"([mesh]
+  const auto scene = scene::parse_scene(R"([mesh]
 source = "box"
 [initial]
 type = "taylor_green_3d"
@@ -433,22 +433,22 @@ velocity = 1.0
 length = 1.0
 )",
                                      "tg3.toml");
-  io::BoxSpec box;
+  mesh::BoxSpec box;
   box.cells = {4, 4, 4};
   box.length = Eigen::Vector3d::Constant(2 * std::numbers::pi);
   box.periodic = {true, true, true};
-  CHECK_NOTHROW(io::check_initial_state(scene, io::generate_box(box)));
+  CHECK_NOTHROW(scene::check_initial_state(scene, mesh::generate_box(box)));
   box.periodic = {true, true, false};
   CHECK_THROWS_WITH_AS(
-      io::check_initial_state(scene, io::generate_box(box)),
+      scene::check_initial_state(scene, mesh::generate_box(box)),
       doctest::Contains("the Taylor-Green vortex is periodic in z, the mesh is not "
                         "(no periodic pair along z) (accepted: a mesh periodic in "
                         "x, y and z)"),
-      io::SceneError);
+      scene::SceneError);
 }
 
 TEST_CASE("[forcing], initial.cyclic_sines and time.stability_fraction from a scene") {
-  const auto scene = io::parse_scene(R"(
+  const auto scene = scene::parse_scene(R"(
 [mesh]
 source = "box"
 [forcing]
@@ -466,7 +466,7 @@ stability_fraction = 0.8
 periodic_damping = true
 )",
                                      "k.toml");
-  const auto o = io::flow_run_options(scene, "dir");
+  const auto o = scene::flow_run_options(scene, "dir");
   CHECK(o.forcing.type == flow::ForcingSpec::Type::kolmogorov);
   CHECK(o.forcing.across == Eigen::Vector3d::UnitY());  // the default
   CHECK(o.initial.type == "cyclic_sines");
@@ -476,14 +476,14 @@ periodic_damping = true
 
   // On 20 % perturbed tetrahedra the sampled sine has a discrete mean; the force has none, and
   // away from it the nodal values are F sin(2 pi y) to that mean (|mean| << F).
-  io::BoxSpec box;
+  mesh::BoxSpec box;
   box.cells = {6, 6, 6};
   box.cell_type = "tetra";
   box.perturbation = 0.2;
   box.periodic = {true, true, true};
-  const auto mesh = io::generate_box(box);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
+  const auto mesh = mesh::generate_box(box);
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD);
   const auto f = flow::forcing_density(local, o.forcing);
   Eigen::Vector3d net = Eigen::Vector3d::Zero();
   double deviation = 0;
@@ -502,7 +502,7 @@ periodic_damping = true
   auto run = tgv_options(100.0);
   run.time.stability_fraction = 0.8;
   run.time.max_steps = 1;
-  flow::RunLoop loop(s.mesh, s.metrics, s.local, run);
+  run::RunLoop loop(s.mesh, s.metrics, s.local, run);
   std::vector<double> scratch;
   const double limit = 1.0 / flow::stability_rates(s.local, flow::laplacian_weights(s.local), 0.01,
                                                    loop.state().velocity, scratch)
@@ -512,9 +512,9 @@ periodic_damping = true
 
   auto bad = [](const std::string& forcing) {
     try {
-      io::flow_run_options(
-          io::parse_scene("[mesh]\nsource = \"box\"\n[forcing]\n" + forcing, "b.toml"), "dir");
-    } catch (const io::SceneError& e) {
+      scene::flow_run_options(
+          scene::parse_scene("[mesh]\nsource = \"box\"\n[forcing]\n" + forcing, "b.toml"), "dir");
+    } catch (const scene::SceneError& e) {
       return std::string(e.what());
     }
     return std::string("no error");
@@ -535,7 +535,7 @@ TEST_CASE("set_initial_velocity replaces the initial condition; time.steady_tole
   options.time.steady_tolerance = 1e-9;  // m/s^2
   auto at_rest = options;
   at_rest.initial.type = "rest";  // p = 0
-  flow::RunLoop loop(s.mesh, s.metrics, s.local, at_rest);
+  run::RunLoop loop(s.mesh, s.metrics, s.local, at_rest);
   // The Taylor-Green velocity at rest pressure: the first step moves the fluid.
   flow::VectorField vortex_velocity(s.local.num_local());
   const flow::TaylorGreen tg{1.0, 1.0, 0.01, 1.0};
@@ -552,17 +552,17 @@ TEST_CASE("set_initial_velocity replaces the initial condition; time.steady_tole
   // The vortex itself decays at 2 nu u: |du/dt| ~ 0.02 m/s^2 is far from steady at 1e-3.
   options.time.steady_tolerance = 1e-3;
   options.time.max_steps = 3;
-  flow::RunLoop vortex(s.mesh, s.metrics, s.local, options);
+  run::RunLoop vortex(s.mesh, s.metrics, s.local, options);
   const auto decaying = vortex.run();
   CHECK_FALSE(decaying.steady);
   CHECK(decaying.steps == 3);
   CHECK(decaying.change_rate == doctest::Approx(0.02).epsilon(0.1));
-  CHECK_THROWS_AS(vortex.set_initial_velocity(flow::VectorField(3)), flow::RunError);
+  CHECK_THROWS_AS(vortex.set_initial_velocity(flow::VectorField(3)), run::RunError);
 }
 
 TEST_CASE("initial.plane_poiseuille: the developed channel profile at t = 0") {
   const auto scene_with = [](const std::string& direction) {
-    return io::parse_scene(R"(
+    return scene::parse_scene(R"(
 [mesh]
 source = "box"
 [initial]
@@ -574,14 +574,14 @@ point = [0.0, 0.0, 0.0]
 direction = )" + direction + "\n",
                            "p.toml");
   };
-  auto o = io::flow_run_options(scene_with("[2.0, 0.0, 0.0]"), "dir");
+  auto o = scene::flow_run_options(scene_with("[2.0, 0.0, 0.0]"), "dir");
   CHECK(o.initial.type == "plane_poiseuille");
   CHECK(o.initial.velocity == 0.5);
   CHECK(o.initial.across == Eigen::Vector3d::UnitY());  // the default
   o.output.print = false;
   o.projection.poisson.tolerance = 1e-10;
   Setup s(6, MPI_COMM_WORLD);
-  flow::RunLoop loop(s.mesh, s.metrics, s.local, o);
+  run::RunLoop loop(s.mesh, s.metrics, s.local, o);
   double peak = 0;
   for (int j = 0; j < s.local.num_local(); ++j) {
     const double y = s.local.position[j].y() / (2 * std::numbers::pi);
@@ -592,7 +592,7 @@ direction = )" + direction + "\n",
   CHECK(peak == doctest::Approx(0.75));  // 1.5 U at mid-width (a node row there)
   // A direction along `across` is refused, naming the key.
   CHECK_THROWS_WITH_AS(
-      io::flow_run_options(scene_with("[0.0, 1.0, 0.0]"), "dir"),
+      scene::flow_run_options(scene_with("[0.0, 1.0, 0.0]"), "dir"),
       doctest::Contains("key 'initial.plane_poiseuille.across': across must be perpendicular"),
-      io::SceneError);
+      scene::SceneError);
 }

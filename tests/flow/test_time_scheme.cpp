@@ -37,7 +37,7 @@ double exact_rate(double t) {
 }
 
 // Error at t = 1 of `steps` steps of the uniform-velocity ODE; stage times of the first step.
-double ode_error(const flow::LocalMesh& local, flow::TimeScheme scheme, bool project, int steps,
+double ode_error(const mesh::LocalMesh& local, flow::TimeScheme scheme, bool project, int steps,
                  std::vector<double>* stage_times = nullptr) {
   flow::ProjectionOptions options;
   options.time_scheme = scheme;

@@ -41,15 +41,15 @@ ViscosityModel casson(double m_reg) {
 // hexahedra on two METIS parts: shear rates of 0 to 2 k U = 12.6 1/s, blood density.
 struct VortexBox {
   static constexpr double rho = 1060, U = 0.01;
-  flow::LocalMesh mesh;
+  mesh::LocalMesh mesh;
   flow::FlowState initial;
   VortexBox() {
-    io::BoxSpec spec = test::periodic_box("hexa", 12);
+    mesh::BoxSpec spec = test::periodic_box("hexa", 12);
     spec.cells = {12, 12, 3};
     spec.length = Eigen::Vector3d(0.01, 0.01, 0.0025);
-    const auto box = io::generate_box(spec);
-    const auto metrics = flow::compute_dual_metrics(box);
-    mesh = flow::distribute(box, metrics, MPI_COMM_WORLD, {2, "metis"});
+    const auto box = mesh::generate_box(spec);
+    const auto metrics = mesh::compute_dual_metrics(box);
+    mesh = mesh::distribute(box, metrics, MPI_COMM_WORLD, {2, "metis"});
     const double k = 2 * std::numbers::pi / 0.01;
     for (const auto& x : mesh.position) {
       initial.velocity.emplace_back(U * std::sin(k * x.x()) * std::cos(k * x.y()),

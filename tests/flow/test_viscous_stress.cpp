@@ -76,7 +76,7 @@ struct Applied {
   VectorField u, out;
   TensorField grad;
 };
-Applied apply_manufactured(const flow::LocalMesh& mesh) {
+Applied apply_manufactured(const mesh::LocalMesh& mesh) {
   Applied a;
   for (const auto& x : mesh.position) {
     a.u.push_back(Manufactured::u(x));
@@ -88,7 +88,7 @@ Applied apply_manufactured(const flow::LocalMesh& mesh) {
 }
 
 // Volume-weighted L2 error of viscous_stress against the manufactured solution.
-double manufactured_error(const flow::LocalMesh& mesh) {
+double manufactured_error(const mesh::LocalMesh& mesh) {
   const auto a = apply_manufactured(mesh);
   double e = 0;
   for (int i = 0; i < mesh.num_owned; ++i)
@@ -162,7 +162,7 @@ TEST_CASE("variable viscosity, non-solenoidal manufactured solution: second orde
 TEST_CASE("total momentum: the edge fluxes cancel, only the boundary term remains") {
   for (std::string type : {"tetra", "hexa", "mixed"}) {
     CAPTURE(type);
-    io::BoxSpec spec;
+    mesh::BoxSpec spec;
     spec.cell_type = type;
     spec.cells = {6, 5, 7};
     spec.length = Eigen::Vector3d(1.0, 0.8, 1.2);
@@ -194,13 +194,13 @@ TEST_CASE("ProjectionRK4 subgrid hook: stage gradients in, nu + nu_sgs in the st
   // 2D Taylor-Green field on a periodic hexahedral slab; a hook returning a constant
   // nu_sgs = c must give the laminar run with viscosity nu + c up to the transpose part
   // nu grad(div u) of the (not discretely solenoidal) RK stage fields.
-  io::BoxSpec spec = test::periodic_box("hexa", 16);
+  mesh::BoxSpec spec = test::periodic_box("hexa", 16);
   spec.cells = {16, 16, 3};
   spec.length =
       Eigen::Vector3d(2 * std::numbers::pi, 2 * std::numbers::pi, 3 * std::numbers::pi / 8);
-  const auto box = io::generate_box(spec);
-  const auto metrics = flow::compute_dual_metrics(box);
-  const auto mesh = flow::distribute(box, metrics, MPI_COMM_WORLD, {2, "metis"});
+  const auto box = mesh::generate_box(spec);
+  const auto metrics = mesh::compute_dual_metrics(box);
+  const auto mesh = mesh::distribute(box, metrics, MPI_COMM_WORLD, {2, "metis"});
   const double nu0 = 0.01, c = 0.02, dt = 0.05;
   flow::FlowState initial;
   for (const auto& x : mesh.position) {

@@ -17,9 +17,9 @@ namespace {
 // functions need, kept alive together.
 struct PoiseuilleChannel {
   static constexpr double mu = 3.6e-3, rho = 1100, f = 2.0, height = 1.0;
-  flow::Mesh mesh;
-  flow::DualMetrics metrics;
-  flow::LocalMesh local;
+  mesh::Mesh mesh;
+  mesh::DualMetrics metrics;
+  mesh::LocalMesh local;
   flow::VectorField u, body;
   flow::ScalarField p;
   flow::TensorField g;
@@ -27,15 +27,15 @@ struct PoiseuilleChannel {
   flow::WallForceInput in;
 
   PoiseuilleChannel(const std::string& type, double perturbation, int n) {
-    io::BoxSpec spec;
+    mesh::BoxSpec spec;
     spec.cell_type = type;
     spec.cells = {n, n, n};
     spec.length = Eigen::Vector3d(2.0, height, 0.5);
     spec.perturbation = perturbation;
     spec.periodic = {true, false, true};
-    mesh = io::generate_box(spec);
-    metrics = flow::compute_dual_metrics(mesh);
-    local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
+    mesh = mesh::generate_box(spec);
+    metrics = mesh::compute_dual_metrics(mesh);
+    local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD);
     u.resize(local.num_local());
     body.assign(local.num_local(), Eigen::Vector3d(f, 0, 0));
     for (int i = 0; i < local.num_local(); ++i) {
@@ -100,11 +100,11 @@ TEST_CASE("wall force, surface method: first order on hexahedra (one-sided wall 
 }
 
 TEST_CASE("wall force: unknown patch is refused with the mesh's patch names") {
-  io::BoxSpec spec;
+  mesh::BoxSpec spec;
   spec.cells = {3, 3, 3};
-  const auto mesh = io::generate_box(spec);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
+  const auto mesh = mesh::generate_box(spec);
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD);
   flow::VectorField u(local.num_local(), Eigen::Vector3d::Zero());
   flow::ScalarField p(local.num_local(), 0.0);
   flow::TensorField g(local.num_local(), Eigen::Matrix3d::Zero());

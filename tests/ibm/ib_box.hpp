@@ -45,9 +45,9 @@ struct IbBoxSpec {
 };
 
 struct IbBox {
-  flow::Mesh mesh;
-  flow::DualMetrics metrics;
-  flow::LocalMesh local;
+  mesh::Mesh mesh;
+  mesh::DualMetrics metrics;
+  mesh::LocalMesh local;
   structure::SolidMesh solid;
   std::unique_ptr<structure::Material> material;
   std::unique_ptr<flow::ProjectionRK4> flow;
@@ -55,12 +55,12 @@ struct IbBox {
   flow::FlowState state;
 
   explicit IbBox(const IbBoxSpec& s) {
-    io::BoxSpec box;
+    mesh::BoxSpec box;
     box.cells = {s.cells, s.cells, s.cells};
     box.periodic = {true, true, true};
-    mesh = io::generate_box(box);
-    metrics = flow::compute_dual_metrics(mesh);
-    local = flow::distribute(mesh, metrics, s.comm, {4, "metis"});
+    mesh = mesh::generate_box(box);
+    metrics = mesh::compute_dual_metrics(mesh);
+    local = mesh::distribute(mesh, metrics, s.comm, {4, "metis"});
     const Eigen::Vector3d lo = Eigen::Vector3d::Constant(0.5 - s.side / 2);
     solid =
         structure::structured_block(structure::HexOrder::q2, {s.elements, s.elements, s.elements},

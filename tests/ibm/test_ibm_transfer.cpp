@@ -12,6 +12,7 @@
 #include <numbers>
 #include <random>
 
+#include "core/comm.hpp"
 #include "core/compensated_sum.hpp"
 #include "ibm/dirac_transfer.hpp"
 #include "mesh/box_generator.hpp"
@@ -25,14 +26,14 @@ namespace {
 
 const Vec kLength(1.0, 0.8, 0.6);
 
-flow::Mesh box(int n, bool periodic_z = false) {
-  io::BoxSpec spec;
+mesh::Mesh box(int n, bool periodic_z = false) {
+  mesh::BoxSpec spec;
   spec.periodic = {false, false, periodic_z};
   spec.cell_type = "tetra";
   spec.cells = {n, n * 4 / 5, n * 3 / 5};
   spec.length = kLength;
   spec.perturbation = 0.2;
-  return io::generate_box(spec);
+  return mesh::generate_box(spec);
 }
 
 // A sphere of markers crossing the partition boundaries, plus markers on and near the walls:
@@ -71,20 +72,20 @@ Vec smooth(const Vec& x) {
 }
 
 struct Level {
-  flow::Mesh mesh;
-  flow::DualMetrics metrics;
+  mesh::Mesh mesh;
+  mesh::DualMetrics metrics;
   explicit Level(int n, bool periodic_z = false)
-      : mesh(box(n, periodic_z)), metrics(flow::compute_dual_metrics(mesh)) {}
+      : mesh(box(n, periodic_z)), metrics(mesh::compute_dual_metrics(mesh)) {}
 };
 
-double global_sum(const flow::Comm& comm, flow::CompensatedSum s) {
+double global_sum(const core::Comm& comm, core::CompensatedSum s) {
   return comm.sum(s.value());
 }
 
 // All identities for the three kernels. With a z-periodic mesh the torque (ill-defined across
 // periods) is skipped and the linear field is taken independent of z.
 void check_identities(const Level& level, const std::vector<Vec>& x, bool periodic_z) {
-  auto local = flow::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {5, "metis"});
+  auto local = mesh::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {5, "metis"});
   const auto& comm = local.comm;
   const auto nm = x.size();
 
@@ -100,7 +101,7 @@ void check_identities(const Level& level, const std::vector<Vec>& x, bool period
     // Partition of unity and zero first moment of the corrected kernel.
     double worst0 = 0, worst1 = 0;
     for (const auto& s : transfer.supports()) {
-      flow::CompensatedSum zeroth;
+      core::CompensatedSum zeroth;
       Vec first = Vec::Zero();
       for (int k = s.begin; k < s.end; ++k) {
         const auto& w = transfer.weights()[k];
@@ -161,7 +162,7 @@ void check_identities(const Level& level, const std::vector<Vec>& x, bool period
     // Adjointness with a nonlinear field: <Spread F, u>_V = <F, Interp u>.
     for (int j = 0; j < local.num_owned; ++j) field[j] = smooth(local.position[j]);
     transfer.interpolate(field, at_markers);
-    flow::CompensatedSum eulerian, lagrangian, size;
+    core::CompensatedSum eulerian, lagrangian, size;
     for (int j = 0; j < local.num_owned; ++j) {
       eulerian.add(local.volume[j] * density[j].dot(field[j]));
       size.add(local.volume[j] * density[j].norm() * field[j].norm());
@@ -172,7 +173,7 @@ void check_identities(const Level& level, const std::vector<Vec>& x, bool period
 
     // The same on one rank (each rank builds the undistributed mesh): results agree to
     // round-off, node by node (matched through the replicated dual-node index).
-    auto serial = flow::distribute(level.mesh, level.metrics, MPI_COMM_SELF, {5, "metis"});
+    auto serial = mesh::distribute(level.mesh, level.metrics, MPI_COMM_SELF, {5, "metis"});
     ibm::DiracTransfer one(serial, {{type, 4.0}});
     one.locate(x);
     std::vector<Vec> density1(serial.num_local()), field1(serial.num_local()), at1(nm);
@@ -220,7 +221,7 @@ TEST_CASE("periodic images: supports wrap across a periodic direction") {
 TEST_CASE("locating again after the markers move gives the supports of a fresh transfer") {
   const int n = 10;
   const Level level(n);
-  auto local = flow::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {5, "metis"});
+  auto local = mesh::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {5, "metis"});
   auto x = markers(kLength.x() / n);
   ibm::DiracTransfer moving(local);
   moving.locate(x);
@@ -243,7 +244,7 @@ TEST_CASE("errors name the marker: outside the mesh, too few ghost layers, ill-c
   const int n = 10;
   const double cell = kLength.x() / n;
   const Level level(n);
-  auto local = flow::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {5, "metis"});
+  auto local = mesh::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {5, "metis"});
   ibm::DiracTransfer transfer(local);
   std::vector<Vec> x = markers(cell);
   x.emplace_back(5.0, 0.1, 0.1);
@@ -274,7 +275,7 @@ TEST_CASE("errors name the marker: outside the mesh, too few ghost layers, ill-c
 
   // One ghost layer cannot hold a 4h support across a partition boundary.
   if (local.comm.size() > 1) {
-    auto thin = flow::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {1, "metis"});
+    auto thin = mesh::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {1, "metis"});
     ibm::DiracTransfer short_halo(thin);
     CHECK_THROWS_WITH_AS(short_halo.locate(markers(cell)),
                          doctest::Contains("reaches the outermost ghost layer (1)"),
@@ -290,7 +291,7 @@ TEST_CASE("interpolation converges at second order on perturbed tetrahedra") {
   std::vector<double> error;
   for (int n : {8, 16, 32}) {
     const Level level(n);
-    auto local = flow::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {5, "metis"});
+    auto local = mesh::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {5, "metis"});
     ibm::DiracTransfer transfer(local);
     transfer.locate(x);
     std::vector<Vec> field(local.num_local()), at(x.size());
@@ -302,7 +303,7 @@ TEST_CASE("interpolation converges at second order on perturbed tetrahedra") {
   }
   const double order_coarse = std::log2(error[0] / error[1]);
   const double order_fine = std::log2(error[1] / error[2]);
-  if (valsalva::flow::Comm().root())
+  if (core::Comm().root())
     MESSAGE(fmt::format("max interpolation error {:.3e} {:.3e} {:.3e}, order {:.3f} {:.3f}",
                         error[0], error[1], error[2], order_coarse, order_fine));
   // Linear reproduction gives O(h^2). Measured (peskin4, width 4h, max over 606 markers, 1-3
@@ -319,7 +320,7 @@ TEST_CASE("interpolation converges at second order on perturbed tetrahedra") {
 // rebuilt, those of a locate at the new ones; at 1, 2 and 3 ranks.
 TEST_CASE("relocate: all supports kept within reuse_distance h, all rebuilt beyond") {
   const Level level(12);
-  auto local = flow::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {5, "metis"});
+  auto local = mesh::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {5, "metis"});
   const double cell = kLength.x() / 12, reuse = 0.1;
   const auto x = markers(cell);
   const auto nm = x.size();

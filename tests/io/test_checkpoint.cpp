@@ -40,12 +40,12 @@ fs::path scratch(const std::string& name) {
   return dir;
 }
 
-flow::Mesh box(int n) {
-  io::BoxSpec spec;
+mesh::Mesh box(int n) {
+  mesh::BoxSpec spec;
   spec.cell_type = "mixed";
   spec.cells = {n, 4, 3};
   spec.perturbation = 0.1;
-  return io::generate_box(spec);
+  return mesh::generate_box(spec);
 }
 
 // Values with full mantissas, a function of the partition-independent dual id only.
@@ -56,7 +56,7 @@ double p_of(std::int64_t id) {
   return std::cos(1.3 * id) * 1e5 / 7.0;
 }
 
-void fill(const flow::LocalMesh& local, flow::FlowState& state) {
+void fill(const mesh::LocalMesh& local, flow::FlowState& state) {
   state.velocity.assign(local.num_local(), Eigen::Vector3d::Constant(NAN));
   state.pressure.assign(local.num_local(), NAN);
   for (int i = 0; i < local.num_owned; ++i) {
@@ -66,7 +66,7 @@ void fill(const flow::LocalMesh& local, flow::FlowState& state) {
   state.time = 0.1 / 3.0;
 }
 
-int bad_bits(const flow::LocalMesh& local, const flow::FlowState& state) {
+int bad_bits(const mesh::LocalMesh& local, const flow::FlowState& state) {
   int bad = 0;
   for (int i = 0; i < local.num_local(); ++i) {  // ghosts included
     bad += state.velocity[i] != u_of(local.dual_node[i]);
@@ -80,9 +80,9 @@ int bad_bits(const flow::LocalMesh& local, const flow::FlowState& state) {
 TEST_CASE("checkpoint round trip at the world size and at one rank, bit for bit") {
   const fs::path dir = scratch("roundtrip");
   const auto mesh = box(8);
-  const auto metrics = flow::compute_dual_metrics(mesh);
+  const auto metrics = mesh::compute_dual_metrics(mesh);
   const auto hash = io::mesh_hash(mesh);
-  auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
   flow::FlowState state;
   fill(local, state);
 
@@ -127,7 +127,7 @@ TEST_CASE("checkpoint round trip at the world size and at one rank, bit for bit"
   }
   // One rank (each rank alone on its own communicator), another partition: same bits.
   {
-    auto single = flow::distribute(mesh, metrics, MPI_COMM_SELF, {2, "metis"});
+    auto single = mesh::distribute(mesh, metrics, MPI_COMM_SELF, {2, "metis"});
     io::CheckpointReader reader(single, hash, *latest);
     flow::FlowState back;
     reader.read_state(back);
@@ -139,8 +139,8 @@ TEST_CASE("checkpoint round trip at the world size and at one rank, bit for bit"
 TEST_CASE("checkpoint errors name the file and the mismatch") {
   const fs::path dir = scratch("errors");
   const auto mesh = box(8);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
   flow::FlowState state;
   fill(local, state);
   io::CheckpointWriter writer(local, io::mesh_hash(mesh), dir);
@@ -148,8 +148,8 @@ TEST_CASE("checkpoint errors name the file and the mismatch") {
 
   // Another mesh: different node count.
   const auto other = box(9);
-  const auto other_metrics = flow::compute_dual_metrics(other);
-  auto other_local = flow::distribute(other, other_metrics, MPI_COMM_WORLD, {2, "metis"});
+  const auto other_metrics = mesh::compute_dual_metrics(other);
+  auto other_local = mesh::distribute(other, other_metrics, MPI_COMM_WORLD, {2, "metis"});
   CHECK_THROWS_WITH(io::CheckpointReader(other_local, io::mesh_hash(other), path),
                     doctest::Contains("was written for another mesh"));
   // Same node count, moved nodes: the hash differs.
@@ -188,14 +188,14 @@ TEST_CASE("checkpoint errors name the file and the mismatch") {
 }
 
 TEST_CASE("SIGTERM on one rank stops every rank") {
-  io::StopSignal stop;
+  run::StopSignal stop;
   CHECK_FALSE(stop.requested(MPI_COMM_WORLD));
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank == 0) std::raise(SIGTERM);
-  CHECK(io::StopSignal::raised_locally() == (rank == 0));
+  CHECK(run::StopSignal::raised_locally() == (rank == 0));
   CHECK(stop.requested(MPI_COMM_WORLD));
-  if (rank == 0) CHECK(io::StopSignal::signal_number() == SIGTERM);
-  io::StopSignal::clear();
+  if (rank == 0) CHECK(run::StopSignal::signal_number() == SIGTERM);
+  run::StopSignal::clear();
   CHECK_FALSE(stop.requested(MPI_COMM_WORLD));
 }

@@ -20,15 +20,15 @@ using namespace valsalva;
 
 namespace {
 
-double total_volume(const flow::Mesh& mesh) {
+double total_volume(const mesh::Mesh& mesh) {
   double v = 0;
-  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) v += flow::cell_volume(mesh, c);
+  for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c) v += mesh::cell_volume(mesh, c);
   return v;
 }
 
 // A coarse channel with a refinement box behind the cylinder.
-io::CylinderChannelSpec refined_spec() {
-  io::CylinderChannelSpec spec;
+mesh::CylinderChannelSpec refined_spec() {
+  mesh::CylinderChannelSpec spec;
   spec.size_near = 0.02;
   spec.size_far = 0.08;
   spec.box_size = 0.01;
@@ -42,36 +42,36 @@ io::CylinderChannelSpec refined_spec() {
 }  // namespace
 
 TEST_CASE("prism split: conforming tetrahedra of the same volume, quad faces cut alike") {
-  io::BoxSpec spec;
+  mesh::BoxSpec spec;
   spec.cells = {4, 3, 5};
   spec.length = Eigen::Vector3d(1.0, 0.7, 1.3);
   spec.cell_type = "prism";
   spec.perturbation = 0.2;
-  const auto prisms = io::generate_box(spec);
-  const auto tets = io::split_prisms_to_tetrahedra(prisms);
+  const auto prisms = mesh::generate_box(spec);
+  const auto tets = mesh::split_prisms_to_tetrahedra(prisms);
   CHECK(tets.num_cells() == 3 * prisms.num_cells());
-  for (auto t : tets.cell_types) REQUIRE(t == flow::CellType::tetra);
+  for (auto t : tets.cell_types) REQUIRE(t == mesh::CellType::tetra);
   // check_mesh rejects non-conforming faces (a face seen once and untagged) and inverted cells.
-  CHECK_NOTHROW(flow::check_mesh(tets));
+  CHECK_NOTHROW(mesh::check_mesh(tets));
   CHECK(total_volume(tets) == doctest::Approx(total_volume(prisms)).epsilon(1e-13));
-  for (flow::GlobalIndex c = 0; c < tets.num_cells(); ++c) CHECK(flow::cell_volume(tets, c) > 0);
+  for (mesh::GlobalIndex c = 0; c < tets.num_cells(); ++c) CHECK(mesh::cell_volume(tets, c) > 0);
 }
 
 TEST_CASE("prism split refuses hexahedra") {
-  io::BoxSpec spec;
+  mesh::BoxSpec spec;
   spec.cells = {2, 2, 2};
-  CHECK_THROWS_AS(io::split_prisms_to_tetrahedra(io::generate_box(spec)), flow::MeshError);
+  CHECK_THROWS_AS(mesh::split_prisms_to_tetrahedra(mesh::generate_box(spec)), mesh::MeshError);
 }
 
 TEST_CASE("cylinder channel: patches, volume, periodic slab metrics") {
-  io::CylinderChannelSpec spec;
+  mesh::CylinderChannelSpec spec;
   spec.size_near = 0.02;
   spec.size_far = 0.08;
-  auto mesh = io::generate_cylinder_channel_mesh(spec);
+  auto mesh = mesh::generate_cylinder_channel_mesh(spec);
   MESSAGE("cylinder channel: ", mesh.num_nodes(), " nodes, ", mesh.num_cells(), " tetrahedra");
   for (const char* p : {"inlet", "outlet", "wall", "cylinder", "front", "back"})
     CHECK_MESSAGE(mesh.patch_index(p) >= 0, p);
-  CHECK_NOTHROW(flow::check_mesh(mesh));
+  CHECK_NOTHROW(mesh::check_mesh(mesh));
   // Volume: channel minus the inscribed polygon of the cylinder (deficit below (2 pi/n)^2/6 of
   // the disc with n >= pi d / size_near chords), times the thickness.
   const double r = spec.diameter / 2;
@@ -86,7 +86,7 @@ TEST_CASE("cylinder channel: patches, volume, periodic slab metrics") {
   // Nodes of the cylinder patch lie on the circle; front/back pair as periodic.
   const int cyl = mesh.patch_index("cylinder");
   double off = 0;
-  for (flow::GlobalIndex f = 0; f < mesh.num_faces(); ++f)
+  for (mesh::GlobalIndex f = 0; f < mesh.num_faces(); ++f)
     if (mesh.face_patches[f] == cyl)
       for (auto n : mesh.face(f))
         off = std::max(off, std::abs(std::hypot(mesh.nodes[n].x() - spec.centre_x,
@@ -94,12 +94,12 @@ TEST_CASE("cylinder channel: patches, volume, periodic slab metrics") {
                                      r));
   CHECK(off < 1e-9 * r);
   mesh.periodic.push_back({"front", "back", Eigen::Vector3d(0, 0, spec.thickness)});
-  const auto metrics = flow::compute_dual_metrics(mesh);
+  const auto metrics = mesh::compute_dual_metrics(mesh);
   double dual = 0;
   for (double v : metrics.volume) dual += v;
   CHECK(dual == doctest::Approx(volume).epsilon(1e-12));
   // Deterministic: the same spec gives the same mesh.
-  const auto again = io::generate_cylinder_channel_mesh(spec);
+  const auto again = mesh::generate_cylinder_channel_mesh(spec);
   CHECK(again.num_cells() == mesh.num_cells());
   CHECK(again.nodes == mesh.nodes);
 }
@@ -108,14 +108,14 @@ TEST_CASE("cylinder channel: every layer's prisms are cut alike") {
   // Each layer's tetrahedra, as (x, y, layer offset) node patterns, repeat the first layer's:
   // Gmsh cuts the extruded prisms the same way in every layer, so the slab is z-invariant (a
   // z-invariant flow stays so).
-  io::CylinderChannelSpec spec;
+  mesh::CylinderChannelSpec spec;
   spec.size_near = 0.02;
   spec.size_far = 0.08;
   const double dz = spec.thickness / spec.layers;
   using Pattern = std::vector<std::tuple<double, double, long>>;
   std::vector<std::multiset<Pattern>> layers(spec.layers);
-  const auto mesh = io::generate_cylinder_channel_mesh(spec);
-  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
+  const auto mesh = mesh::generate_cylinder_channel_mesh(spec);
+  for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
     Pattern p;
     long base = spec.layers;
     for (auto n : mesh.cell(c)) base = std::min(base, std::lround(mesh.nodes[n].z() / dz));
@@ -128,21 +128,21 @@ TEST_CASE("cylinder channel: every layer's prisms are cut alike") {
   CHECK(layers[0].size() * spec.layers == static_cast<std::size_t>(mesh.num_cells()));
   for (int l = 1; l < spec.layers; ++l) CHECK(layers[l] == layers[0]);
   spec.split = false;  // the unsplit slab: prisms
-  const auto prisms = io::generate_cylinder_channel_mesh(spec);
+  const auto prisms = mesh::generate_cylinder_channel_mesh(spec);
   CHECK(prisms.num_cells() * 3 == mesh.num_cells());
-  for (auto t : prisms.cell_types) REQUIRE(t == flow::CellType::prism);
-  CHECK_NOTHROW(flow::check_mesh(prisms));
+  for (auto t : prisms.cell_types) REQUIRE(t == mesh::CellType::prism);
+  CHECK_NOTHROW(mesh::check_mesh(prisms));
 }
 
 TEST_CASE("cylinder channel: refinement box") {
   auto spec = refined_spec();
-  const auto mesh = io::generate_cylinder_channel_mesh(spec);
-  CHECK_NOTHROW(flow::check_mesh(mesh));
+  const auto mesh = mesh::generate_cylinder_channel_mesh(spec);
+  CHECK_NOTHROW(mesh::check_mesh(mesh));
   // Node spacing inside the box: the mean length of the in-plane edges (z-extrusion edges
   // excluded) between nodes in the box's core is about box_size, well below size_near.
   double sum = 0;
   int count = 0;
-  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
+  for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
     const auto cell = mesh.cell(c);
     for (std::size_t i = 0; i < cell.size(); ++i)
       for (std::size_t j = i + 1; j < cell.size(); ++j) {
@@ -160,7 +160,7 @@ TEST_CASE("cylinder channel: refinement box") {
   CHECK(sum / count < 1.3 * spec.box_size);
   CHECK(sum / count > 0.7 * spec.box_size);
   spec.box_x1 = 3.0;  // outside the channel
-  CHECK_THROWS_WITH_AS(io::generate_cylinder_channel_mesh(spec),
+  CHECK_THROWS_WITH_AS(mesh::generate_cylinder_channel_mesh(spec),
                        doctest::Contains("refinement box"), std::invalid_argument);
 }
 
@@ -180,15 +180,15 @@ box_transition = 0.15
 )";
   auto spec = refined_spec();
   spec.box_transition = 0.15;
-  const auto direct = io::generate_cylinder_channel_mesh(spec);
-  const auto scene = io::parse_scene(head + box + "box_x1 = 0.7\n", "t.toml");
-  const auto from_scene = io::build_mesh(scene);
+  const auto direct = mesh::generate_cylinder_channel_mesh(spec);
+  const auto scene = scene::parse_scene(head + box + "box_x1 = 0.7\n", "t.toml");
+  const auto from_scene = scene::build_mesh(scene);
   CHECK(from_scene.nodes.size() == direct.nodes.size());
   CHECK(from_scene.num_cells() == direct.num_cells());
   // Without the box keys the mesh is the plain (coarser) channel.
-  const auto plain = io::build_mesh(io::parse_scene(head, "t.toml"));
+  const auto plain = scene::build_mesh(scene::parse_scene(head, "t.toml"));
   CHECK(plain.nodes.size() < direct.nodes.size());
   // A box outside the channel is refused with the scene table named.
-  const auto bad = io::parse_scene(head + box + "box_x1 = 3.0\n", "t.toml");
-  CHECK_THROWS_WITH(io::build_mesh(bad), doctest::Contains("mesh.cylinder_channel"));
+  const auto bad = scene::parse_scene(head + box + "box_x1 = 3.0\n", "t.toml");
+  CHECK_THROWS_WITH(scene::build_mesh(bad), doctest::Contains("mesh.cylinder_channel"));
 }

@@ -19,14 +19,14 @@ struct Measured {
   double volume = 0, off = 0, min_cell = 1, first_row = 1;
 };
 
-Measured measure(const flow::Mesh& mesh, const io::ExtrudedPipeSpec& s) {
+Measured measure(const mesh::Mesh& mesh, const mesh::ExtrudedPipeSpec& s) {
   Measured m;
   m.area.assign(mesh.patch_names.size(), 0.0);
   const int inlet = mesh.patch_index("inlet"), outlet = mesh.patch_index("outlet");
   std::vector<bool> on_wall(mesh.num_nodes(), false);
-  for (flow::GlobalIndex f = 0; f < mesh.num_faces(); ++f) {
+  for (mesh::GlobalIndex f = 0; f < mesh.num_faces(); ++f) {
     const int p = mesh.face_patches[f];
-    m.area[p] += flow::face_area(mesh, mesh.face(f)).norm();
+    m.area[p] += mesh::face_area(mesh, mesh.face(f)).norm();
     for (auto n : mesh.face(f)) {
       const auto& x = mesh.nodes[n];
       const double off = p == inlet    ? std::abs(x.z())
@@ -36,12 +36,12 @@ Measured measure(const flow::Mesh& mesh, const io::ExtrudedPipeSpec& s) {
       if (p != inlet && p != outlet) on_wall[n] = true;
     }
   }
-  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
-    const double v = flow::cell_volume(mesh, c);
+  for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
+    const double v = mesh::cell_volume(mesh, c);
     m.volume += v;
     m.min_cell = std::min(m.min_cell, v);
   }
-  for (flow::GlobalIndex n = 0; n < mesh.num_nodes(); ++n)
+  for (mesh::GlobalIndex n = 0; n < mesh.num_nodes(); ++n)
     if (!on_wall[n])
       m.first_row =
           std::min(m.first_row, s.radius - std::hypot(mesh.nodes[n].x(), mesh.nodes[n].y()));
@@ -51,7 +51,7 @@ Measured measure(const flow::Mesh& mesh, const io::ExtrudedPipeSpec& s) {
 }  // namespace
 
 TEST_CASE("extruded pipe: tetrahedra, patches, chord-polygon areas and volume, wall grading") {
-  io::ExtrudedPipeSpec base;
+  mesh::ExtrudedPipeSpec base;
   base.radius = 0.01, base.length = 0.02, base.target_size = 0.0025, base.layer_height = 0.002;
   auto isotropic = base, rows = base;
   isotropic.grading.wall_size = 0.001, isotropic.grading.wall_distance = 0.002;
@@ -61,10 +61,10 @@ TEST_CASE("extruded pipe: tetrahedra, patches, chord-polygon areas and volume, w
                                               {"isotropic", isotropic, 0.0},
                                               {"rows", rows, rows.grading.layer_first}}) {
     CAPTURE(name);
-    const auto mesh = io::generate_extruded_pipe_mesh(spec);
+    const auto mesh = mesh::generate_extruded_pipe_mesh(spec);
     MESSAGE(name, ": ", mesh.num_nodes(), " nodes, ", mesh.num_cells(), " tetrahedra");
-    for (auto t : mesh.cell_types) REQUIRE(t == flow::CellType::tetra);
-    CHECK_NOTHROW(flow::check_mesh(mesh));
+    for (auto t : mesh.cell_types) REQUIRE(t == mesh::CellType::tetra);
+    CHECK_NOTHROW(mesh::check_mesh(mesh));
     CHECK(mesh.region_names == std::vector<std::string>{"fluid"});
     const auto m = measure(mesh, spec);
     CHECK(m.min_cell > 0);
@@ -95,12 +95,12 @@ TEST_CASE("extruded pipe: tetrahedra, patches, chord-polygon areas and volume, w
     // Gmsh's Delaunay disks repeat; its BoundaryLayer rows do not (hence rank 0's disk is sent
     // to the other ranks, checked at np 2 below).
     if (first_row == 0) {
-      const auto again = io::generate_extruded_pipe_mesh(spec);
+      const auto again = mesh::generate_extruded_pipe_mesh(spec);
       CHECK(again.nodes == mesh.nodes);
       CHECK(again.cell_nodes == mesh.cell_nodes);
     }
     // Every rank of the world holds rank 0's mesh.
-    const auto shared = io::generate_extruded_pipe_mesh(spec, MPI_COMM_WORLD);
+    const auto shared = mesh::generate_extruded_pipe_mesh(spec, MPI_COMM_WORLD);
     std::vector<double> mine, first;
     for (const auto& x : shared.nodes) mine.insert(mine.end(), {x.x(), x.y(), x.z()});
     first = mine;
@@ -112,9 +112,9 @@ TEST_CASE("extruded pipe: tetrahedra, patches, chord-polygon areas and volume, w
   }
   auto bad = base;
   bad.length = -1;
-  CHECK_THROWS_WITH_AS(io::generate_extruded_pipe_mesh(bad), doctest::Contains("length"),
+  CHECK_THROWS_WITH_AS(mesh::generate_extruded_pipe_mesh(bad), doctest::Contains("length"),
                        std::invalid_argument);
   bad = base;
   bad.grading.wall_size = 0.001;  // no wall_distance
-  CHECK_THROWS_AS(io::generate_extruded_pipe_mesh(bad), std::invalid_argument);
+  CHECK_THROWS_AS(mesh::generate_extruded_pipe_mesh(bad), std::invalid_argument);
 }

@@ -137,29 +137,30 @@ void fuzz(const fs::path& seed_file, int iterations, std::uint64_t seed,
 
 }  // namespace
 
-TEST_CASE("fuzzed numeric tables (probe series, waveforms) fail only with TableError") {
+TEST_CASE("fuzzed numeric tables (probe series, waveforms) fail only with core::TableError") {
   for (const char* seed : {"tests/app/data/probes_short.csv", "tests/app/scenes/waveform.csv"}) {
     fuzz(source / seed, 2000, 23, [](const fs::path& f) {
-      io::read_numeric_table(f, io::TableHeader::optional);
-      io::read_numeric_table(f, io::TableHeader::optional, 2, true);
-      io::read_probe_csv(f);
+      core::read_numeric_table(f, core::TableHeader::optional);
+      core::read_numeric_table(f, core::TableHeader::optional, 2, true);
+      analysis::read_probe_csv(f);
       io::read_waveform_table(f);
     });
   }
 }
 
-TEST_CASE("fuzzed reference tables (quoted fields, blank-separated) fail only with TableError") {
+TEST_CASE(
+    "fuzzed reference tables (quoted fields, blank-separated) fail only with core::TableError") {
   for (const char* seed : {"validation/refdata/ghia1982_cavity/ghia1982_u_vertical_centreline.csv",
                            "validation/refdata/turek_hron_fsi/turek_hron_reference_values.csv",
                            "validation/refdata/tgv_re1600/spectral_Re1600_512.gdiag"}) {
     fuzz(source / seed, 300, 5, [](const fs::path& f) {
-      io::TableFormat quoted;
+      core::TableFormat quoted;
       quoted.quoted = true;
       quoted.maskable = [](const std::string& name) { return name.size() % 2 == 0; };
-      io::read_numeric_table(f, quoted);
-      io::read_numeric_table(f, io::TableHeader::none, 4, true);
+      core::read_numeric_table(f, quoted);
+      core::read_numeric_table(f, core::TableHeader::none, 4, true);
       // The Turek-Hron reader's way: a header, then fields read one by one.
-      io::TableLines lines(f, quoted);
+      core::TableLines lines(f, quoted);
       if (lines.next()) lines.header(lines.fields());
       while (lines.next())
         for (const auto& field : lines.fields()) lines.number(field, "x", true);
@@ -169,7 +170,7 @@ TEST_CASE("fuzzed reference tables (quoted fields, blank-separated) fail only wi
 
 TEST_CASE("fuzzed PIV files (CSV and Tecplot) fail only with a runtime error") {
   for (const char* seed : {"tests/data/piv/good.csv", "tests/data/piv/good.dat"})
-    fuzz(source / seed, 2000, 7, [](const fs::path& f) { io::read_piv(f); });
+    fuzz(source / seed, 2000, 7, [](const fs::path& f) { analysis::read_piv(f); });
 }
 
 TEST_CASE("fuzzed scenes fail only with SceneError") {
@@ -177,8 +178,8 @@ TEST_CASE("fuzzed scenes fail only with SceneError") {
        {"scenes/default.toml", "scenes/poiseuille_pipe.toml", "scenes/flap_channel.toml"})
     fuzz(source / seed, 1000, 11, [](const fs::path& f) {
       try {
-        io::load_scene(f);
-      } catch (const io::SceneError&) {
+        scene::load_scene(f);
+      } catch (const scene::SceneError&) {
         throw;
       } catch (const std::exception& e) {
         // Everything the loader rejects must come as a SceneError naming file:line:column.

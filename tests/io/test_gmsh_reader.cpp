@@ -42,21 +42,21 @@ void write_all_formats(const fs::path& dir) {
   }
 }
 
-double total_volume(const flow::Mesh& mesh) {
+double total_volume(const mesh::Mesh& mesh) {
   double v = 0;
-  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) v += flow::cell_volume(mesh, c);
+  for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c) v += mesh::cell_volume(mesh, c);
   return v;
 }
 
-std::map<std::string, double> patch_areas(const flow::Mesh& mesh) {
+std::map<std::string, double> patch_areas(const mesh::Mesh& mesh) {
   std::map<std::string, double> area;
-  for (flow::GlobalIndex f = 0; f < mesh.num_faces(); ++f)
-    area[mesh.patch_names[mesh.face_patches[f]]] += flow::face_area(mesh, mesh.face(f)).norm();
+  for (mesh::GlobalIndex f = 0; f < mesh.num_faces(); ++f)
+    area[mesh.patch_names[mesh.face_patches[f]]] += mesh::face_area(mesh, mesh.face(f)).norm();
   return area;
 }
 
-std::map<flow::CellType, int> type_counts(const flow::Mesh& mesh) {
-  std::map<flow::CellType, int> n;
+std::map<mesh::CellType, int> type_counts(const mesh::Mesh& mesh) {
+  std::map<mesh::CellType, int> n;
   for (auto t : mesh.cell_types) ++n[t];
   return n;
 }
@@ -67,7 +67,7 @@ TEST_CASE("tetrahedral box written by Gmsh reads back identically in all three f
   const fs::path dir = scratch_dir("box");
   std::size_t model_nodes = 0, model_tets = 0;
   {
-    io::GmshSession session;
+    mesh::GmshSession session;
     gmsh::model::add("box");
     gmsh::model::occ::addBox(0, 0, 0, 1.0, 2.0, 0.5);
     gmsh::model::occ::synchronize();
@@ -97,14 +97,14 @@ TEST_CASE("tetrahedral box written by Gmsh reads back identically in all three f
   for (const auto& f : formats) {
     const std::string format = f.name;
     CAPTURE(format);
-    const flow::Mesh mesh = io::read_gmsh(dir / (std::string(f.name) + ".msh"));
+    const mesh::Mesh mesh = mesh::read_gmsh(dir / (std::string(f.name) + ".msh"));
     CHECK(mesh.source == (dir / (std::string(f.name) + ".msh")).string());
-    CHECK(mesh.num_nodes() == static_cast<flow::GlobalIndex>(model_nodes));
-    CHECK(mesh.num_cells() == static_cast<flow::GlobalIndex>(model_tets));
-    CHECK(type_counts(mesh)[flow::CellType::tetra] == static_cast<int>(model_tets));
+    CHECK(mesh.num_nodes() == static_cast<mesh::GlobalIndex>(model_nodes));
+    CHECK(mesh.num_cells() == static_cast<mesh::GlobalIndex>(model_tets));
+    CHECK(type_counts(mesh)[mesh::CellType::tetra] == static_cast<int>(model_tets));
     CHECK(mesh.patch_names == std::vector<std::string>{"inlet", "walls"});
     CHECK(mesh.region_names == std::vector<std::string>{"fluid"});
-    CHECK_NOTHROW(flow::check_mesh(mesh));
+    CHECK_NOTHROW(mesh::check_mesh(mesh));
     // Planar box: the tetrahedra fill it exactly, up to round-off.
     CHECK(total_volume(mesh) == doctest::Approx(1.0).epsilon(1e-12));
     auto area = patch_areas(mesh);
@@ -119,7 +119,7 @@ TEST_CASE("tetrahedral box written by Gmsh reads back identically in all three f
 TEST_CASE("hybrid pyramid/hexahedron/prism mesh keeps Gmsh node order in all three formats") {
   const fs::path dir = scratch_dir("hybrid");
   {
-    io::GmshSession session;
+    mesh::GmshSession session;
     gmsh::model::add("hybrid");
     gmsh::model::addDiscreteEntity(3, 1);
     gmsh::model::addDiscreteEntity(2, 1);
@@ -198,21 +198,21 @@ TEST_CASE("hybrid pyramid/hexahedron/prism mesh keeps Gmsh node order in all thr
   for (const auto& f : formats) {
     const std::string format = f.name;
     CAPTURE(format);
-    const flow::Mesh mesh = io::read_gmsh(dir / (std::string(f.name) + ".msh"));
+    const mesh::Mesh mesh = mesh::read_gmsh(dir / (std::string(f.name) + ".msh"));
     CHECK(mesh.num_nodes() == 17);  // 16 lattice points and the centre
     auto n = type_counts(mesh);
-    CHECK(n[flow::CellType::pyramid] == 6);
-    CHECK(n[flow::CellType::hexa] == 1);
-    CHECK(n[flow::CellType::prism] == 2);
-    CHECK(n[flow::CellType::tetra] == 0);
+    CHECK(n[mesh::CellType::pyramid] == 6);
+    CHECK(n[mesh::CellType::hexa] == 1);
+    CHECK(n[mesh::CellType::prism] == 2);
+    CHECK(n[mesh::CellType::tetra] == 0);
     CHECK(mesh.patch_names == std::vector<std::string>{"wall", "inlet"});
     CHECK(mesh.region_names == std::vector<std::string>{"solid"});
     // Every cell positive with its Gmsh node order, faces matched to the tagged boundary.
-    CHECK_NOTHROW(flow::check_mesh(mesh));
-    for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c)
-      CHECK(flow::cell_volume(mesh, c) ==
-            doctest::Approx(mesh.cell_types[c] == flow::CellType::pyramid ? 1.0 / 6
-                            : mesh.cell_types[c] == flow::CellType::prism ? 0.5
+    CHECK_NOTHROW(mesh::check_mesh(mesh));
+    for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c)
+      CHECK(mesh::cell_volume(mesh, c) ==
+            doctest::Approx(mesh.cell_types[c] == mesh::CellType::pyramid ? 1.0 / 6
+                            : mesh.cell_types[c] == mesh::CellType::prism ? 0.5
                                                                           : 1.0)
                 .epsilon(1e-14));
     CHECK(total_volume(mesh) == doctest::Approx(3.0).epsilon(1e-14));
@@ -226,16 +226,16 @@ TEST_CASE("hybrid pyramid/hexahedron/prism mesh keeps Gmsh node order in all thr
 TEST_CASE("missing and unreadable files give errors naming the file") {
   const fs::path missing = scratch_dir("missing") / "nowhere.msh";
   try {
-    io::read_gmsh(missing);
+    mesh::read_gmsh(missing);
     FAIL("no exception");
-  } catch (const io::MeshFileError& e) {
+  } catch (const mesh::MeshFileError& e) {
     CHECK(std::string(e.what()).find(missing.string()) != std::string::npos);
     CHECK(std::string(e.what()).find("cannot open") != std::string::npos);
   }
   try {
-    io::read_gmsh(missing.parent_path());
+    mesh::read_gmsh(missing.parent_path());
     FAIL("no exception");
-  } catch (const io::MeshFileError& e) {
+  } catch (const mesh::MeshFileError& e) {
     CHECK(std::string(e.what()).find("not a regular file") != std::string::npos);
   }
   fs::remove_all(missing.parent_path());
@@ -244,7 +244,7 @@ TEST_CASE("missing and unreadable files give errors naming the file") {
 TEST_CASE("a file cut anywhere gives MeshFileError or the complete mesh, never a crash") {
   const fs::path dir = scratch_dir("cut");
   {
-    io::GmshSession session;
+    mesh::GmshSession session;
     gmsh::model::add("small");
     gmsh::model::occ::addBox(0, 0, 0, 1, 1, 1);
     gmsh::model::occ::synchronize();
@@ -258,7 +258,7 @@ TEST_CASE("a file cut anywhere gives MeshFileError or the complete mesh, never a
     const std::string format = f.name;
     CAPTURE(format);
     const fs::path full = dir / (format + ".msh");
-    const flow::Mesh reference = io::read_gmsh(full);
+    const mesh::Mesh reference = mesh::read_gmsh(full);
     std::ifstream in(full, std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const fs::path cut = dir / ("cut_" + format + ".msh");
@@ -266,11 +266,11 @@ TEST_CASE("a file cut anywhere gives MeshFileError or the complete mesh, never a
     for (std::size_t size = 0; size < bytes.size(); size += 1 + bytes.size() / 60) {
       std::ofstream(cut, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(size));
       try {
-        const flow::Mesh mesh = io::read_gmsh(cut);
+        const mesh::Mesh mesh = mesh::read_gmsh(cut);
         CHECK(mesh.cell_nodes == reference.cell_nodes);  // only a complete mesh may come back
         CHECK(mesh.face_nodes == reference.face_nodes);
         ++complete;
-      } catch (const io::MeshFileError& e) {
+      } catch (const mesh::MeshFileError& e) {
         CHECK(std::string(e.what()).find(cut.string()) != std::string::npos);
         ++errors;
       }
@@ -289,7 +289,7 @@ template <class Setup>
 std::string box_error(const std::string& name, Setup setup) {
   const fs::path file = scratch_dir("variants") / (name + ".msh");
   {
-    io::GmshSession session;
+    mesh::GmshSession session;
     gmsh::model::add(name);
     gmsh::model::occ::addBox(0, 0, 0, 1, 1, 1);
     gmsh::model::occ::synchronize();
@@ -301,8 +301,8 @@ std::string box_error(const std::string& name, Setup setup) {
   }
   std::string message;
   try {
-    flow::check_mesh(io::read_gmsh(file));
-  } catch (const flow::MeshError& e) {
+    mesh::check_mesh(mesh::read_gmsh(file));
+  } catch (const mesh::MeshError& e) {
     message = e.what();
   }
   fs::remove(file);

@@ -28,11 +28,11 @@ namespace {
 constexpr double period = 0.4, rho = 1060;
 constexpr int bins = 4, cycles = 4;
 
-flow::Mesh box() {
-  io::BoxSpec spec;
+mesh::Mesh box() {
+  mesh::BoxSpec spec;
   spec.cell_type = "tetra";
   spec.cells = {5, 4, 3};
-  return io::generate_box(spec);
+  return mesh::generate_box(spec);
 }
 
 // Over cycles 0..3: mean 0, mean square 1, mean product 0.
@@ -62,7 +62,7 @@ double mean_u(const Eigen::Vector3d& x, int b) {
 
 // The state at the centre of bin b of cycle c: u = mean + C e, v = 0.5 + D e, w = -1 + E f,
 // p = 10 x + 3 C f.
-flow::FlowState state_at(const flow::LocalMesh& local, std::int64_t c, int b) {
+flow::FlowState state_at(const mesh::LocalMesh& local, std::int64_t c, int b) {
   flow::FlowState s;
   s.time = 0.1 + period * (double(c) + (b + 0.5) / bins);  // start_time 0.1
   for (int i = 0; i < local.num_local(); ++i) {
@@ -74,16 +74,16 @@ flow::FlowState state_at(const flow::LocalMesh& local, std::int64_t c, int b) {
   return s;
 }
 
-void run_cycles(const flow::LocalMesh& local, io::LineStatistics& line, int first, int last) {
+void run_cycles(const mesh::LocalMesh& local, analysis::LineStatistics& line, int first, int last) {
   for (int c = first; c < last; ++c)
     for (int b = 0; b < bins; ++b) line.add(state_at(local, c, b));
 }
 
-const io::PhaseStatisticsOptions options{period, bins, 0.1, rho, "diag"};
-const io::LineSpec diagonal{{0.05, 0.9, 0.1}, {0.95, 0.1, 0.85}, 7};
+const analysis::PhaseStatisticsOptions options{period, bins, 0.1, rho, "diag"};
+const analysis::LineSpec diagonal{{0.05, 0.9, 0.1}, {0.95, 0.1, 0.85}, 7};
 
 // Every accumulated number of two lines over the same points, compared bit for bit.
-bool same_bits(const io::LineStatistics& a, const io::LineStatistics& b) {
+bool same_bits(const analysis::LineStatistics& a, const analysis::LineStatistics& b) {
   if (a.points().size() != b.points().size()) return false;
   for (int bin = 0; bin < bins; ++bin) {
     if (a.count(bin) != b.count(bin)) return false;
@@ -99,9 +99,9 @@ bool same_bits(const io::LineStatistics& a, const io::LineStatistics& b) {
 
 TEST_CASE("line statistics: exact phase means, RMS and stresses; same bits on one rank") {
   const auto mesh = box();
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
-  io::LineStatistics line(mesh, metrics, local, options, diagonal, "statistics.diag");
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD);
+  analysis::LineStatistics line(mesh, metrics, local, options, diagonal, "statistics.diag");
   REQUIRE(line.points().size() == 7);
   CHECK(line.outside() == 0);
   run_cycles(local, line, 0, cycles);
@@ -137,8 +137,8 @@ TEST_CASE("line statistics: exact phase means, RMS and stresses; same bits on on
   CHECK(bad == 0);
 
   // The same line on one rank: Probes gives the same bits at any rank count.
-  const auto serial = flow::distribute(mesh, metrics, MPI_COMM_SELF);
-  io::LineStatistics alone(mesh, metrics, serial, options, diagonal, "statistics.diag");
+  const auto serial = mesh::distribute(mesh, metrics, MPI_COMM_SELF);
+  analysis::LineStatistics alone(mesh, metrics, serial, options, diagonal, "statistics.diag");
   run_cycles(serial, alone, 0, cycles);
   CHECK(same_bits(line, alone));
 
@@ -175,12 +175,12 @@ TEST_CASE("line statistics: exact phase means, RMS and stresses; same bits on on
 
 TEST_CASE("line statistics: a checkpoint mid-run continues to the same bits") {
   const auto mesh = box();
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
-  io::LineStatistics straight(mesh, metrics, local, options, diagonal, "statistics.diag");
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD);
+  analysis::LineStatistics straight(mesh, metrics, local, options, diagonal, "statistics.diag");
   run_cycles(local, straight, 0, cycles);
 
-  io::LineStatistics first_half(mesh, metrics, local, options, diagonal, "statistics.diag");
+  analysis::LineStatistics first_half(mesh, metrics, local, options, diagonal, "statistics.diag");
   run_cycles(local, first_half, 0, 2);
   const fs::path dir = fs::path("test_output") / "line_statistics_restart" /
                        ("np" + std::to_string(local.comm.size()));
@@ -189,19 +189,19 @@ TEST_CASE("line statistics: a checkpoint mid-run continues to the same bits") {
       writer.write(state_at(local, 1, bins - 1), 8, 1e-3, first_half.checkpoint_arrays());
 
   for (MPI_Comm comm : {MPI_COMM_WORLD, MPI_COMM_SELF}) {
-    const auto other = flow::distribute(mesh, metrics, comm);
-    io::LineStatistics back(mesh, metrics, other, options, diagonal, "statistics.diag");
+    const auto other = mesh::distribute(mesh, metrics, comm);
+    analysis::LineStatistics back(mesh, metrics, other, options, diagonal, "statistics.diag");
     back.restore(io::CheckpointReader(other, io::mesh_hash(mesh), path));
     CHECK(back.count(0) == 2);
     run_cycles(other, back, 2, cycles);
     CHECK(same_bits(back, straight));
 
-    io::LineStatistics shifted(mesh, metrics, other, options,
+    analysis::LineStatistics shifted(mesh, metrics, other, options,
                                {diagonal.origin, diagonal.end + Eigen::Vector3d(0, 0, 0.01), 7},
                                "statistics.diag");
     CHECK_THROWS_WITH(shifted.restore(io::CheckpointReader(other, io::mesh_hash(mesh), path)),
                       doctest::Contains("saved point 1 is at"));
-    io::LineStatistics other_bins(mesh, metrics, other, {period, 2, 0.1, rho, "diag"}, diagonal,
+    analysis::LineStatistics other_bins(mesh, metrics, other, {period, 2, 0.1, rho, "diag"}, diagonal,
                                   "statistics.diag");
     CHECK_THROWS_WITH(other_bins.restore(io::CheckpointReader(other, io::mesh_hash(mesh), path)),
                       doctest::Contains("saved with period 0.4 s, 4 bins"));
@@ -210,18 +210,18 @@ TEST_CASE("line statistics: a checkpoint mid-run continues to the same bits") {
 
 TEST_CASE("line statistics: points outside the mesh are left out; bad lines are refused") {
   const auto mesh = box();
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD);
   // x = -1.05, -0.55, -0.05 are outside the unit box, 0.45 and 0.95 inside.
-  io::LineStatistics half(mesh, metrics, local, options, {{-1.05, 0.5, 0.5}, {0.95, 0.5, 0.5}, 5},
+  analysis::LineStatistics half(mesh, metrics, local, options, {{-1.05, 0.5, 0.5}, {0.95, 0.5, 0.5}, 5},
                           "statistics.half");
   CHECK(half.outside() == 3);
   REQUIRE(half.arc_length().size() == 2);
   CHECK(half.arc_length()[0] == doctest::Approx(1.5).epsilon(1e-15));
-  CHECK_THROWS_WITH(io::LineStatistics(mesh, metrics, local, options, {{2, 2, 2}, {3, 3, 3}, 4},
+  CHECK_THROWS_WITH(analysis::LineStatistics(mesh, metrics, local, options, {{2, 2, 2}, {3, 3, 3}, 4},
                                        "statistics.away"),
                     doctest::Contains("statistics.away: none of the 4 points"));
-  CHECK_THROWS_WITH(io::LineStatistics(mesh, metrics, local, options,
+  CHECK_THROWS_WITH(analysis::LineStatistics(mesh, metrics, local, options,
                                        {{0.5, 0.5, 0.5}, {0.5, 0.5, 0.5}, 4}, "statistics.dot"),
                     doctest::Contains("statistics.dot.end: the line has zero length"));
 
@@ -230,9 +230,9 @@ TEST_CASE("line statistics: points outside the mesh are left out; bad lines are 
     const std::string text =
         "[mesh]\nsource = \"box\"\n[mesh.box]\ncells = [4, 4, 4]\n[time]\nend = 1.0\n" + tables;
     try {
-      const auto scene = io::parse_scene(text, "line.toml");
-      io::read_analysis_options(scene, mesh);
-    } catch (const io::SceneError& e) {
+      const auto scene = scene::parse_scene(text, "line.toml");
+      scene::read_analysis_options(scene, mesh);
+    } catch (const scene::SceneError& e) {
       return std::string(e.what());
     }
     return std::string("no error");

@@ -8,16 +8,16 @@
 #include "mesh/mesh_check.hpp"
 
 using namespace valsalva;
-using flow::CellType;
-using flow::GlobalIndex;
+using mesh::CellType;
+using mesh::GlobalIndex;
 
 namespace {
 
 // One cell of the given type on the unit-cube corner nodes (Gmsh order), after an affine map x
 // -> A x + b with det A = 6, all its faces on patch "wall".
-flow::Mesh single_cell(CellType type, const Eigen::Matrix3d& A) {
-  flow::Mesh mesh;
-  mesh.source = std::string("single ") + flow::name(type);
+mesh::Mesh single_cell(CellType type, const Eigen::Matrix3d& A) {
+  mesh::Mesh mesh;
+  mesh.source = std::string("single ") + mesh::name(type);
   const std::vector<Eigen::Vector3d> corners = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0},
                                                 {0, 1, 0}, {0, 0, 1}, {1, 0, 1},
                                                 {1, 1, 1}, {0, 1, 1}, {0.5, 0.5, 1}};
@@ -41,7 +41,7 @@ flow::Mesh single_cell(CellType type, const Eigen::Matrix3d& A) {
   for (std::size_t k = 0; k < local.size(); ++k) local[k] = static_cast<GlobalIndex>(k);
   mesh.add_cell(type, local, mesh.add_region("fluid"));
   const int wall = mesh.add_patch("wall");
-  for (const auto& face : flow::cell_faces(type)) {
+  for (const auto& face : mesh::cell_faces(type)) {
     std::vector<GlobalIndex> f(face.begin(), face.end());
     mesh.add_face(f, wall);
   }
@@ -59,28 +59,28 @@ TEST_CASE("cell volumes are exact for affine images of the reference cells") {
                                                {CellType::prism, 0.5},
                                                {CellType::hexa, 1.0}};
   for (auto [type, reference] : cells) {
-    CAPTURE(flow::name(type));
-    const flow::Mesh mesh = single_cell(type, A);
-    CHECK_NOTHROW(flow::check_mesh(mesh));
-    CHECK(flow::cell_volume(mesh, 0) == doctest::Approx(reference * det).epsilon(1e-14));
-    CHECK(flow::min_subtet_volume(mesh, 0) > 0);
+    CAPTURE(mesh::name(type));
+    const mesh::Mesh mesh = single_cell(type, A);
+    CHECK_NOTHROW(mesh::check_mesh(mesh));
+    CHECK(mesh::cell_volume(mesh, 0) == doctest::Approx(reference * det).epsilon(1e-14));
+    CHECK(mesh::min_subtet_volume(mesh, 0) > 0);
     // Closed cell: the outward face area vectors sum to zero.
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (GlobalIndex f = 0; f < mesh.num_faces(); ++f) sum += flow::face_area(mesh, mesh.face(f));
+    for (GlobalIndex f = 0; f < mesh.num_faces(); ++f) sum += mesh::face_area(mesh, mesh.face(f));
     CHECK(sum.norm() < 1e-14 * std::cbrt(det * det));
   }
 }
 
 TEST_CASE("check_mesh names the problem on hand-made bad meshes") {
-  auto message = [](const flow::Mesh& mesh) {
+  auto message = [](const mesh::Mesh& mesh) {
     try {
-      flow::check_mesh(mesh);
-    } catch (const flow::MeshError& e) {
+      mesh::check_mesh(mesh);
+    } catch (const mesh::MeshError& e) {
       return std::string(e.what());
     }
     return std::string();
   };
-  flow::Mesh mesh = single_cell(CellType::hexa, Eigen::Matrix3d::Identity());
+  mesh::Mesh mesh = single_cell(CellType::hexa, Eigen::Matrix3d::Identity());
   mesh.cell_nodes[5] = 12;
   std::string m = message(mesh);
   CHECK(m.find("single hexahedron") != std::string::npos);

@@ -18,8 +18,8 @@ const std::filesystem::path data = std::filesystem::path(VALSALVA_SOURCE_DIR) / 
 // Reads and checks a mesh; returns the error message ("" when the mesh is accepted).
 std::string error_of(const std::filesystem::path& file) {
   try {
-    flow::check_mesh(io::read_gmsh(file));
-  } catch (const flow::MeshError& e) {
+    mesh::check_mesh(mesh::read_gmsh(file));
+  } catch (const mesh::MeshError& e) {
     return e.what();
   }
   return "";

@@ -11,13 +11,13 @@
 #include "mesh/mesh_info.hpp"
 
 using namespace valsalva;
-using flow::CellType;
-using flow::GlobalIndex;
+using mesh::CellType;
+using mesh::GlobalIndex;
 
 namespace {
 
-flow::Mesh one_cell(CellType type, std::vector<Eigen::Vector3d> nodes) {
-  flow::Mesh mesh;
+mesh::Mesh one_cell(CellType type, std::vector<Eigen::Vector3d> nodes) {
+  mesh::Mesh mesh;
   mesh.nodes = std::move(nodes);
   std::vector<GlobalIndex> cell(mesh.nodes.size());
   for (std::size_t k = 0; k < cell.size(); ++k) cell[k] = static_cast<GlobalIndex>(k);
@@ -32,29 +32,30 @@ TEST_CASE("quality measures are 1 for the ideal shapes and follow the closed for
   auto regular_tet =
       one_cell(CellType::tetra,
                {{0, 0, 0}, {1, 0, 0}, {0.5, s3 / 2, 0}, {0.5, s3 / 6, std::sqrt(2.0 / 3.0)}});
-  CHECK(io::cell_quality(regular_tet, 0) == doctest::Approx(1.0).epsilon(1e-14));
+  CHECK(mesh::cell_quality(regular_tet, 0) == doctest::Approx(1.0).epsilon(1e-14));
   std::swap(regular_tet.cell_nodes[1], regular_tet.cell_nodes[2]);  // inverted: negative
-  CHECK(io::cell_quality(regular_tet, 0) == doctest::Approx(-1.0).epsilon(1e-14));
+  CHECK(mesh::cell_quality(regular_tet, 0) == doctest::Approx(-1.0).epsilon(1e-14));
   const double shear = 0.75;
   std::vector<Eigen::Vector3d> hex = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
                                       {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  CHECK(io::cell_quality(one_cell(CellType::hexa, hex), 0) == doctest::Approx(1.0).epsilon(1e-14));
+  CHECK(mesh::cell_quality(one_cell(CellType::hexa, hex), 0) ==
+        doctest::Approx(1.0).epsilon(1e-14));
   for (auto& x : hex) x.x() += shear * x.z();  // every corner: det 1, one edge sqrt(1 + s^2)
-  CHECK(io::cell_quality(one_cell(CellType::hexa, hex), 0) ==
+  CHECK(mesh::cell_quality(one_cell(CellType::hexa, hex), 0) ==
         doctest::Approx(1 / std::sqrt(1 + shear * shear)).epsilon(1e-14));
   const auto prism =
       one_cell(CellType::prism,
                {{0, 0, 0}, {1, 0, 0}, {0.5, s3 / 2, 0}, {0, 0, 2}, {1, 0, 2}, {0.5, s3 / 2, 2}});
-  CHECK(io::cell_quality(prism, 0) == doctest::Approx(1.0).epsilon(1e-14));
+  CHECK(mesh::cell_quality(prism, 0) == doctest::Approx(1.0).epsilon(1e-14));
   const auto pyramid =
       one_cell(CellType::pyramid, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, h}});
-  CHECK(io::cell_quality(pyramid, 0) == doctest::Approx(1.0).epsilon(1e-14));
+  CHECK(mesh::cell_quality(pyramid, 0) == doctest::Approx(1.0).epsilon(1e-14));
 }
 
 TEST_CASE("mesh_info of the six-tetrahedron unit cube") {
   const auto file = std::filesystem::path(VALSALVA_SOURCE_DIR) / "tests/data/meshes/cube_tets.msh";
-  const flow::Mesh mesh = io::read_gmsh(file);
-  const io::MeshInfo info = io::summarize_mesh(mesh);
+  const mesh::Mesh mesh = mesh::read_gmsh(file);
+  const mesh::MeshInfo info = mesh::summarize_mesh(mesh);
   CHECK(info.nodes == 8);
   CHECK(info.cells_of_type[static_cast<int>(CellType::tetra)] == 6);
   REQUIRE(info.patches.size() == 1);
@@ -71,12 +72,13 @@ TEST_CASE("mesh_info of the six-tetrahedron unit cube") {
   CHECK(q.max == doctest::Approx(kuhn).epsilon(1e-14));
   CHECK(q.mean == doctest::Approx(kuhn).epsilon(1e-14));
 
-  const flow::DualMetrics metrics = flow::compute_dual_metrics(mesh);
-  const io::MeshInfo with_dual = io::summarize_mesh(mesh, std::span<const double>(metrics.volume));
+  const mesh::DualMetrics metrics = mesh::compute_dual_metrics(mesh);
+  const mesh::MeshInfo with_dual =
+      mesh::summarize_mesh(mesh, std::span<const double>(metrics.volume));
   CHECK(*with_dual.dual_volume_sum == doctest::Approx(1.0).epsilon(1e-14));
   CHECK(*with_dual.min_dual_volume > 0);
 
-  const std::string text = io::mesh_info(mesh);
+  const std::string text = mesh::mesh_info(mesh);
   MESSAGE(text);
   CHECK(text.find(file.string()) != std::string::npos);
   CHECK(text.find("tetrahedron           6") != std::string::npos);
@@ -90,6 +92,7 @@ TEST_CASE("mesh_info of the six-tetrahedron unit cube") {
 TEST_CASE("mesh_info refuses a bad mesh with the check_mesh error") {
   const auto file =
       std::filesystem::path(VALSALVA_SOURCE_DIR) / "tests/data/meshes/bad/inverted_tet.msh";
-  const flow::Mesh mesh = io::read_gmsh(file);
-  CHECK_THROWS_WITH_AS(io::mesh_info(mesh), doctest::Contains("inverted cell 2"), flow::MeshError);
+  const mesh::Mesh mesh = mesh::read_gmsh(file);
+  CHECK_THROWS_WITH_AS(mesh::mesh_info(mesh), doctest::Contains("inverted cell 2"),
+                       mesh::MeshError);
 }

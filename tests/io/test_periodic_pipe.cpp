@@ -12,19 +12,19 @@
 using namespace valsalva;
 
 TEST_CASE("periodic pipe: prisms and split tetrahedra, volume, wall, identical layers") {
-  io::PeriodicPipeSpec spec;
+  mesh::PeriodicPipeSpec spec;
   spec.radius = 0.01, spec.target_size = 0.002, spec.layers = 4, spec.length = 4 * 0.002;
   for (bool split : {false, true}) {
     spec.split = split;
-    const auto mesh = io::generate_periodic_pipe_mesh(spec);
+    const auto mesh = mesh::generate_periodic_pipe_mesh(spec);
     CAPTURE(split);
     for (auto t : mesh.cell_types)
-      REQUIRE(t == (split ? flow::CellType::tetra : flow::CellType::prism));
-    CHECK_NOTHROW(flow::check_mesh(mesh));
+      REQUIRE(t == (split ? mesh::CellType::tetra : mesh::CellType::prism));
+    CHECK_NOTHROW(mesh::check_mesh(mesh));
     double volume = 0;
-    for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
-      CHECK(flow::cell_volume(mesh, c) > 0);
-      volume += flow::cell_volume(mesh, c);
+    for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
+      CHECK(mesh::cell_volume(mesh, c) > 0);
+      volume += mesh::cell_volume(mesh, c);
     }
     // The disk is an inscribed polygon of n >= 2 pi R / size chords: area deficit below
     // pi R^2 (2 pi / n)^2 / 6.
@@ -34,7 +34,7 @@ TEST_CASE("periodic pipe: prisms and split tetrahedra, volume, wall, identical l
     CHECK(disc * spec.length - volume < 1.5 * disc * t * t / 6 * spec.length);
     const int wall = mesh.patch_index("wall");
     double off = 0;
-    for (flow::GlobalIndex f = 0; f < mesh.num_faces(); ++f)
+    for (mesh::GlobalIndex f = 0; f < mesh.num_faces(); ++f)
       if (mesh.face_patches[f] == wall)
         for (auto n : mesh.face(f))
           off = std::max(off,
@@ -43,19 +43,19 @@ TEST_CASE("periodic pipe: prisms and split tetrahedra, volume, wall, identical l
     // Layer l is layer 0 shifted by l * length / layers, node by node.
     const auto per_layer = mesh.num_nodes() / (spec.layers + 1);
     REQUIRE(per_layer * (spec.layers + 1) == mesh.num_nodes());
-    for (flow::GlobalIndex a = 0; a < mesh.num_nodes(); ++a) {
+    for (mesh::GlobalIndex a = 0; a < mesh.num_nodes(); ++a) {
       const auto& x = mesh.nodes[a];
       const auto& x0 = mesh.nodes[a % per_layer];
       REQUIRE(x.head<2>() == x0.head<2>());
     }
     // zmin/zmax pair as periodic; the dual volumes add up to the cell volumes.
-    const auto metrics = flow::compute_dual_metrics(mesh);
+    const auto metrics = mesh::compute_dual_metrics(mesh);
     double dual = 0;
     for (double v : metrics.volume) dual += v;
     CHECK(dual == doctest::Approx(volume).epsilon(1e-12));
     CHECK(metrics.num_nodes() == per_layer * spec.layers);
   }
   spec.layers = 2;
-  CHECK_THROWS_WITH_AS(io::generate_periodic_pipe_mesh(spec), doctest::Contains("layers = 2"),
+  CHECK_THROWS_WITH_AS(mesh::generate_periodic_pipe_mesh(spec), doctest::Contains("layers = 2"),
                        std::invalid_argument);
 }

@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "analysis/phase_statistics.hpp"
+#include "core/comm.hpp"
 #include "io/xdmf_writer.hpp"
 #include "mesh/box_generator.hpp"
 #include "mesh/dual_metrics.hpp"
@@ -23,11 +24,11 @@ namespace {
 constexpr double period = 0.8, rho = 1100;
 constexpr int bins = 4, cycles = 8;
 
-flow::Mesh box() {
-  io::BoxSpec spec;
+mesh::Mesh box() {
+  mesh::BoxSpec spec;
   spec.cell_type = "tetra";
   spec.cells = {6, 4, 3};
-  return io::generate_box(spec);
+  return mesh::generate_box(spec);
 }
 
 // Zero-mean, unit-variance, mutually orthogonal sequences over 8 cycles (Walsh functions).
@@ -47,7 +48,7 @@ double mean_u(const Eigen::Vector3d& x, int b) {
 }
 
 // Sample at one node, cycle c, bin b: mean + a e + 0.5 a f (v), ...
-void fill(const flow::LocalMesh& local, std::int64_t c, int b, flow::FlowState& s) {
+void fill(const mesh::LocalMesh& local, std::int64_t c, int b, flow::FlowState& s) {
   s.velocity.resize(local.num_local());
   s.pressure.resize(local.num_local());
   for (int i = 0; i < local.num_owned; ++i) {
@@ -58,7 +59,7 @@ void fill(const flow::LocalMesh& local, std::int64_t c, int b, flow::FlowState& 
   }
 }
 
-void run_cycles(const flow::LocalMesh& local, io::PhaseStatistics& stats, int first, int last) {
+void run_cycles(const mesh::LocalMesh& local, analysis::PhaseStatistics& stats, int first, int last) {
   flow::FlowState s;
   for (int c = first; c < last; ++c)
     for (int b = 0; b < bins; ++b) {
@@ -71,9 +72,9 @@ void run_cycles(const flow::LocalMesh& local, io::PhaseStatistics& stats, int fi
 
 TEST_CASE("phase statistics of a synthetic periodic signal") {
   const auto mesh = box();
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
-  io::PhaseStatistics stats(local, {period, bins, 0.2, rho, "phase"}, io::all_owned_nodes(local));
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  analysis::PhaseStatistics stats(local, {period, bins, 0.2, rho, "phase"}, analysis::all_owned_nodes(local));
   CHECK(stats.bin_of(0.2) == 0);
   CHECK(stats.bin_of(0.2 + 0.25 * period) == 1);
   CHECK(stats.bin_of(0.2 + 3.99 * period) == 3);
@@ -104,8 +105,8 @@ TEST_CASE("phase statistics of a synthetic periodic signal") {
   CHECK(local.comm.max(worst) < 1e-12);  // a few ulps of the largest value, p = 300 Pa
 
   // Chan merge: cycles 0-2 and 3-7 accumulated apart, then merged.
-  io::PhaseStatistics first(local, stats.options(), stats.nodes());
-  io::PhaseStatistics second(local, stats.options(), stats.nodes());
+  analysis::PhaseStatistics first(local, stats.options(), stats.nodes());
+  analysis::PhaseStatistics second(local, stats.options(), stats.nodes());
   run_cycles(local, first, 0, 3);
   run_cycles(local, second, 3, cycles);
   first.merge(second);
@@ -121,9 +122,9 @@ TEST_CASE("phase statistics of a synthetic periodic signal") {
 
 TEST_CASE("phase statistics: large offset, Welford against the naive sum of squares") {
   const auto mesh = box();
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  auto local = flow::distribute(mesh, metrics, MPI_COMM_SELF, {2, "metis"});
-  io::PhaseStatistics stats(local, {0.0, 1, 0.0, rho, "mean"}, {0});
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  auto local = mesh::distribute(mesh, metrics, MPI_COMM_SELF, {2, "metis"});
+  analysis::PhaseStatistics stats(local, {0.0, 1, 0.0, rho, "mean"}, {0});
   const double offset = 1e8, sigma = 1e-3;
   double sum = 0, sum2 = 0;
   std::vector<double> sample(4, 0.0);
@@ -152,15 +153,15 @@ TEST_CASE("phase statistics: large offset, Welford against the naive sum of squa
 
 TEST_CASE("phase statistics: checkpoint round trip and output") {
   const fs::path dir =
-      fs::path("test_output") / "phase_statistics" / ("np" + std::to_string(flow::Comm().size()));
+      fs::path("test_output") / "phase_statistics" / ("np" + std::to_string(core::Comm().size()));
   const auto mesh = box();
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
-  const io::PhaseStatisticsOptions options{period, bins, 0.2, rho, "plane"};
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  const analysis::PhaseStatisticsOptions options{period, bins, 0.2, rho, "plane"};
   // A plane subset: nodes near y = 0.5.
-  const auto plane = io::nodes_near_plane(local, {0, 0.5, 0}, {0, 1, 0}, 1e-9);
+  const auto plane = analysis::nodes_near_plane(local, {0, 0.5, 0}, {0, 1, 0}, 1e-9);
   CHECK(local.comm.sum(std::int64_t(plane.size())) == 7 * 4);
-  io::PhaseStatistics stats(local, options, plane);
+  analysis::PhaseStatistics stats(local, options, plane);
   run_cycles(local, stats, 0, 5);
   const auto arrays = stats.checkpoint_arrays();
   flow::FlowState state;
@@ -169,9 +170,9 @@ TEST_CASE("phase statistics: checkpoint round trip and output") {
   const auto path = writer.write(state, 1, 1e-3, arrays);
 
   for (MPI_Comm comm : {MPI_COMM_WORLD, MPI_COMM_SELF}) {
-    auto other = flow::distribute(mesh, metrics, comm, {2, "metis"});
-    const auto other_plane = io::nodes_near_plane(other, {0, 0.5, 0}, {0, 1, 0}, 1e-9);
-    io::PhaseStatistics back(other, options, other_plane);
+    auto other = mesh::distribute(mesh, metrics, comm, {2, "metis"});
+    const auto other_plane = analysis::nodes_near_plane(other, {0, 0.5, 0}, {0, 1, 0}, 1e-9);
+    analysis::PhaseStatistics back(other, options, other_plane);
     back.restore(io::CheckpointReader(other, io::mesh_hash(mesh), path));
     CHECK(back.cycles() == 5);
     int bad = 0;
@@ -186,7 +187,7 @@ TEST_CASE("phase statistics: checkpoint round trip and output") {
       }
     }
     CHECK(other.comm.sum(std::int64_t(bad)) == 0);
-    io::PhaseStatistics other_bins(other, {period, 2, 0.2, rho, "plane"}, other_plane);
+    analysis::PhaseStatistics other_bins(other, {period, 2, 0.2, rho, "plane"}, other_plane);
     CHECK_THROWS_WITH(other_bins.restore(io::CheckpointReader(other, io::mesh_hash(mesh), path)),
                       doctest::Contains("saved with period 0.8 s, 4 bins"));
   }
@@ -198,7 +199,7 @@ TEST_CASE("phase statistics: checkpoint round trip and output") {
     const auto u = io::read_nodal_field(dir / "out" / "plane_000002.h5", "mean_velocity");
     const auto k = io::read_nodal_field(dir / "out" / "plane_000002.h5", "k");
     int on = 0, off = 0, wrong = 0;
-    for (flow::GlobalIndex m = 0; m < mesh.num_nodes(); ++m) {
+    for (mesh::GlobalIndex m = 0; m < mesh.num_nodes(); ++m) {
       const auto& x = mesh.nodes[m];
       if (std::abs(x.y() - 0.5) < 1e-9) {
         ++on;

@@ -12,21 +12,21 @@ using namespace valsalva;
 
 TEST_CASE("pipe mesh: patches on the right surfaces, valid tetrahedra, inscribed volume") {
   const double r = 0.01, length = 0.05, h = 0.0025;
-  const flow::Mesh mesh = io::generate_pipe_mesh(r, length, h);
+  const mesh::Mesh mesh = mesh::generate_pipe_mesh(r, length, h);
   MESSAGE("pipe mesh: ", mesh.num_nodes(), " nodes, ", mesh.num_cells(), " tetrahedra");
   CHECK(mesh.patch_names == std::vector<std::string>{"inlet", "outlet", "wall"});
   CHECK(mesh.region_names == std::vector<std::string>{"fluid"});
-  for (auto t : mesh.cell_types) REQUIRE(t == flow::CellType::tetra);
-  CHECK_NOTHROW(flow::check_mesh(mesh));
+  for (auto t : mesh.cell_types) REQUIRE(t == mesh::CellType::tetra);
+  CHECK_NOTHROW(mesh::check_mesh(mesh));
 
   // Nodes of each patch lie on its surface; inlet rim nodes counted for the polygon area.
   const int inlet = mesh.patch_index("inlet"), outlet = mesh.patch_index("outlet");
-  std::set<flow::GlobalIndex> rim;
+  std::set<mesh::GlobalIndex> rim;
   double max_off = 0;
   std::vector<double> area(3, 0.0);
-  for (flow::GlobalIndex f = 0; f < mesh.num_faces(); ++f) {
+  for (mesh::GlobalIndex f = 0; f < mesh.num_faces(); ++f) {
     const int p = mesh.face_patches[f];
-    area[p] += flow::face_area(mesh, mesh.face(f)).norm();
+    area[p] += mesh::face_area(mesh, mesh.face(f)).norm();
     for (auto n : mesh.face(f)) {
       const auto& x = mesh.nodes[n];
       const double radius = std::hypot(x.x(), x.y());
@@ -53,7 +53,7 @@ TEST_CASE("pipe mesh: patches on the right surfaces, valid tetrahedra, inscribed
   // wall triangles joining rim nodes at different z add to it (factor 2 allowed).
   const double t = 2 * std::numbers::pi / n_rim, deficit = t * t / 6;
   double volume = 0;
-  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) volume += flow::cell_volume(mesh, c);
+  for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c) volume += mesh::cell_volume(mesh, c);
   const double exact = std::numbers::pi * r * r * length;
   MESSAGE("volume deficit ", 1 - volume / exact, " (polygon deficit ", deficit, ")");
   CHECK(volume < exact);
@@ -64,25 +64,25 @@ TEST_CASE("pipe mesh: patches on the right surfaces, valid tetrahedra, inscribed
 }
 
 TEST_CASE("pipe mesh is deterministic and rejects bad arguments") {
-  const flow::Mesh a = io::generate_pipe_mesh(0.5, 1.0, 0.2);
-  const flow::Mesh b = io::generate_pipe_mesh(0.5, 1.0, 0.2);
+  const mesh::Mesh a = mesh::generate_pipe_mesh(0.5, 1.0, 0.2);
+  const mesh::Mesh b = mesh::generate_pipe_mesh(0.5, 1.0, 0.2);
   CHECK(a.nodes == b.nodes);
   CHECK(a.cell_nodes == b.cell_nodes);
   CHECK(a.face_nodes == b.face_nodes);
-  CHECK_THROWS_AS(io::generate_pipe_mesh(0.0, 1.0, 0.1), std::invalid_argument);
-  CHECK_THROWS_AS(io::generate_pipe_mesh(1.0, -1.0, 0.1), std::invalid_argument);
-  CHECK_THROWS_AS(io::generate_pipe_mesh(1.0, 1.0, NAN), std::invalid_argument);
+  CHECK_THROWS_AS(mesh::generate_pipe_mesh(0.0, 1.0, 0.1), std::invalid_argument);
+  CHECK_THROWS_AS(mesh::generate_pipe_mesh(1.0, -1.0, 0.1), std::invalid_argument);
+  CHECK_THROWS_AS(mesh::generate_pipe_mesh(1.0, 1.0, NAN), std::invalid_argument);
 }
 
 TEST_CASE("pipe mesh: wall-graded size refines only near the wall") {
   const double r = 0.5, length = 1.0, h = 0.1;
-  io::PipeMeshOptions graded;
+  mesh::PipeMeshOptions graded;
   graded.wall_size = 0.5 * h, graded.wall_distance = h;
-  const flow::Mesh uniform = io::generate_pipe_mesh(r, length, h);
-  const flow::Mesh mesh = io::generate_pipe_mesh(r, length, h, graded);
-  CHECK_NOTHROW(flow::check_mesh(mesh));
+  const mesh::Mesh uniform = mesh::generate_pipe_mesh(r, length, h);
+  const mesh::Mesh mesh = mesh::generate_pipe_mesh(r, length, h, graded);
+  CHECK_NOTHROW(mesh::check_mesh(mesh));
   // Half the size on the wall surface: about 4x its nodes; the core r < r - 2h keeps size h.
-  const auto count = [&](const flow::Mesh& m, bool wall) {
+  const auto count = [&](const mesh::Mesh& m, bool wall) {
     int n = 0;
     for (const auto& x : m.nodes) {
       const double s = std::hypot(x.x(), x.y());
@@ -96,5 +96,5 @@ TEST_CASE("pipe mesh: wall-graded size refines only near the wall") {
   CHECK(count(mesh, true) > 3 * count(uniform, true));
   CHECK(count(mesh, false) < 1.3 * count(uniform, false));
   graded.wall_distance = 0;
-  CHECK_THROWS_AS(io::generate_pipe_mesh(r, length, h, graded), std::invalid_argument);
+  CHECK_THROWS_AS(mesh::generate_pipe_mesh(r, length, h, graded), std::invalid_argument);
 }

@@ -29,16 +29,16 @@ Eigen::Matrix3d stress() {
 }
 
 struct Setup {
-  flow::Mesh mesh;
-  io::SimulationStatistics sim;
+  mesh::Mesh mesh;
+  analysis::SimulationStatistics sim;
 };
 
 Setup setup(const std::string& type) {
-  io::BoxSpec spec;
+  mesh::BoxSpec spec;
   spec.cell_type = type;
   spec.cells = {6, 6, 6};
   spec.perturbation = 0.1;
-  Setup s{io::generate_box(spec), {}};
+  Setup s{mesh::generate_box(spec), {}};
   const auto r = stress();
   for (const auto& x : s.mesh.nodes) {
     const auto u = mean_u(x);
@@ -53,17 +53,17 @@ Setup setup(const std::string& type) {
 }
 
 // Plane through the cube centre, tilted by a = 30 deg about y and b = 20 deg about x.
-io::PivPlane tilted_plane() {
+analysis::PivPlane tilted_plane() {
   const double a = M_PI / 6, b = M_PI / 9;
-  return io::PivPlane({0.5, 0.5, 0.5}, {std::cos(a), 0, std::sin(a)},
+  return analysis::PivPlane({0.5, 0.5, 0.5}, {std::cos(a), 0, std::sin(a)},
                       {-std::sin(a) * std::sin(b), std::cos(b), std::cos(a) * std::sin(b)});
 }
 
-io::PivFrame synthetic(const io::PivPlane& plane, double sigma, std::uint64_t seed, double extent) {
+analysis::PivFrame synthetic(const analysis::PivPlane& plane, double sigma, std::uint64_t seed, double extent) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> noise(0.0, sigma);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  io::PivFrame f;
+  analysis::PivFrame f;
   f.label = "phase 0.3";
   f.ni = 21, f.nj = 21;
   const auto r = stress();
@@ -90,11 +90,11 @@ TEST_CASE("PIV comparison on a tilted plane: round-off without noise, sigma with
   for (std::string type : {"tetra", "hexa"}) {
     CAPTURE(type);
     const auto s = setup(type);
-    const io::PointLocator locator(s.mesh);
+    const mesh::PointLocator locator(s.mesh);
     const auto plane = tilted_plane();
     const auto exact = synthetic(plane, 0.0, 1, 0.3);
-    const io::PivSampler exact_sampler(locator, plane, exact);
-    const auto c0 = io::compare_frame(exact, exact_sampler, s.sim);
+    const analysis::PivSampler exact_sampler(locator, plane, exact);
+    const auto c0 = analysis::compare_frame(exact, exact_sampler, s.sim);
     CHECK(c0.outside == 0);
     CHECK(c0.u.points == exact.valid_count());
     CHECK(c0.u.rmse < 1e-13);
@@ -105,7 +105,7 @@ TEST_CASE("PIV comparison on a tilted plane: round-off without noise, sigma with
 
     const double sigma = 0.01;
     const auto noisy = synthetic(plane, sigma, 2, 0.3);
-    const auto c = io::compare_frame(noisy, io::PivSampler(locator, plane, noisy), s.sim);
+    const auto c = analysis::compare_frame(noisy, analysis::PivSampler(locator, plane, noisy), s.sim);
     MESSAGE(type, ": RMSE u ", c.u.rmse, " v ", c.v.rmse, " u_rms ", c.u_rms.rmse, " v_rms ",
             c.v_rms.rmse, "; normalised u ", c.u.normalised_error, "; correlation u ",
             c.u.correlation, " v ", c.v.correlation, "; masked ", c.masked);
@@ -118,15 +118,15 @@ TEST_CASE("PIV comparison on a tilted plane: round-off without noise, sigma with
 
     // A PIV window larger than the domain: outside points counted and skipped.
     const auto wide = synthetic(plane, 0.0, 3, 0.8);
-    const io::PivSampler wide_sampler(locator, plane, wide);
-    const auto cw = io::compare_frame(wide, wide_sampler, s.sim);
+    const analysis::PivSampler wide_sampler(locator, plane, wide);
+    const auto cw = analysis::compare_frame(wide, wide_sampler, s.sim);
     CHECK(cw.outside > 50);
     CHECK(cw.u.points + cw.outside <= wide.size());
     CHECK(cw.u.rmse < 1e-13);
 
     // Profile along the plane's x axis: the simulation follows the analytic field exactly, the
     // PIV side takes the nearest grid point (spacing 0.03) and so matches to sigma.
-    const auto profile = io::sample_profile({"x_axis", {-0.3, 0.0}, {0.3, 0.0}, 21}, exact_sampler,
+    const auto profile = analysis::sample_profile({"x_axis", {-0.3, 0.0}, {0.3, 0.0}, 21}, exact_sampler,
                                             noisy, s.sim, 0.02);
     double worst = 0;
     for (std::size_t k = 0; k < profile.s.size(); ++k)
@@ -138,22 +138,22 @@ TEST_CASE("PIV comparison on a tilted plane: round-off without noise, sigma with
 
     const std::filesystem::path out = "test_output/piv_compare";
     std::filesystem::create_directories(out);
-    io::write_comparison_csv(out / ("frame_" + type + ".csv"), noisy, c);
-    io::write_profile_csv(out / ("profile_" + type + ".csv"), profile);
-    io::write_metrics_csv(out / ("metrics_" + type + ".csv"), {c0, c});
+    analysis::write_comparison_csv(out / ("frame_" + type + ".csv"), noisy, c);
+    analysis::write_profile_csv(out / ("profile_" + type + ".csv"), profile);
+    analysis::write_metrics_csv(out / ("metrics_" + type + ".csv"), {c0, c});
     std::ifstream metrics(out / ("metrics_" + type + ".csv"));
     std::string header;
     std::getline(metrics, header);
     CHECK(header == "frame,phase,quantity,rmse,normalised_error,correlation,points,masked,outside");
   }
-  CHECK_THROWS_WITH(io::PivPlane({0, 0, 0}, {1, 0, 0}, {0.1, 1, 0}),
+  CHECK_THROWS_WITH(analysis::PivPlane({0, 0, 0}, {1, 0, 0}, {0.1, 1, 0}),
                     doctest::Contains("must be orthogonal unit vectors"));
 }
 
 namespace {
 
 // The metrics that must not depend on the file's units.
-std::vector<double> metrics(const io::FrameComparison& c) {
+std::vector<double> metrics(const analysis::FrameComparison& c) {
   std::vector<double> m;
   for (const auto* q : {&c.u, &c.v})
     m.insert(m.end(), {q->rmse, q->normalised_error, q->correlation, double(q->points)});
@@ -161,7 +161,7 @@ std::vector<double> metrics(const io::FrameComparison& c) {
   return m;
 }
 
-void check_same_metrics(const io::FrameComparison& a, const io::FrameComparison& b) {
+void check_same_metrics(const analysis::FrameComparison& a, const analysis::FrameComparison& b) {
   const auto ma = metrics(a), mb = metrics(b);
   for (std::size_t i = 0; i < ma.size(); ++i) {
     CAPTURE(i);
@@ -174,19 +174,19 @@ void check_same_metrics(const io::FrameComparison& a, const io::FrameComparison&
 
 TEST_CASE("PIV files in mm and mm/s read with scale factors give the metrics of the file in m") {
   const auto s = setup("hexa");
-  const io::PointLocator locator(s.mesh);
+  const mesh::PointLocator locator(s.mesh);
   const auto plane = tilted_plane();
   // 1. The stored Tecplot test file and its copy in mm (tests/data/piv/good_mm.dat).
   const std::filesystem::path data = std::filesystem::path(VALSALVA_SOURCE_DIR) / "tests/data/piv";
-  const auto m = io::read_piv(data / "good.dat");
-  const auto mm = io::read_piv(data / "good_mm.dat", {1e-3, 1e-3});
+  const auto m = analysis::read_piv(data / "good.dat");
+  const auto mm = analysis::read_piv(data / "good_mm.dat", {1e-3, 1e-3});
   REQUIRE(mm.frames.size() == m.frames.size());
   for (std::size_t f = 0; f < m.frames.size(); ++f) {
     const auto& a = m.frames[f];
     const auto& b = mm.frames[f];
     CHECK(b.phase == a.phase);  // times are not scaled
-    check_same_metrics(io::compare_frame(a, io::PivSampler(locator, plane, a), s.sim),
-                       io::compare_frame(b, io::PivSampler(locator, plane, b), s.sim));
+    check_same_metrics(analysis::compare_frame(a, analysis::PivSampler(locator, plane, a), s.sim),
+                       analysis::compare_frame(b, analysis::PivSampler(locator, plane, b), s.sim));
   }
   // 2. A noisy synthetic frame written as CSV in m and in mm (with RMS columns).
   const auto frame = synthetic(plane, 0.01, 5, 0.3);
@@ -201,18 +201,18 @@ TEST_CASE("PIV files in mm and mm/s read with scale factors give the metrics of 
         << ',' << k * frame.u_rms[i] << ',' << k * frame.v_rms[i] << ',' << int(frame.valid[i])
         << '\n';
   }
-  const auto a = io::read_piv(out / "m.csv").frames.at(0);
-  const auto b = io::read_piv(out / "mm.csv", {1e-3, 1e-3}).frames.at(0);
-  const auto ca = io::compare_frame(a, io::PivSampler(locator, plane, a), s.sim);
-  const auto cb = io::compare_frame(b, io::PivSampler(locator, plane, b), s.sim);
+  const auto a = analysis::read_piv(out / "m.csv").frames.at(0);
+  const auto b = analysis::read_piv(out / "mm.csv", {1e-3, 1e-3}).frames.at(0);
+  const auto ca = analysis::compare_frame(a, analysis::PivSampler(locator, plane, a), s.sim);
+  const auto cb = analysis::compare_frame(b, analysis::PivSampler(locator, plane, b), s.sim);
   CHECK(ca.u.points > 300);
   check_same_metrics(ca, cb);
   CHECK(cb.u_rms.rmse == doctest::Approx(ca.u_rms.rmse).epsilon(1e-12));
   // Without the scale factors the mm file is far off (the check can fail).
-  const auto raw = io::read_piv(out / "mm.csv").frames.at(0);
-  CHECK(io::compare_frame(raw, io::PivSampler(locator, plane, raw), s.sim).outside > 300);
+  const auto raw = analysis::read_piv(out / "mm.csv").frames.at(0);
+  CHECK(analysis::compare_frame(raw, analysis::PivSampler(locator, plane, raw), s.sim).outside > 300);
 
-  CHECK_THROWS_WITH_AS(io::read_piv(data / "good.dat", {0.0, 1.0}),
+  CHECK_THROWS_WITH_AS(analysis::read_piv(data / "good.dat", {0.0, 1.0}),
                        doctest::Contains("length scale 0 and velocity scale 1 must be positive"),
                        std::invalid_argument);
 }

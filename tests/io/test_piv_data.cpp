@@ -14,7 +14,7 @@ const std::filesystem::path dir = std::filesystem::path(VALSALVA_SOURCE_DIR) / "
 }
 
 TEST_CASE("PIV CSV: phases, RMS, masked and NaN points") {
-  const auto d = io::read_piv(dir / "good.csv");
+  const auto d = analysis::read_piv(dir / "good.csv");
   CHECK(d.frame_key == "phase");
   CHECK(d.has_rms);
   REQUIRE(d.frames.size() == 2);
@@ -31,7 +31,7 @@ TEST_CASE("PIV CSV: phases, RMS, masked and NaN points") {
 }
 
 TEST_CASE("PIV Tecplot: zones, SOLUTIONTIME, continuation line, masks") {
-  const auto d = io::read_piv(dir / "good.dat");
+  const auto d = analysis::read_piv(dir / "good.dat");
   CHECK_FALSE(d.has_rms);
   REQUIRE(d.frames.size() == 2);
   const auto& f = d.frames[0];
@@ -97,9 +97,9 @@ TEST_CASE("PIV readers: malformed files name file, line and problem") {
   };
   for (const auto& c : cases) {
     CAPTURE(c.file);
-    CHECK_THROWS_WITH(io::read_piv(dir / c.file), doctest::Contains(c.message));
-    CHECK_THROWS_WITH(io::read_piv(dir / c.file), doctest::Contains(c.file));
+    CHECK_THROWS_WITH(analysis::read_piv(dir / c.file), doctest::Contains(c.message));
+    CHECK_THROWS_WITH(analysis::read_piv(dir / c.file), doctest::Contains(c.file));
   }
-  CHECK_THROWS_WITH(io::read_piv(dir / "none.csv"), doctest::Contains("cannot open"));
-  CHECK_THROWS_WITH(io::read_piv(dir / "good.xyz"), doctest::Contains("extension '.xyz'"));
+  CHECK_THROWS_WITH(analysis::read_piv(dir / "none.csv"), doctest::Contains("cannot open"));
+  CHECK_THROWS_WITH(analysis::read_piv(dir / "good.xyz"), doctest::Contains("extension '.xyz'"));
 }

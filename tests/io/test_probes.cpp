@@ -18,14 +18,14 @@ using namespace valsalva;
 
 namespace {
 
-flow::Mesh box(const std::string& type) {
-  io::BoxSpec spec;
+mesh::Mesh box(const std::string& type) {
+  mesh::BoxSpec spec;
   spec.cell_type = type;
   spec.cells = {5, 4, 4};
   spec.length = Eigen::Vector3d(1.0, 0.8, 0.6);
   spec.origin = Eigen::Vector3d(-0.2, 0.1, 0.3);
   spec.perturbation = 0.15;
-  return io::generate_box(spec);
+  return mesh::generate_box(spec);
 }
 
 double linear(const Eigen::Vector3d& x) {
@@ -39,7 +39,7 @@ TEST_CASE("point locator: linear fields are exact in every cell type") {
   for (std::string type : {"tetra", "hexa", "prism", "pyramid", "mixed"}) {
     CAPTURE(type);
     const auto mesh = box(type);
-    const io::PointLocator locator(mesh);
+    const mesh::PointLocator locator(mesh);
     std::uniform_real_distribution<double> ux(-0.15, 0.75), uy(0.15, 0.85), uz(0.35, 0.85);
     double worst = 0, worst_sum = 0;
     int found = 0;
@@ -64,7 +64,7 @@ TEST_CASE("point locator: linear fields are exact in every cell type") {
     CHECK(worst < 1e-12);
     CHECK(worst_sum < 1e-13);
     // Nodes themselves are found (points on faces, edges and corners of several cells).
-    for (flow::GlobalIndex n = 0; n < mesh.num_nodes(); n += 7)
+    for (mesh::GlobalIndex n = 0; n < mesh.num_nodes(); n += 7)
       CHECK(locator.locate(mesh.nodes[n]));
     CHECK_FALSE(locator.locate(Eigen::Vector3d(5, 0.5, 0.5)));
   }
@@ -72,11 +72,11 @@ TEST_CASE("point locator: linear fields are exact in every cell type") {
 
 TEST_CASE("probes: same bits at the world size and at one rank; outside probe named") {
   const auto mesh = box("mixed");
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  std::vector<io::ProbePoint> points = {
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  std::vector<analysis::ProbePoint> points = {
       {"inlet", {0.0, 0.3, 0.5}}, {"centre", {0.3, 0.5, 0.6}}, {"near_wall", {0.7, 0.84, 0.8}}};
   auto sample_with = [&](MPI_Comm comm) {
-    auto local = flow::distribute(mesh, metrics, comm, {2, "metis"});
+    auto local = mesh::distribute(mesh, metrics, comm, {2, "metis"});
     flow::FlowState state;
     state.velocity.resize(local.num_local());
     state.pressure.resize(local.num_local());
@@ -85,7 +85,7 @@ TEST_CASE("probes: same bits at the world size and at one rank; outside probe na
       state.velocity[i] = Eigen::Vector3d(std::sin(3 * x.x()), linear(x), x.y() * x.z() / 3);
       state.pressure[i] = 1e5 * std::cos(x.x() + 2 * x.z());
     }
-    const io::Probes probes(mesh, metrics, local, points);
+    const analysis::Probes probes(mesh, metrics, local, points);
     return probes.sample(state);
   };
   const auto world = sample_with(MPI_COMM_WORLD);
@@ -95,21 +95,21 @@ TEST_CASE("probes: same bits at the world size and at one rank; outside probe na
   for (std::size_t p = 0; p < points.size(); ++p)
     CHECK(world[4 * p + 1] == doctest::Approx(linear(points[p].position)).epsilon(1e-12));
 
-  auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
-  CHECK_THROWS_WITH(io::Probes(mesh, metrics, local, {{"lost", {0.3, 2.5, 0.6}}}),
+  auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  CHECK_THROWS_WITH(analysis::Probes(mesh, metrics, local, {{"lost", {0.3, 2.5, 0.6}}}),
                     doctest::Contains("probe 'lost' at (0.3, 2.5, 0.6) m is outside the mesh"));
 
   // CSV round trip keeps every bit.
   const std::filesystem::path dir = "test_output/probes";
   if (local.comm.root()) std::filesystem::create_directories(dir);
-  const io::Probes probes(mesh, metrics, local, points);
+  const analysis::Probes probes(mesh, metrics, local, points);
   {
-    io::ProbeCsv csv(dir / "probes.csv", probes);
+    analysis::ProbeCsv csv(dir / "probes.csv", probes);
     csv.append(0.1, world);
     csv.append(0.2, single);
   }
   local.comm.barrier();
-  const auto series = io::read_probe_csv(dir / "probes.csv");
+  const auto series = analysis::read_probe_csv(dir / "probes.csv");
   CHECK(series.columns[0] == "time");
   CHECK(series.columns[5] == "centre_u");
   REQUIRE(series.rows.size() == 2);

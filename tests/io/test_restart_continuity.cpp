@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/comm.hpp"
 #include "run/restart_continuity.hpp"
 
 namespace fs = std::filesystem;
@@ -30,8 +31,8 @@ TEST_CASE("continue_in_place cuts sections.csv by time and valve.csv by step") {
       fs::temp_directory_path() / ("valsalva_restart_continuity_" + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const flow::Comm comm(MPI_COMM_WORLD);
-  const io::Scene scene = io::parse_scene("[mesh]\nsource = \"box\"\n", "cube.toml");
+  const core::Comm comm(MPI_COMM_WORLD);
+  const scene::Scene scene = scene::parse_scene("[mesh]\nsource = \"box\"\n", "cube.toml");
   // Steps 0..4 at dt = 0.1 written by the interrupted run; the checkpoint is at step 2, t = 0.2
   // (printed as 0.20000000000000001: the half-step margin keeps it).
   std::ofstream(dir / "sections.csv")
@@ -39,7 +40,7 @@ TEST_CASE("continue_in_place cuts sections.csv by time and valve.csv by step") {
   std::ofstream(dir / "valve.csv")
       << "step,time,cycle\n0,0,0\n1,0.1,0\n2,0.2,0\n3,0.3,0\n4,0.4,0\n";
   std::ofstream(dir / "valve_cycles.csv") << "cycle,start\n0,0\n";
-  io::continue_in_place(dir, scene, 2, 0.2, 0.1, {"sections.csv", "valve.csv"}, comm);
+  run::continue_in_place(dir, scene, 2, 0.2, 0.1, {"sections.csv", "valve.csv"}, comm);
   CHECK(read(dir / "sections.csv") == "time,mid_flux\n0,1\n0.1,2\n0.20000000000000001,3\n");
   CHECK(read(dir / "valve.csv") == "step,time,cycle\n0,0,0\n1,0.1,0\n2,0.2,0\n");
   // Not in the list: untouched (the valve monitor cuts valve_cycles.csv itself).
@@ -47,7 +48,7 @@ TEST_CASE("continue_in_place cuts sections.csv by time and valve.csv by step") {
   CHECK(fs::exists(dir / "resolved_scene_restart_000000002.toml"));
 
   // An unknown name would be continued uncut: refused, naming it.
-  CHECK_THROWS_WITH(io::continue_in_place(dir, scene, 2, 0.2, 0.1, {"valve_cycles.csv"}, comm),
+  CHECK_THROWS_WITH(run::continue_in_place(dir, scene, 2, 0.2, 0.1, {"valve_cycles.csv"}, comm),
                     doctest::Contains("'valve_cycles.csv' is not among the appended series"));
   fs::remove_all(dir);
 }
@@ -57,18 +58,18 @@ TEST_CASE("restart_scene_change: keys added since the run was recorded are not a
       fs::temp_directory_path() / ("valsalva_restart_scene_change_" + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const io::Scene scene = io::parse_scene("[mesh]\nsource = \"box\"\n", dir / "cube.toml");
+  const scene::Scene scene = scene::parse_scene("[mesh]\nsource = \"box\"\n", dir / "cube.toml");
   // The run as an older valsalva recorded it: the resolved scene without time.land_on.
   toml::table old_resolved = scene.table();
   old_resolved["time"].as_table()->erase("land_on");
   REQUIRE(!old_resolved["time"]["land_on"]);
   std::ofstream(dir / "resolved_scene.toml") << old_resolved;
-  CHECK(io::restart_scene_change(dir / "resolved_scene.toml", scene).empty());
+  CHECK(run::restart_scene_change(dir / "resolved_scene.toml", scene).empty());
 
   // A real change is still named, with both values.
-  const io::Scene changed =
-      io::parse_scene("[mesh]\nsource = \"box\"\n[flow]\nviscosity = 0.5\n", dir / "cube.toml");
-  const std::string message = io::restart_scene_change(dir / "resolved_scene.toml", changed);
+  const scene::Scene changed =
+      scene::parse_scene("[mesh]\nsource = \"box\"\n[flow]\nviscosity = 0.5\n", dir / "cube.toml");
+  const std::string message = run::restart_scene_change(dir / "resolved_scene.toml", changed);
   CHECK(message.find("flow.viscosity") != std::string::npos);
   CHECK(message.find("0.5 in") != std::string::npos);
   fs::remove_all(dir);

@@ -1,4 +1,4 @@
-// io::RunAnalysis driven by hand on a small periodic box: the statistics' interim files appear
+// analysis::RunAnalysis driven by hand on a small periodic box: the statistics' interim files appear
 // at start_time + k write_interval with the samples taken so far, a pressure-drop row has the
 // volume-weighted region means of a linear pressure (exact), and probes read the state.
 #include <doctest/doctest.h>
@@ -27,12 +27,12 @@ std::vector<std::string> lines(const std::filesystem::path& file) {
 }  // namespace
 
 TEST_CASE("run analysis: interim statistics, pressure drop of a linear field, probes") {
-  io::BoxSpec spec;
+  mesh::BoxSpec spec;
   spec.cells = {6, 6, 6};
   spec.periodic = {true, true, true};
-  const auto mesh = io::generate_box(spec);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
+  const auto mesh = mesh::generate_box(spec);
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD);
   const auto dir = std::filesystem::path("run_analysis_test_np") +=
       std::to_string(local.comm.size());
   if (local.comm.root()) {
@@ -41,15 +41,15 @@ TEST_CASE("run analysis: interim statistics, pressure drop of a linear field, pr
   }
   local.comm.barrier();
 
-  io::AnalysisOptions a;
-  io::StatisticsOptions s;
+  analysis::AnalysisOptions a;
+  analysis::StatisticsOptions s;
   s.phase = {0.0, 1, 0.0, 1.0, "mean"};
   s.write_interval = 0.5;
   a.statistics = {s};
   a.pressure_drops = {
       {"dx", Eigen::Vector3d(0.25, 0.5, 0.5), Eigen::Vector3d(0.75, 0.5, 0.5), 0.2, 1}};
   a.probes.points = {{"c", Eigen::Vector3d(0.5, 0.5, 0.5)}};
-  io::RunAnalysis analysis(mesh, metrics, local, a, 1.0, 0.01, dir, false);
+  analysis::RunAnalysis analysis(mesh, metrics, local, a, 1.0, 0.01, dir, false);
 
   flow::FlowState state;
   state.velocity.assign(local.num_local(), Eigen::Vector3d(1, 2, 3));

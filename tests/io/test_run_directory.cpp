@@ -12,7 +12,7 @@
 #include "run/run_directory.hpp"
 
 namespace fs = std::filesystem;
-using namespace valsalva::io;
+using namespace valsalva;
 
 namespace {
 
@@ -46,23 +46,23 @@ TEST_CASE("prepare creates the directory, writes the resolved scene, and guards 
   const fs::path root = scratch();
   if (rank == 0) fs::remove_all(root);
   barrier();
-  const Scene scene = parse_scene("[mesh]\nsource = \"box\"\n", "cube.toml");
+  const scene::Scene scene = scene::parse_scene("[mesh]\nsource = \"box\"\n", "cube.toml");
   const fs::path dir = root / "runs" / "cube";
 
-  const RunDirectory run = RunDirectory::prepare(dir, false, scene, MPI_COMM_WORLD);
+  const run::RunDirectory run = run::RunDirectory::prepare(dir, false, scene, MPI_COMM_WORLD);
   CHECK(run.path() == dir);
   CHECK(run.file("fields.h5") == dir / "fields.h5");
   CHECK(fs::is_directory(dir));
   CHECK(read(dir / "resolved_scene.toml") == scene.resolved());
   // The saved scene is itself a valid scene that resolves to the same values.
-  CHECK(load_scene(dir / "resolved_scene.toml").table() == scene.table());
+  CHECK(scene::load_scene(dir / "resolved_scene.toml").table() == scene.table());
 
   // Now non-empty: refused on every rank with a message naming the path and the way out.
   barrier();
   try {
-    RunDirectory::prepare(dir, false, scene, MPI_COMM_WORLD);
+    run::RunDirectory::prepare(dir, false, scene, MPI_COMM_WORLD);
     FAIL_CHECK("a non-empty run directory was reused without overwrite");
-  } catch (const RunDirectoryError& e) {
+  } catch (const run::RunDirectoryError& e) {
     const std::string m = e.what();
     CHECK(m.find("'" + dir.string() + "' is not empty") != std::string::npos);
     CHECK(m.find("--overwrite") != std::string::npos);
@@ -81,7 +81,7 @@ TEST_CASE("prepare creates the directory, writes the resolved scene, and guards 
     std::ofstream(dir / "checkpoints" / "checkpoint_000000008.h5") << "old";
   }
   barrier();
-  RunDirectory::prepare(dir, true, scene, MPI_COMM_WORLD);
+  run::RunDirectory::prepare(dir, true, scene, MPI_COMM_WORLD);
   CHECK_FALSE(fs::exists(dir / "log.csv"));
   CHECK_FALSE(fs::exists(dir / "fields_000003.h5"));
   for (const char* name : {"sections.csv", "valve.csv", "valve_cycles.csv", "outlets.csv"})
@@ -99,9 +99,9 @@ TEST_CASE("prepare creates the directory, writes the resolved scene, and guards 
     fs::create_directories(dir / "paper");
   }
   barrier();
-  CHECK_THROWS_WITH_AS(RunDirectory::prepare(dir, true, scene, MPI_COMM_WORLD),
+  CHECK_THROWS_WITH_AS(run::RunDirectory::prepare(dir, true, scene, MPI_COMM_WORLD),
                        doctest::Contains("entries valsalva did not write: notes.txt, paper"),
-                       RunDirectoryError);
+                       run::RunDirectoryError);
   CHECK(read(dir / "notes.txt") == "mine");
   CHECK(fs::exists(dir / "log.csv"));
 
@@ -115,16 +115,16 @@ TEST_CASE("prepare creates the directory, writes the resolved scene, and guards 
     fs::copy_file(dir / "resolved_scene.toml", other / "resolved_scene.toml");
   }
   barrier();
-  CHECK_THROWS_WITH_AS(RunDirectory::prepare(other, true, scene, MPI_COMM_WORLD),
+  CHECK_THROWS_WITH_AS(run::RunDirectory::prepare(other, true, scene, MPI_COMM_WORLD),
                        doctest::Contains("holds no valsalva marker valsalva_run.toml"),
-                       RunDirectoryError);
+                       run::RunDirectoryError);
   barrier();
   if (rank == 0) fs::copy_file(dir / "valsalva_run.toml", other / "valsalva_run.toml");
   barrier();
   const std::string written_for =
       "was written for '" + fs::weakly_canonical(fs::absolute(dir)).string();
-  CHECK_THROWS_WITH_AS(RunDirectory::prepare(other, true, scene, MPI_COMM_WORLD),
-                       doctest::Contains(written_for.c_str()), RunDirectoryError);
+  CHECK_THROWS_WITH_AS(run::RunDirectory::prepare(other, true, scene, MPI_COMM_WORLD),
+                       doctest::Contains(written_for.c_str()), run::RunDirectoryError);
   CHECK(read(other / "thesis.tex") == "precious");
 
   // An existing empty directory is fine without overwrite.
@@ -132,15 +132,15 @@ TEST_CASE("prepare creates the directory, writes the resolved scene, and guards 
   barrier();
   if (rank == 0) fs::create_directories(empty);
   barrier();
-  CHECK_NOTHROW(RunDirectory::prepare(empty, false, scene, MPI_COMM_WORLD));
+  CHECK_NOTHROW(run::RunDirectory::prepare(empty, false, scene, MPI_COMM_WORLD));
   barrier();
   if (rank == 0) fs::remove_all(root);
 }
 
 TEST_CASE("the default run path is runs/<scene file stem>") {
-  const Scene unnamed = parse_scene("[mesh]\nsource = \"box\"\n", "scenes/cavity.toml");
-  CHECK(default_run_path(unnamed) == fs::path("runs/cavity"));
-  const Scene named = parse_scene("[run]\noutput_dir = \"out/a\"\n[mesh]\nsource = \"box\"\n",
+  const scene::Scene unnamed = scene::parse_scene("[mesh]\nsource = \"box\"\n", "scenes/cavity.toml");
+  CHECK(run::default_run_path(unnamed) == fs::path("runs/cavity"));
+  const scene::Scene named = scene::parse_scene("[run]\noutput_dir = \"out/a\"\n[mesh]\nsource = \"box\"\n",
                                   "scenes/cavity.toml");
-  CHECK(default_run_path(named) == fs::path("out/a"));
+  CHECK(run::default_run_path(named) == fs::path("out/a"));
 }

@@ -8,15 +8,15 @@
 #include "scene/scene.hpp"
 
 namespace fs = std::filesystem;
-using namespace valsalva::io;
+using namespace valsalva;
 
 namespace {
 const fs::path data = fs::path(VALSALVA_SOURCE_DIR) / "tests/data/scenes";
 
-std::string error_of(std::string_view text, const Schema& schema = scene_schema()) {
+std::string error_of(std::string_view text, const scene::Schema& schema = scene::scene_schema()) {
   try {
-    parse_scene(text, "t.toml", schema);
-  } catch (const SceneError& e) {
+    scene::parse_scene(text, "t.toml", schema);
+  } catch (const scene::SceneError& e) {
     return e.what();
   }
   return "no error";
@@ -24,7 +24,7 @@ std::string error_of(std::string_view text, const Schema& schema = scene_schema(
 }  // namespace
 
 TEST_CASE("a box scene with every key set reads back what the file says") {
-  const Scene s = load_scene(data / "box.toml");
+  const scene::Scene s = scene::load_scene(data / "box.toml");
   CHECK(s.get<std::string>("run.output_dir") == "runs/box_test");
   CHECK(s.get<bool>("run.overwrite"));
   CHECK(s.get<int>("run.log_every") == 20);
@@ -41,14 +41,14 @@ TEST_CASE("a box scene with every key set reads back what the file says") {
   CHECK(s.get<std::string>("partition.method") == "block");
   CHECK_FALSE(s.has("mesh.pipe.radius"));  // switched off by mesh.source = "box"
   CHECK_FALSE(s.has("mesh.file"));
-  const Location at = s.location("mesh.box.cells");
+  const scene::Location at = s.location("mesh.box.cells");
   CHECK(at.file == (data / "box.toml").string());
   CHECK(at.line == 14);
   CHECK(at.column == 1);
 }
 
 TEST_CASE("defaults fill every key the file leaves out") {
-  const Scene s = load_scene(data / "pipe.toml");
+  const scene::Scene s = scene::load_scene(data / "pipe.toml");
   CHECK(s.get<double>("mesh.pipe.radius") == 0.0125);
   CHECK(s.get<double>("mesh.pipe.size") == 1.0e-3);
   CHECK(s.get<std::string>("run.output_dir").empty());
@@ -65,7 +65,7 @@ TEST_CASE("defaults fill every key the file leaves out") {
   CHECK(s.location("mesh.pipe.size").line == 8);
   CHECK(s.location("mesh.pipe.size").column == 1);
 
-  const Scene b = parse_scene("[mesh]\nsource = \"box\"\n", "b.toml");
+  const scene::Scene b = scene::parse_scene("[mesh]\nsource = \"box\"\n", "b.toml");
   CHECK(b.get<std::array<int, 3>>("mesh.box.cells") == std::array{8, 8, 8});
   CHECK(b.get<std::array<double, 3>>("mesh.box.length") == std::array{1.0, 1.0, 1.0});
   CHECK(b.get<std::string>("mesh.box.cell_type") == "hexa");
@@ -73,7 +73,7 @@ TEST_CASE("defaults fill every key the file leaves out") {
 }
 
 TEST_CASE("user-named tables, file paths and errors raised by other modules") {
-  const Scene s = load_scene(data / "gmsh_periodic.toml");
+  const scene::Scene s = scene::load_scene(data / "gmsh_periodic.toml");
   CHECK(s.names("mesh.periodic") == std::vector<std::string>{"spanwise", "streamwise"});
   CHECK(s.names("boundary").empty());
   CHECK(s.get<std::string>("mesh.periodic.streamwise.slave") == "outlet");
@@ -82,7 +82,7 @@ TEST_CASE("user-named tables, file paths and errors raised by other modules") {
   CHECK(s.path("mesh.file") == (data / "meshes/channel.msh").lexically_normal());
   CHECK(s.get<double>("mesh.scale") == 0.001);
 
-  const SceneError e = s.error("mesh.periodic.spanwise.master", "patch 'front' is not in the mesh",
+  const scene::SceneError e = s.error("mesh.periodic.spanwise.master", "patch 'front' is not in the mesh",
                                "inlet, outlet, wall");
   CHECK(std::string(e.what()) == (data / "gmsh_periodic.toml").string() +
                                      ":8:1: key 'mesh.periodic.spanwise.master': patch 'front' is "
@@ -96,15 +96,15 @@ TEST_CASE("the resolved scene parses back to the same scene") {
   for (const char* name : {"box.toml", "pipe.toml", "gmsh_periodic.toml"}) {
     const std::string label = name;
     CAPTURE(label);
-    const Scene s = load_scene(data / name);
-    const Scene again = parse_scene(s.resolved(), data / "resolved.toml");
+    const scene::Scene s = scene::load_scene(data / name);
+    const scene::Scene again = scene::parse_scene(s.resolved(), data / "resolved.toml");
     CHECK(again.table() == s.table());
     // Nothing left to fill: resolving a resolved scene changes nothing.
-    for (const auto& key : scene_schema().keys())
+    for (const auto& key : scene::scene_schema().keys())
       if (key.pattern.find('*') == std::string::npos && s.has(key.path))
         CHECK(again.is_set(key.path));
   }
-  const Scene s = load_scene(data / "pipe.toml");
+  const scene::Scene s = scene::load_scene(data / "pipe.toml");
   const std::string text = s.resolved();
   CHECK(text.find("log_every = 10") != std::string::npos);
   CHECK(text.find("size = 0.001") != std::string::npos);
@@ -117,14 +117,14 @@ TEST_CASE("every ready-to-run scene in scenes/ is valid") {
     if (entry.path().extension() != ".toml") continue;
     const std::string name = entry.path().string();
     CAPTURE(name);
-    CHECK_NOTHROW(load_scene(entry.path()));
+    CHECK_NOTHROW(scene::load_scene(entry.path()));
     ++count;
   }
   CHECK(count >= 1);
 }
 
 TEST_CASE("schema machinery: wildcards, conditions, float lists and tables") {
-  Schema schema;
+  scene::Schema schema;
   schema.section("boundary.<patch>", "Boundary condition of one patch.");
   schema.choice("boundary.<patch>.type", {"wall", "velocity_inlet", "outlet"})
       .required()
@@ -149,7 +149,7 @@ TEST_CASE("schema machinery: wildcards, conditions, float lists and tables") {
       .doc("Gains");
   schema.check();
 
-  const Scene s = parse_scene(R"(
+  const scene::Scene s = scene::parse_scene(R"(
 [waveform]
 times = [0, 0.5, 1.0]
 gains = { up = 2.0, down = 0.5 }
@@ -200,42 +200,42 @@ TEST_CASE("numbers that do not fit, non-finite floats and repeated directions ar
         "(accepted: each of \"x\", \"y\", \"z\", no repeats)");
   CHECK(error_of("[mesh]\nsource = \"box\"\nsource = \"pipe\"\n")
             .rfind("t.toml:3:10: TOML syntax error: ", 0) == 0);  // a key written twice
-  CHECK(format_value(KeyValue{std::map<std::string, double>{{"a b", 1.0}, {"c", 2.5}}}) ==
+  CHECK(scene::format_value(scene::KeyValue{std::map<std::string, double>{{"a b", 1.0}, {"c", 2.5}}}) ==
         "{ \"a b\" = 1.0, c = 2.5 }");
 }
 
 TEST_CASE("bad declarations are refused when the schema is checked") {
-  Schema no_default;
+  scene::Schema no_default;
   no_default.section("a", "A.");
   no_default.real("a.x").unit_of("m").doc("x");
   CHECK_THROWS_WITH_AS(no_default.check(),
                        "scene schema: key 'a.x': needs exactly one of a default or required()",
                        std::logic_error);
-  Schema bad_default;
+  scene::Schema bad_default;
   bad_default.section("a", "A.");
   bad_default.integer("a.n").def(0).at_least(1).unit_of("-").doc("n");
   CHECK_THROWS_AS(bad_default.check(), std::logic_error);
-  Schema twice;
+  scene::Schema twice;
   twice.section("a", "A.");
   twice.real("a.x").def(1.0).unit_of("m").doc("x");
   twice.real("a.x").def(2.0).unit_of("m").doc("x");
   CHECK_THROWS_WITH_AS(twice.check(), "scene schema: key 'a.x': declared twice", std::logic_error);
-  Schema no_section;
+  scene::Schema no_section;
   no_section.real("b.x").def(1.0).unit_of("m").doc("x");
   CHECK_THROWS_AS(no_section.check(), std::logic_error);
-  CHECK_NOTHROW(scene_schema().check());
+  CHECK_NOTHROW(scene::scene_schema().check());
 }
 
 TEST_CASE("edit distance") {
-  CHECK(edit_distance("cels", "cells") == 1);
-  CHECK(edit_distance("partiton", "partition") == 1);
-  CHECK(edit_distance("kitten", "sitting") == 3);
-  CHECK(edit_distance("", "abc") == 3);
+  CHECK(scene::edit_distance("cels", "cells") == 1);
+  CHECK(scene::edit_distance("partiton", "partition") == 1);
+  CHECK(scene::edit_distance("kitten", "sitting") == 3);
+  CHECK(scene::edit_distance("", "abc") == 3);
 }
 
 TEST_CASE("overrides (run --set KEY=VALUE) replace or add keys and are checked like the file") {
   const std::string text = "[mesh]\nsource = \"box\"\n[mesh.box]\ncells = [4, 4, 4]\n";
-  const Scene s = parse_scene(text, "o.toml",
+  const scene::Scene s = scene::parse_scene(text, "o.toml",
                               {"mesh.box.cells=[6, 7, 8]", "flow.scheme=central4", "time.end = 2.5",
                                "mesh.box.periodic=['x']", "run.overwrite=true"});
   CHECK(s.get<std::array<int, 3>>("mesh.box.cells") == std::array{6, 7, 8});
@@ -249,8 +249,8 @@ TEST_CASE("overrides (run --set KEY=VALUE) replace or add keys and are checked l
 
   auto error_with = [&](const std::string& setting) {
     try {
-      parse_scene(text, "o.toml", {setting});
-    } catch (const SceneError& e) {
+      scene::parse_scene(text, "o.toml", {setting});
+    } catch (const scene::SceneError& e) {
       return std::string(e.what());
     }
     return std::string("no error");

@@ -7,14 +7,14 @@
 #include "scene/scene.hpp"
 
 namespace fs = std::filesystem;
-using namespace valsalva::io;
+using namespace valsalva;
 
 namespace {
 
 std::string error_of(const fs::path& file) {
   try {
-    load_scene(file);
-  } catch (const SceneError& e) {
+    scene::load_scene(file);
+  } catch (const scene::SceneError& e) {
     return e.what();
   }
   return "no error";
@@ -86,9 +86,9 @@ TEST_CASE("a TOML syntax error names the file, line and column where parsing sto
 TEST_CASE("all problems of a scene are reported at once, in file order") {
   const fs::path file = bad_dir / "multiple_errors.toml";
   try {
-    load_scene(file);
+    scene::load_scene(file);
     FAIL("multiple_errors.toml loaded");
-  } catch (const SceneError& e) {
+  } catch (const scene::SceneError& e) {
     const std::string f = file.string();
     REQUIRE(e.problems().size() == 3);
     CHECK(e.problems()[0] == f + ":6:13: key 'mesh.box.cells': element 2 is 0, out of range "
@@ -103,7 +103,7 @@ TEST_CASE("all problems of a scene are reported at once, in file order") {
   }
 }
 
-TEST_CASE("a missing scene file is a SceneError naming it") {
+TEST_CASE("a missing scene file is a scene::SceneError naming it") {
   const fs::path file = bad_dir / "does_not_exist.toml";
   CHECK(error_of(file) == file.string() + ": cannot open the scene file");
 }

@@ -9,11 +9,11 @@
 #include "scene/scene_docs.hpp"
 
 namespace fs = std::filesystem;
-using namespace valsalva::io;
+using namespace valsalva;
 
 TEST_CASE("docs/scenes.md matches the scene-key declarations byte for byte") {
   std::ostringstream generated;
-  write_scene_docs(generated);
+  scene::write_scene_docs(generated);
   const fs::path committed = fs::path(VALSALVA_SOURCE_DIR) / "docs/scenes.md";
   std::ifstream in(committed, std::ios::binary);
   std::ostringstream text;
@@ -29,18 +29,18 @@ TEST_CASE("docs/scenes.md matches the scene-key declarations byte for byte") {
                            << "or copy " << fresh.string());
   }
   // Every declared key is documented.
-  for (const auto& key : scene_schema().keys()) {
-    const auto leaf = split_path(key.path).back();
+  for (const auto& key : scene::scene_schema().keys()) {
+    const auto leaf = scene::split_path(key.path).back();
     CAPTURE(key.path);
     CHECK(generated.str().find("| `" + leaf + "` |") != std::string::npos);
   }
-  for (const auto& section : scene_schema().sections())
+  for (const auto& section : scene::scene_schema().sections())
     CHECK(generated.str().find("## `[" + section.path + "]`") != std::string::npos);
 }
 
 TEST_CASE("the docs show defaults, units, ranges and conditions") {
   std::ostringstream out;
-  write_scene_docs(out);
+  scene::write_scene_docs(out);
   const std::string md = out.str();
   CHECK(md.find("| `ghost_layers` | int | `2` | - | [1, 4] |") != std::string::npos);
   CHECK(md.find("| `length` | float[3] | `[1.0, 1.0, 1.0]` | m | 3 values, each > 0 |") !=

@@ -34,9 +34,9 @@ type = "wall"
 
 std::string error_of(const std::string& structure) {
   try {
-    const auto scene = io::parse_scene(fluid + structure, "t.toml");
-    io::read_immersed_setup(scene, io::build_mesh(scene));
-  } catch (const io::SceneError& e) {
+    const auto scene = scene::parse_scene(fluid + structure, "t.toml");
+    scene::read_immersed_setup(scene, scene::build_mesh(scene));
+  } catch (const scene::SceneError& e) {
     return e.what();
   }
   return "no error";
@@ -54,7 +54,7 @@ parameters = { G = 1.0e4, K = 1.0e5 }
 }  // namespace
 
 TEST_CASE("a rotated and translated bar: node positions, sets, material and the periodic box") {
-  const auto scene = io::parse_scene(fluid + R"(
+  const auto scene = scene::parse_scene(fluid + R"(
 [immersed]
 kernel = "roma3"
 kernel_width = 3.0
@@ -75,7 +75,7 @@ tether_stiffness = 5.0
 stresses = false
 )",
                                      "t.toml");
-  const auto setup = io::read_immersed_setup(scene, io::build_mesh(scene));
+  const auto setup = scene::read_immersed_setup(scene, scene::build_mesh(scene));
   REQUIRE(setup.structures.size() == 1);
   const auto& s = setup.structures[0];
   CHECK(s.name == "flap");
@@ -109,8 +109,8 @@ stresses = false
 }
 
 TEST_CASE("a scene without structure tables builds nothing") {
-  const auto scene = io::parse_scene(fluid, "t.toml");
-  CHECK(io::read_immersed_setup(scene, io::build_mesh(scene)).empty());
+  const auto scene = scene::parse_scene(fluid, "t.toml");
+  CHECK(scene::read_immersed_setup(scene, scene::build_mesh(scene)).empty());
 }
 
 TEST_CASE("bad structure tables name the key") {
@@ -156,14 +156,14 @@ parameters = { G = 1.0e4, K = 1.0e5 }
 TEST_CASE("contact keys: pairs of named surface sets, a wall, and the errors that name the key") {
   // A bar's bottom and top faces share no node, so they make a valid pair (as two leaflets of
   // one mesh would).
-  const auto scene = io::parse_scene(fluid + bar + R"(contact = ["bottom:top"]
+  const auto scene = scene::parse_scene(fluid + bar + R"(contact = ["bottom:top"]
 contact_penalty = 50.0
 contact_formulation = "two_half_pass"
 contact_wall_radius = 0.02
 contact_wall_faces = ["front"]
 )",
                                      "t.toml");
-  const auto setup = io::read_immersed_setup(scene, io::build_mesh(scene));
+  const auto setup = scene::read_immersed_setup(scene, scene::build_mesh(scene));
   const auto& body = setup.structures.at(0).body;
   const auto& mesh = setup.structures.at(0).mesh;
   REQUIRE(body.contact.size() == 1);
@@ -201,9 +201,9 @@ parameters = { G = 1.0e4, K = 1.0e5 }
 elements = )" +
            elements + "\n";
   };
-  const auto scene = io::parse_scene(
+  const auto scene = scene::parse_scene(
       fluid + sphere("[2, 2, 1]") + "initial_stretch = [1.25, 1.0, 0.8]\n", "t.toml");
-  const auto setup = io::read_immersed_setup(scene, io::build_mesh(scene));
+  const auto setup = scene::read_immersed_setup(scene, scene::build_mesh(scene));
   const auto& s = setup.structures.at(0);
   CHECK(s.mesh.num_elements() == 6 * 2 * 2);
   const Eigen::Vector3d centre(0.01, 0.01, 0.005);
@@ -219,8 +219,8 @@ elements = )" +
           1e-15);
   }
   // Without initial_stretch the markers start at the reference positions.
-  const auto plain = io::parse_scene(fluid + sphere("[2, 2, 1]"), "t.toml");
-  CHECK(io::read_immersed_setup(plain, io::build_mesh(plain)).structures.at(0).initial.size() == 0);
+  const auto plain = scene::parse_scene(fluid + sphere("[2, 2, 1]"), "t.toml");
+  CHECK(scene::read_immersed_setup(plain, scene::build_mesh(plain)).structures.at(0).initial.size() == 0);
   CHECK(error_of(sphere("[2, 3, 1]"))
             .find("key 'structure.cell.elements': a sphere shell has 2 x 3 elements") !=
         std::string::npos);
@@ -240,8 +240,8 @@ root_arc_centre = [0.0, 0.01, 0.0]
 root_arc_radius = )" +
            radius + "\n";
   };
-  const auto scene = io::parse_scene(fluid + glued("0.003") + "initial_bend = 0.001\n", "t.toml");
-  const auto setup = io::read_immersed_setup(scene, io::build_mesh(scene));
+  const auto scene = scene::parse_scene(fluid + glued("0.003") + "initial_bend = 0.001\n", "t.toml");
+  const auto setup = scene::read_immersed_setup(scene, scene::build_mesh(scene));
   const auto& m = setup.structures.at(0).mesh;
   // The clamped end on the arc, the tip where it was, the nodes between evenly spread.
   for (int a : m.node_set("u0"))

@@ -11,17 +11,17 @@
 using namespace valsalva;
 
 TEST_CASE("resolved turbulent energy: statistics k where covered, |u|^2/2 elsewhere") {
-  io::BoxSpec spec;
+  mesh::BoxSpec spec;
   spec.cells = {4, 4, 4};
-  const auto mesh = io::generate_box(spec);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
+  const auto mesh = mesh::generate_box(spec);
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD);
   const double rho = 2.0;
   // Time average (one bin) over the nodes with x <= 0.5.
-  std::vector<io::PhaseStatistics> stats;
+  std::vector<analysis::PhaseStatistics> stats;
   stats.emplace_back(
-      local, io::PhaseStatisticsOptions{0.0, 1, 0.0, rho, "s"},
-      io::nodes_in_box(local, Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(0.5, 2, 2)));
+      local, analysis::PhaseStatisticsOptions{0.0, 1, 0.0, rho, "s"},
+      analysis::nodes_in_box(local, Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(0.5, 2, 2)));
   // Two samples U +- a: mean U = (1, 2, 3), fluctuation a = (0.1, 0.2, 0.3) in every sample, so
   // k / rho = (0.01 + 0.04 + 0.09) / 2 = 0.07; uncovered nodes get |U + a|^2 / 2 of the current
   // velocity (here the second sample): (0.9^2 + 1.8^2 + 2.7^2) / 2 = 5.67.
@@ -31,12 +31,12 @@ TEST_CASE("resolved turbulent energy: statistics k where covered, |u|^2/2 elsewh
   s.pressure.assign(local.num_local(), 0.0);
   std::vector<double> k;
   stats[0].add(0.1, s.velocity, s.pressure);
-  io::resolved_turbulent_energy(local, s.velocity, stats, 0.1, k);
+  analysis::resolved_turbulent_energy(local, s.velocity, stats, 0.1, k);
   for (int i = 0; i < local.num_owned; ++i)  // one sample: no fluctuation yet, |u|^2/2 everywhere
     CHECK(k[i] == doctest::Approx(0.5 * (U + a).squaredNorm()).epsilon(1e-14));
   s.velocity.assign(local.num_local(), U - a);
   stats[0].add(0.2, s.velocity, s.pressure);
-  io::resolved_turbulent_energy(local, s.velocity, stats, 0.2, k);
+  analysis::resolved_turbulent_energy(local, s.velocity, stats, 0.2, k);
   double covered = 0;
   for (int i = 0; i < local.num_owned; ++i) {
     if (local.position[i].x() <= 0.5) {

@@ -28,7 +28,7 @@ fs::path make_box(int order, bool tets = false) {
   const fs::path dir = fs::path("test_output") / "solid_gmsh";
   fs::create_directories(dir);
   const fs::path file = dir / fmt::format("box_o{}{}.msh", order, tets ? "_tet" : "");
-  io::GmshSession session;
+  mesh::GmshSession session;
   namespace g = gmsh::model::geo;
   const int p1 = g::addPoint(0, 0, 0), p2 = g::addPoint(a, 0, 0), p3 = g::addPoint(a, b, 0),
             p4 = g::addPoint(0, b, 0);
@@ -105,7 +105,7 @@ TEST_CASE("solid Gmsh import: hex8 and hex27 boxes") {
 
 TEST_CASE("solid Gmsh import: bad input is named") {
   CHECK_THROWS_WITH_AS(io::read_solid_gmsh("test_output/no_such_file.msh"),
-                       doctest::Contains("no_such_file.msh"), io::MeshFileError);
+                       doctest::Contains("no_such_file.msh"), mesh::MeshFileError);
   CHECK_THROWS_WITH_AS(io::read_solid_gmsh(make_box(1, true)), doctest::Contains("Tetrahedron"),
-                       io::MeshFileError);
+                       mesh::MeshFileError);
 }

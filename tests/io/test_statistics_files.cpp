@@ -21,13 +21,13 @@ namespace {
 
 // One bin of statistics of a uniform flow on a box of n^3 cells, written to dir/stats.
 void write_statistics(int n, const fs::path& dir) {
-  io::BoxSpec spec;
+  mesh::BoxSpec spec;
   spec.cells = {n, n, n};
-  const auto mesh = io::generate_box(spec);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, MPI_COMM_SELF, {1, "metis"});
-  const auto nodes = io::all_owned_nodes(local);
-  io::PhaseStatistics stats(local, {0.0, 1, 0.0, 1000.0, "stats"}, nodes);
+  const auto mesh = mesh::generate_box(spec);
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_SELF, {1, "metis"});
+  const auto nodes = analysis::all_owned_nodes(local);
+  analysis::PhaseStatistics stats(local, {0.0, 1, 0.0, 1000.0, "stats"}, nodes);
   for (double u : {1.0, 3.0}) {
     std::vector<double> values;
     for (std::size_t i = 0; i < nodes.size(); ++i) values.insert(values.end(), {u, 0.0, 0.0, 0.0});
@@ -43,11 +43,11 @@ TEST_CASE("statistics files: read back, and a bin from another run refused") {
   write_statistics(8, dir / "a");
   write_statistics(9, dir / "b");
   const auto mesh_a = dir / "a" / "stats_mesh.h5";
-  const auto mesh = io::read_statistics_mesh(mesh_a);
+  const auto mesh = analysis::read_statistics_mesh(mesh_a);
   CHECK(mesh.num_nodes() == 729);
   CHECK(mesh.num_cells() == 512);
-  CHECK(io::read_phase_times(dir / "a" / "stats_phases.csv") == std::vector<double>{0.0});
-  const auto own = io::read_statistics_bin(dir / "a" / "stats_000000.h5", mesh, mesh_a);
+  CHECK(analysis::read_phase_times(dir / "a" / "stats_phases.csv") == std::vector<double>{0.0});
+  const auto own = analysis::read_statistics_bin(dir / "a" / "stats_000000.h5", mesh, mesh_a);
   REQUIRE(own.mean_velocity.size() == 3 * 729);
   CHECK(own.mean_velocity[0] == doctest::Approx(2.0));
   CHECK(own.rms_velocity[0] == doctest::Approx(1.0));
@@ -55,7 +55,7 @@ TEST_CASE("statistics files: read back, and a bin from another run refused") {
       "b/stats_000000.h5' dataset 'mean_velocity' has 3000 values (3 "
       "per node: 1000 nodes), but the statistics mesh '" +
       mesh_a.string() + "' has 729 nodes";
-  CHECK_THROWS_WITH(io::read_statistics_bin(dir / "b" / "stats_000000.h5", mesh, mesh_a),
+  CHECK_THROWS_WITH(analysis::read_statistics_bin(dir / "b" / "stats_000000.h5", mesh, mesh_a),
                     doctest::Contains(expected.c_str()));
   fs::remove_all(dir);
 }

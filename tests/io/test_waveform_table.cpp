@@ -24,17 +24,18 @@ TEST_CASE("waveform table: header, separators, errors naming file, line and colu
   const auto bad = dir / (stem + "_bad.csv");
   std::ofstream(bad) << "t,Q\n0.0,1.0\n0.5\n";
   CHECK_THROWS_WITH_AS(io::read_waveform_table(bad),
-                       doctest::Contains("_bad.csv:3:1: 1 values, expected 2"), io::TableError);
+                       doctest::Contains("_bad.csv:3:1: 1 values, expected 2"), core::TableError);
   std::ofstream(bad) << "0.0,1.0\n0.5,2.0\n0.5,3.0\n";
   CHECK_THROWS_WITH_AS(io::read_waveform_table(bad),
-                       doctest::Contains("_bad.csv:3:1: time 0.5 is not after"), io::TableError);
+                       doctest::Contains("_bad.csv:3:1: time 0.5 is not after"), core::TableError);
   // A typo in the first data row is not taken for a header (that halved the period).
   std::ofstream(bad) << "0.0,1.0x\n0.5,2.0\n1.0,1.0\n";
   CHECK_THROWS_WITH_AS(io::read_waveform_table(bad),
                        doctest::Contains("_bad.csv:1:5: '1.0x' is not a finite number"),
-                       io::TableError);
+                       core::TableError);
   std::ofstream(bad) << "t,Q\n0.0,1.0\n";
-  CHECK_THROWS_WITH_AS(io::read_waveform_table(bad), doctest::Contains("found 1"), io::TableError);
+  CHECK_THROWS_WITH_AS(io::read_waveform_table(bad), doctest::Contains("found 1"),
+                       core::TableError);
   std::filesystem::remove(good);
   std::filesystem::remove(bad);
 }
@@ -46,10 +47,10 @@ TEST_CASE("waveform table: a table that is not one period must cover the run") {
   CHECK_THROWS_WITH_AS(io::check_table_wrap(ramp, 0.3, "ramp.csv"),
                        doctest::Contains("'ramp.csv' is not one period (its last value -5 at t = "
                                          "0.2 s differs from its first, 0 at t = 0 s)"),
-                       io::TableError);
+                       core::TableError);
   // A table starting after t = 0 wraps before its first row too.
   const auto late = flow::table_waveform({0.05, 0.2}, {0.0, -5.0});
-  CHECK_THROWS_AS(io::check_table_wrap(late, 0.1, "late.csv"), io::TableError);
+  CHECK_THROWS_AS(io::check_table_wrap(late, 0.1, "late.csv"), core::TableError);
   // One period (last value = first, to round-off) repeats without a jump, however long the run.
   const auto period = flow::table_waveform({0.0, 0.5, 1.0}, {1e-4, 3e-4, 1e-4 * (1 + 1e-12)});
   CHECK_NOTHROW(io::check_table_wrap(period, 24.0, "cycle.csv"));

@@ -17,7 +17,7 @@ TEST_CASE("Welch PSD: Parseval on one segment") {
   for (std::size_t n : {64, 99}) {  // even and odd lengths
     std::vector<double> x(n);
     for (auto& v : x) v = g(rng);
-    const auto s = io::welch_psd(x, 50.0, {n, 0.5});
+    const auto s = analysis::welch_psd(x, 50.0, {n, 0.5});
     CHECK(s.segments == 1);
     double mean = 0, wx2 = 0, w2 = 0;
     for (double v : x) mean += v / double(n);
@@ -25,7 +25,7 @@ TEST_CASE("Welch PSD: Parseval on one segment") {
       const double w = 0.5 * (1 - std::cos(2 * M_PI * double(i) / double(n)));
       wx2 += (x[i] - mean) * (x[i] - mean) * w * w, w2 += w * w;
     }
-    CHECK(io::spectrum_variance(s) == doctest::Approx(wx2 / w2).epsilon(1e-12));
+    CHECK(analysis::spectrum_variance(s) == doctest::Approx(wx2 / w2).epsilon(1e-12));
   }
 }
 
@@ -36,7 +36,7 @@ TEST_CASE("Welch PSD: sine plus white noise") {
   std::vector<double> x(1 << 17);
   for (std::size_t i = 0; i < x.size(); ++i)
     x[i] = 3.0 + amplitude * std::sin(2 * M_PI * f0 * double(i) / fs + 0.3) + noise(rng);
-  const auto s = io::welch_psd(x, fs, {1024, 0.5});
+  const auto s = analysis::welch_psd(x, fs, {1024, 0.5});
   CHECK(s.segments == 255);
   CHECK(s.df == doctest::Approx(fs / 1024));
   CHECK(s.frequency.size() == 513);
@@ -52,13 +52,13 @@ TEST_CASE("Welch PSD: sine plus white noise") {
   double mean_floor = 0;
   for (double p : away) mean_floor += p / double(away.size());
   CHECK(mean_floor == doctest::Approx(floor_level).epsilon(0.03));
-  CHECK(io::spectrum_variance(s) ==
+  CHECK(analysis::spectrum_variance(s) ==
         doctest::Approx(amplitude * amplitude / 2 + sigma * sigma).epsilon(0.01));
 }
 
 TEST_CASE("Welch PSD: bad options are named") {
   std::vector<double> x(100, 1.0);
-  CHECK_THROWS_WITH(io::welch_psd(x, 10, {200, 0.5}), doctest::Contains("segment_length = 200"));
-  CHECK_THROWS_WITH(io::welch_psd(x, 10, {50, 1.0}), doctest::Contains("overlap = 1"));
-  CHECK_THROWS_WITH(io::welch_psd(x, 0, {50, 0.5}), doctest::Contains("sample_rate = 0"));
+  CHECK_THROWS_WITH(analysis::welch_psd(x, 10, {200, 0.5}), doctest::Contains("segment_length = 200"));
+  CHECK_THROWS_WITH(analysis::welch_psd(x, 10, {50, 1.0}), doctest::Contains("overlap = 1"));
+  CHECK_THROWS_WITH(analysis::welch_psd(x, 0, {50, 0.5}), doctest::Contains("sample_rate = 0"));
 }

@@ -23,7 +23,7 @@ struct LesRun {
   double max_nu_sgs = 0;
 };
 
-LesRun run(const flow::Mesh& mesh, const flow::DualMetrics& metrics, const flow::LocalMesh& local,
+LesRun run(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics, const mesh::LocalMesh& local,
            les::SgsUpdate update) {
   const les::SubgridViscosity sgs("sigma", {}, local.h, update);
   flow::ProjectionOptions o;
@@ -45,15 +45,15 @@ LesRun run(const flow::Mesh& mesh, const flow::DualMetrics& metrics, const flow:
 }  // namespace
 
 TEST_CASE("LES (TGV Re 1600, central4, sigma) agrees with the serial run to 1e-10") {
-  io::BoxSpec box;
+  mesh::BoxSpec box;
   box.cells = {16, 16, 16};
   box.length = Eigen::Vector3d::Constant(2 * std::numbers::pi);
   box.periodic = {true, true, true};
-  const auto mesh = io::generate_box(box);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, MPI_COMM_WORLD);
-  const auto serial = flow::distribute(mesh, metrics, MPI_COMM_SELF);
-  const auto n = static_cast<flow::GlobalIndex>(metrics.num_nodes());
+  const auto mesh = mesh::generate_box(box);
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD);
+  const auto serial = mesh::distribute(mesh, metrics, MPI_COMM_SELF);
+  const auto n = static_cast<mesh::GlobalIndex>(metrics.num_nodes());
   for (const auto update : {les::SgsUpdate::step, les::SgsUpdate::stage}) {
     const auto a = run(mesh, metrics, local, update);
     const auto b = run(mesh, metrics, serial, update);

@@ -167,5 +167,5 @@ TEST_CASE("leaflets.msh: a mesh without the valve groups is refused naming the g
   valve::write_leaflets_gmsh(dir / "no_free_edge.msh", m);  // writes an empty group
   CHECK_THROWS_WITH_AS(valve::read_valve_leaflets(dir / "no_free_edge.msh"),
                        doctest::Contains("'leaflet3_free_edge' is missing or empty"),
-                       io::MeshFileError);
+                       mesh::MeshFileError);
 }

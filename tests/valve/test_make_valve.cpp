@@ -28,9 +28,9 @@ TEST_CASE("make_valve at 3 mm: files, patches, volume, attachment") {
   CHECK(r.leaflet_elements == 45);
   MESSAGE("3 mm root: " << r.root.tetrahedra << " tetrahedra, " << r.root.seconds << " s");
 
-  const flow::Mesh mesh = io::read_gmsh(dir / "root.msh");
-  const io::MeshInfo info = io::summarize_mesh(mesh);
-  CHECK(info.cells == flow::GlobalIndex(r.root.tetrahedra));
+  const mesh::Mesh mesh = mesh::read_gmsh(dir / "root.msh");
+  const mesh::MeshInfo info = mesh::summarize_mesh(mesh);
+  CHECK(info.cells == mesh::GlobalIndex(r.root.tetrahedra));
   REQUIRE(info.regions.size() == 1);
   CHECK(info.regions[0].first == "fluid");
   std::map<std::string, double> area;
@@ -64,10 +64,10 @@ TEST_CASE("make_valve at 3 mm: files, patches, volume, attachment") {
 
 namespace {
 // Mean edge length of the tetrahedra whose nodes all lie in z_lo <= z <= z_hi.
-double mean_edge(const flow::Mesh& mesh, double z_lo, double z_hi) {
+double mean_edge(const mesh::Mesh& mesh, double z_lo, double z_hi) {
   double sum = 0;
   long count = 0;
-  for (flow::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
+  for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
     const auto n = mesh.cell(c);
     bool inside = true;
     for (auto k : n) inside = inside && mesh.nodes[k].z() >= z_lo && mesh.nodes[k].z() <= z_hi;
@@ -90,7 +90,7 @@ TEST_CASE("make_valve: a coarser far field outside the valve region") {
   fs::remove_all(dir);
   const auto g = valve::parse_valve_settings({"mesh_size=3e-3", "far_mesh_size=6e-3"});
   const valve::MakeValveResult r = valve::make_valve(dir, g, false);
-  const flow::Mesh mesh = io::read_gmsh(dir / "root.msh");
+  const mesh::Mesh mesh = mesh::read_gmsh(dir / "root.msh");
   const double far = g.far_mesh_size, margin = 2 * far;
   const double near_edge = mean_edge(mesh, g.post_height, g.sinus_height);
   const double aorta_edge = mean_edge(mesh, g.refined_region_z_max() + margin, g.outlet_z());
@@ -102,6 +102,6 @@ TEST_CASE("make_valve: a coarser far field outside the valve region") {
   CHECK(inflow_edge == doctest::Approx(far).epsilon(0.2));
   CHECK(valve::read_valve_toml(dir / "valve.toml").far_mesh_size == far);
   const double R = g.root_radius();
-  CHECK(io::summarize_mesh(mesh).volume ==
+  CHECK(mesh::summarize_mesh(mesh).volume ==
         doctest::Approx(valve::fluid_volume(g)).epsilon(std::pow(far / R, 2) / 6));
 }

@@ -63,7 +63,7 @@ struct TransferCost {
 };
 
 // Times the three transfer operations on `markers` (repeat calls each).
-TransferCost time_transfer(valsalva::flow::LocalMesh& local,
+TransferCost time_transfer(valsalva::mesh::LocalMesh& local,
                            const valsalva::ibm::TransferOptions& o, const Points& markers,
                            int repeat) {
   valsalva::ibm::DiracTransfer transfer(local, o);
@@ -87,10 +87,10 @@ void marker_clouds(const Args& args, bool root) {
   v::LeakageSetup s;
   s.h = args.cloud_h;
   // The channel's fluid mesh as the scene builds it, partitioned for the widest kernel.
-  const auto scene = valsalva::io::load_scene(v::leakage_scene(), v::leakage_overrides(s));
-  const auto mesh = valsalva::io::build_mesh(scene, MPI_COMM_WORLD);
-  const auto metrics = valsalva::flow::compute_dual_metrics(mesh);
-  auto local = valsalva::flow::distribute(
+  const auto leakage = valsalva::scene::load_scene(v::leakage_scene(), v::leakage_overrides(s));
+  const auto mesh = valsalva::scene::build_mesh(leakage, MPI_COMM_WORLD);
+  const auto metrics = valsalva::mesh::compute_dual_metrics(mesh);
+  auto local = valsalva::mesh::distribute(
       mesh, metrics, MPI_COMM_WORLD,
       {v::leakage_ghost_layers(*std::max_element(args.widths.begin(), args.widths.end())),
        "metis"});
@@ -152,7 +152,7 @@ void coupled_step(const Args& args, bool root) {
       auto& z = markers[static_cast<std::size_t>(a)].z();
       z -= s.depth() * std::floor(z / s.depth());
     }
-    auto local = valsalva::flow::distribute(sim.mesh(), sim.metrics(), comm.get(),
+    auto local = valsalva::mesh::distribute(sim.mesh(), sim.metrics(), comm.get(),
                                             {v::leakage_ghost_layers(s.kernel_width), "metis"});
     tc = time_transfer(local, ib.options().transfer, markers, repeat);
     Eigen::Matrix3Xd f(3, m);

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <string>
 
+#include "core/comm.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/gmsh_reader.hpp"
 #include "mesh/local_mesh.hpp"
@@ -84,16 +85,15 @@ int main(int argc, char** argv) {
     MPI_Barrier(MPI_COMM_WORLD);
     const double rss0 = peak_rss_mb();
     auto t0 = std::chrono::steady_clock::now();
-    const auto mesh = valsalva::io::read_gmsh(file);
+    const auto mesh = valsalva::mesh::read_gmsh(file);
     const double t_read = since(t0);
     t0 = std::chrono::steady_clock::now();
-    const auto metrics = valsalva::flow::compute_dual_metrics(mesh);
+    const auto metrics = valsalva::mesh::compute_dual_metrics(mesh);
     const double t_metrics = since(t0);
     t0 = std::chrono::steady_clock::now();
-    const auto local = valsalva::flow::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+    const auto local = valsalva::mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
     const double t_partition = since(t0);
-    double rss = peak_rss_mb(), rss_max = 0;
-    MPI_Reduce(&rss, &rss_max, 1, MPI_DOUBLE, MPI_MAX, 0, MPI_COMM_WORLD);
+    const double rss_max = valsalva::core::Comm(MPI_COMM_WORLD).max(peak_rss_mb());
     if (rank == 0) {
       const double nodes = static_cast<double>(metrics.num_nodes());
       fmt::print("ranks {} | cells {} | nodes {} | edges {}\n", size, mesh.num_cells(),

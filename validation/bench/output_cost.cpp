@@ -3,8 +3,8 @@
 // scene path as `valsalva run` runs it (validation/tgv_les/tgv_les.toml without a model, central2,
 // run::Simulation and its run loop; a step is timed from the end of one observer call to the start
 // of the next, so it includes the loop's own per-step work); in the same run, from the observer,
-// it times per call phase statistics (io::PhaseStatistics)
-// on the whole mesh and on 2 planes, io::Probes::sample, a field write (velocity, pressure,
+// it times per call phase statistics (analysis::PhaseStatistics)
+// on the whole mesh and on 2 planes, analysis::Probes::sample, a field write (velocity, pressure,
 // vorticity), a checkpoint with and without the statistics arrays, and PhaseStatistics::write.
 // Times are process CPU seconds (the machine is shared; wall time is printed beside), the max over
 // ranks per call; ns/node is the CPU time summed over ranks per covered node. Memory: resident
@@ -29,6 +29,7 @@
 
 #include "analysis/phase_statistics.hpp"
 #include "analysis/probes.hpp"
+#include "core/comm.hpp"
 #include "flow/operators.hpp"
 #include "io/checkpoint.hpp"
 #include "io/field_output.hpp"
@@ -102,20 +103,20 @@ struct Measured {
     h = L / args.n;
     nodes = double(local.global_nodes);
     // Whole-mesh statistics: resident size before and after (zero-filled, so all pages touched).
-    const io::PhaseStatisticsOptions so{args.bins * 0.5 * h, args.bins, 0, 1, "all"};
+    const analysis::PhaseStatisticsOptions so{args.bins * 0.5 * h, args.bins, 0, 1, "all"};
     const double rss0 = status_kb("VmRSS");
-    all.emplace(local, so, io::all_owned_nodes(local));
+    all.emplace(local, so, analysis::all_owned_nodes(local));
     stats_bytes = 1024 * local.comm.sum(status_kb("VmRSS") - rss0);
     // Two planes through grid nodes, one node layer each.
     const Eigen::Vector3d mid = Eigen::Vector3d::Constant(args.n / 2 * h);
-    auto plane_nodes = union_of(io::nodes_near_plane(local, mid, {0, 0, 1}, 0.25 * h),
-                                io::nodes_near_plane(local, mid, {1, 0, 0}, 0.25 * h));
+    auto plane_nodes = union_of(analysis::nodes_near_plane(local, mid, {0, 0, 1}, 0.25 * h),
+                                analysis::nodes_near_plane(local, mid, {1, 0, 0}, 0.25 * h));
     plane_count = local.comm.sum(double(plane_nodes.size()));
-    planes.emplace(local, io::PhaseStatisticsOptions{so.period, so.bins, 0, 1, "planes"},
+    planes.emplace(local, analysis::PhaseStatisticsOptions{so.period, so.bins, 0, 1, "planes"},
                    std::move(plane_nodes));
     std::mt19937 random(7);
     std::uniform_real_distribution<double> inside(0.01 * L, 0.99 * L);
-    std::vector<io::ProbePoint> points;
+    std::vector<analysis::ProbePoint> points;
     for (int p = 0; p < args.probes; ++p)
       points.push_back({fmt::format("p{}", p), {inside(random), inside(random), inside(random)}});
     probes.emplace(sim.mesh(), sim.metrics(), local, points);
@@ -165,8 +166,8 @@ struct Measured {
   }
 
   double h = 0, nodes = 0, plane_count = 0, stats_bytes = 0, hwm_before = 0, hwm_after = 0;
-  std::optional<io::PhaseStatistics> all, planes;
-  std::optional<io::Probes> probes;
+  std::optional<analysis::PhaseStatistics> all, planes;
+  std::optional<analysis::Probes> probes;
   std::vector<Cost> costs;
 };
 
@@ -212,7 +213,7 @@ int main(int argc, char** argv) {
         {}, MPI_COMM_WORLD, measure);
 
     const auto& costs = m->costs;
-    const flow::Comm comm(MPI_COMM_WORLD);
+    const core::Comm comm(MPI_COMM_WORLD);
     const double step_cpu = comm.max(costs[0].total.cpu) / costs[0].calls;
     std::string table;
     for (const Cost& c : costs) {

@@ -35,12 +35,12 @@ PeriodicResult run_periodic_womersley(const PeriodicSetup& setup, MPI_Comm comm)
   const double q0 = 5 * D / kPeriod * std::numbers::pi * R * R;
   res.radius = R, res.h = h;
 
-  io::PeriodicPipeSpec spec;
+  mesh::PeriodicPipeSpec spec;
   spec.radius = R, spec.length = setup.layers * h, spec.target_size = h;
   spec.layers = setup.layers, spec.split = setup.split;
-  const auto mesh = io::generate_periodic_pipe_mesh(spec);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, comm);
+  const auto mesh = mesh::generate_periodic_pipe_mesh(spec);
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto local = mesh::distribute(mesh, metrics, comm);
   res.nodes = local.global_nodes;
   auto bc = std::make_shared<flow::BoundaryConditions>(
       local, std::vector<flow::BoundarySpec>{flow::boundary_spec("wall", flow::BoundaryType::wall)},

@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
     for (int r = 0; r < repeats; ++r)
       for (const auto& g : grad) sum += kernel(g);
   };
-  const double t0 = valsalva::flow::thread_cpu_seconds();
+  const double t0 = valsalva::core::thread_cpu_seconds();
   if (model == "sigma")
     run([&](const Eigen::Matrix3d& g) { return sigma_nu(g, delta, default_c_sigma); });
   else if (model == "wale")
@@ -51,6 +51,6 @@ int main(int argc, char** argv) {
   const double calls = static_cast<double>(n) * repeats;
   fmt::print("bench_sgs_kernel {}: {} calls, {:.1f} ns per call (thread CPU), checksum {:.17g}\n",
              model, calls,
-             calls > 0 ? 1e9 * (valsalva::flow::thread_cpu_seconds() - t0) / calls : 0.0, sum);
+             calls > 0 ? 1e9 * (valsalva::core::thread_cpu_seconds() - t0) / calls : 0.0, sum);
   return 0;
 }

@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
 
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
-    const flow::Comm comm(MPI_COMM_WORLD);
+    const core::Comm comm(MPI_COMM_WORLD);
     const double peak_kb = comm.max(static_cast<double>(usage.ru_maxrss));
     const double nodes = std::pow(double(args.n), 3);  // the periodic box's dual nodes
     const double bytes_per_node = comm.max(1024.0 * usage.ru_maxrss / (nodes / size));

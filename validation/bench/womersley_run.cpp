@@ -31,23 +31,23 @@ double womersley_radius(double womersley) {
   return womersley * std::sqrt(kViscosity / kDensity / (2 * std::numbers::pi / kPeriod));
 }
 
-flow::Mesh womersley_mesh(const WomersleySetup& setup, MPI_Comm comm) {
+mesh::Mesh womersley_mesh(const WomersleySetup& setup, MPI_Comm comm) {
   const double R = womersley_radius(setup.womersley), L = setup.length_in_diameters * 2 * R;
   const double size = setup.mesh_size_factor * 2 * R / setup.nodes_per_diameter;
   if (setup.extruded) {
-    io::ExtrudedPipeSpec spec;
+    mesh::ExtrudedPipeSpec spec;
     spec.radius = R, spec.length = L, spec.target_size = size;
     spec.layer_height = setup.layer_height * size;
     spec.grading = setup.grading;
     for (double* d : {&spec.grading.wall_size, &spec.grading.wall_distance,
                       &spec.grading.layer_first, &spec.grading.layer_thickness})
       *d *= size;
-    return io::generate_extruded_pipe_mesh(spec, comm);
+    return mesh::generate_extruded_pipe_mesh(spec, comm);
   }
   auto options = setup.mesh;
   options.wall_size *= size;
   options.wall_distance *= size;
-  return io::generate_pipe_mesh(R, L, size, options);
+  return mesh::generate_pipe_mesh(R, L, size, options);
 }
 
 PhaseSteps phase_steps(const flow::Womersley& exact, double period, int phases, double cfl,
@@ -71,8 +71,8 @@ WomersleyResult run_womersley(const WomersleySetup& setup, MPI_Comm comm) {
   res.radius = R, res.length = L, res.h = h;
 
   const auto mesh = womersley_mesh(setup, comm);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, comm);
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto local = mesh::distribute(mesh, metrics, comm);
   res.nodes = local.global_nodes;
 
   auto inlet = flow::boundary_spec("inlet", flow::BoundaryType::inlet);

@@ -46,12 +46,12 @@ struct WomersleySetup {
   bool sample_whole_pipe = false;  // sample every node, not only the mid-length slab
   bool unscaled_inlet = false;     // flow::BoundarySpec::unscaled_profile
   double mesh_size_factor = 1;     // Gmsh's size = factor * D / nodes_per_diameter
-  io::PipeMeshOptions mesh;        // wall sizes are given in units of that Gmsh size
+  mesh::PipeMeshOptions mesh;      // wall sizes are given in units of that Gmsh size
   // The mesh: false = Gmsh's 3D Delaunay tetrahedra (mesh/pipe_generator.hpp, `mesh`), true = a
   // Gmsh disk extruded into prism layers split into tetrahedra (mesh/extruded_pipe_generator.hpp).
   bool extruded = false;
-  double layer_height = 1;      // extruded: the layers' height in units of the Gmsh size
-  io::DiskWallGrading grading;  // extruded: sizes in units of the Gmsh size
+  double layer_height = 1;        // extruded: the layers' height in units of the Gmsh size
+  mesh::DiskWallGrading grading;  // extruded: sizes in units of the Gmsh size
 };
 
 struct PhaseSample {
@@ -86,7 +86,7 @@ double womersley_radius(double womersley);
 
 // The pipe mesh of a set-up, the same on every rank of `comm` (collective). Throws as the
 // generators do.
-flow::Mesh womersley_mesh(const WomersleySetup& setup, MPI_Comm comm);
+mesh::Mesh womersley_mesh(const WomersleySetup& setup, MPI_Comm comm);
 
 // Collective over `comm`.
 WomersleyResult run_womersley(const WomersleySetup& setup, MPI_Comm comm);
@@ -104,15 +104,15 @@ PhaseSteps phase_steps(const flow::Womersley& exact, double period, int phases, 
 // laminar pipe flow).
 struct NuSgsRecord {
   double max = 0, sum = 0, count = 0;
-  void add(const flow::LocalMesh& local, const flow::ScalarField& nu_sgs, double nu) {
+  void add(const mesh::LocalMesh& local, const flow::ScalarField& nu_sgs, double nu) {
     for (int i = 0; i < local.num_owned; ++i) {
       max = std::max(max, nu_sgs[i] / nu);
       sum += nu_sgs[i] / nu;
     }
     count += local.num_owned;
   }
-  double global_max(const flow::LocalMesh& local) const { return local.comm.max(max); }
-  double global_mean(const flow::LocalMesh& local) const {
+  double global_max(const mesh::LocalMesh& local) const { return local.comm.max(max); }
+  double global_mean(const mesh::LocalMesh& local) const {
     return local.comm.sum(sum) / std::max(1.0, local.comm.sum(count));
   }
 };

@@ -28,6 +28,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "core/comm.hpp"
 #include "core/numeric_table.hpp"
 #include "run/simulation.hpp"
 #include "scene/scene.hpp"
@@ -45,7 +46,7 @@ struct Profile {
 // Column `re_column` ("Re100") of a Ghia table against its first column (y or x), read by the
 // strict table reader (header of names, '#' comments).
 Profile read_ghia(const std::filesystem::path& file, const std::string& re_column) {
-  const auto table = io::read_numeric_table(file, io::TableHeader::required);
+  const auto table = core::read_numeric_table(file, core::TableHeader::required);
   Profile p;
   p.value = table.column(re_column);
   for (const auto& row : table.rows) p.s.push_back(row[0]);
@@ -99,7 +100,7 @@ LevelResult run_level(const Context& ctx, int n, double re, double tolerance, do
   // The scene's run (validation/cavity/cavity.toml), kept until the profiles are read from its
   // final state; its log.csv is in runs/<tag>/.
   const auto scene =
-      io::load_scene(case_scene("cavity", "cavity.toml"),
+      scene::load_scene(case_scene("cavity", "cavity.toml"),
                      {fmt::format("mesh.box.cells=[{}, {}, 3]", n, n),
                       fmt::format("mesh.box.length=[1.0, 1.0, {:.17g}]", 3.0 / n),
                       fmt::format("flow.viscosity={:.17g}", lid * 1.0 / re),
@@ -133,9 +134,7 @@ LevelResult run_level(const Context& ctx, int n, double re, double tolerance, do
     plane.u[k] = state.velocity[i].x();
     plane.v[k] = state.velocity[i].y();
   }
-  for (auto* f : {&plane.u, &plane.v})
-    VALSALVA_MPI(MPI_Allreduce(MPI_IN_PLACE, f->data(), static_cast<int>(f->size()), MPI_DOUBLE,
-                               MPI_SUM, ctx.comm));
+  for (auto* f : {&plane.u, &plane.v}) core::Comm(ctx.comm).sum_in_place(*f);
   // Centreline profiles (N even: x = 1/2 and y = 1/2 are node lines).
   std::vector<double> u_line(n + 1), v_line(n + 1);
   for (int k = 0; k <= n; ++k) {

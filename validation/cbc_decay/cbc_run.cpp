@@ -8,6 +8,7 @@
 #include <ctime>
 #include <stdexcept>
 
+#include "core/comm.hpp"
 #include "core/thread_cpu_time.hpp"
 #include "flow/run_diagnostics.hpp"
 #include "les/cbc_data.hpp"
@@ -28,19 +29,18 @@ double seconds(Clock::time_point a) {
 }
 
 // The owned velocities as three n^3 grid arrays (u, v, w one after the other) on every rank.
-std::vector<double> gather(const flow::LocalMesh& local, const std::vector<std::size_t>& idx, int n,
+std::vector<double> gather(const mesh::LocalMesh& local, const std::vector<std::size_t>& idx, int n,
                            const flow::VectorField& u) {
   const std::size_t n3 = static_cast<std::size_t>(n) * n * n;
   std::vector<double> field(3 * n3, 0.0);
   for (int a = 0; a < local.num_owned; ++a)
     for (int c = 0; c < 3; ++c) field[c * n3 + idx[a]] = u[a][c];
-  MPI_Allreduce(MPI_IN_PLACE, field.data(), static_cast<int>(field.size()), MPI_DOUBLE, MPI_SUM,
-                local.comm.get());
+  local.comm.sum_in_place(field);
   return field;
 }
 
 // Spectrum of the owned velocities (gathered on every rank) against the filtered measurement.
-CbcStation measure(const flow::LocalMesh& local, const std::vector<std::size_t>& idx, int n,
+CbcStation measure(const mesh::LocalMesh& local, const std::vector<std::size_t>& idx, int n,
                    double length, const flow::VectorField& u, const les::SpectrumTable& exp,
                    int station) {
   const std::size_t n3 = static_cast<std::size_t>(n) * n * n;
@@ -160,7 +160,7 @@ CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
     idx.resize(local.num_local());
     for (int a = 0; a < local.num_local(); ++a) idx[a] = node_index(local.position[a]);
     if (t_spin <= 0) at_start_station(sim);
-    cpu_mark = flow::thread_cpu_seconds();
+    cpu_mark = core::thread_cpu_seconds();
   };
   if (t_spin > 0)
     run.modify_velocity = [&](const run::Simulation& sim, flow::VectorField& u, std::int64_t) {
@@ -178,11 +178,11 @@ CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
       ++r.spinup_steps;
     };
   run.observer = [&](const run::Simulation& sim, std::int64_t) {
-    r.step_seconds += flow::thread_cpu_seconds() - cpu_mark;
+    r.step_seconds += core::thread_cpu_seconds() - cpu_mark;
     const double t = sim.state().time;
     if (t <= t_spin + eps) {  // a spin-up step
       if (std::abs(t - t_spin) <= eps) at_start_station(sim);
-      cpu_mark = flow::thread_cpu_seconds();
+      cpu_mark = core::thread_cpu_seconds();
       return;
     }
     ++r.steps;
@@ -201,7 +201,7 @@ CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
       s.max_nu_sgs_over_nu = sim.loop().solver().max_subgrid_viscosity() / cbc_air_viscosity;
       r.stations.push_back(std::move(s));
     }
-    cpu_mark = flow::thread_cpu_seconds();
+    cpu_mark = core::thread_cpu_seconds();
   };
   run.at_end = [&](const run::Simulation& sim) { r.sgs_seconds = sim.subgrid_cpu_seconds(); };
   run_scene_file(case_scene("cbc_decay", "cbc_decay.toml"),
@@ -209,7 +209,7 @@ CbcResult run_cbc(const CbcSpec& spec, MPI_Comm comm) {
   if (r.stations.size() != spec.stations.size())
     throw std::logic_error(fmt::format("run_cbc: {} of {} stations measured", r.stations.size(),
                                        spec.stations.size()));
-  const flow::Comm c(comm);
+  const core::Comm c(comm);
   r.sgs_seconds = c.max(r.sgs_seconds);
   r.step_seconds = c.max(r.step_seconds);
   r.wall_seconds = c.max(seconds(start));

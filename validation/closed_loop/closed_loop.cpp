@@ -12,6 +12,7 @@
 #include <complex>
 #include <numbers>
 
+#include "core/comm.hpp"
 #include "core/numeric_table.hpp"
 #include "flow/womersley.hpp"
 #include "validation/case.hpp"
@@ -47,7 +48,7 @@ struct Table {
 };
 
 Table read_outlets(const std::filesystem::path& file, bool ventricle) {
-  const auto table = io::read_numeric_table(file, io::TableHeader::required);
+  const auto table = core::read_numeric_table(file, core::TableHeader::required);
   Table out{table.column("time"), table.column("flux_inlet"), {}, {}};
   if (ventricle) {
     out.volume = table.column("volume_inlet");
@@ -57,7 +58,7 @@ Table read_outlets(const std::filesystem::path& file, bool ventricle) {
 }
 
 void broadcast(MPI_Comm comm, std::initializer_list<double*> values) {
-  for (double* x : values) MPI_Bcast(x, 1, MPI_DOUBLE, 0, comm);
+  for (double* x : values) core::Comm(comm).broadcast(*x);
 }
 
 // The steady inflow / Poiseuille's - 1 on a pipe of mesh size `size`.

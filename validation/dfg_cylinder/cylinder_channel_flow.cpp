@@ -5,9 +5,9 @@
 
 namespace valsalva::validation {
 
-CylinderChannelFlow make_cylinder_channel_flow(const flow::Mesh& mesh,
-                                               const flow::DualMetrics& metrics,
-                                               const flow::LocalMesh& local, double rho, double nu,
+CylinderChannelFlow make_cylinder_channel_flow(const mesh::Mesh& mesh,
+                                               const mesh::DualMetrics& metrics,
+                                               const mesh::LocalMesh& local, double rho, double nu,
                                                flow::Waveform inflow, bool stiffness_viscous) {
   auto inlet = flow::boundary_spec("inlet", flow::BoundaryType::inlet);
   inlet.profile = flow::InletProfile::plane_poiseuille;
@@ -40,7 +40,7 @@ void impose_initial_boundary_values(flow::BoundaryConditions& bc, flow::FlowStat
   bc.impose(state.velocity, 0.0);
 }
 
-flow::WallForceInput cylinder_force_input(const flow::LocalMesh& local,
+flow::WallForceInput cylinder_force_input(const mesh::LocalMesh& local,
                                           const flow::ProjectionRK4& solver,
                                           const flow::FlowState& state, double rho, double nu,
                                           flow::TensorField& grad,
@@ -58,7 +58,7 @@ flow::WallForceInput cylinder_force_input(const flow::LocalMesh& local,
   return in;
 }
 
-Eigen::Vector3d cylinder_force(const flow::LocalMesh& local, const flow::ProjectionRK4& solver,
+Eigen::Vector3d cylinder_force(const mesh::LocalMesh& local, const flow::ProjectionRK4& solver,
                                const flow::FlowState& state, double rho, double nu,
                                flow::TensorField& grad, const flow::VectorField* body_force) {
   return flow::wall_force(local, "cylinder",

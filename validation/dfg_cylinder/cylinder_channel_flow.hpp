@@ -21,9 +21,9 @@ struct CylinderChannelFlow {
   std::unique_ptr<flow::ProjectionRK4> solver;
 };
 
-CylinderChannelFlow make_cylinder_channel_flow(const flow::Mesh& mesh,
-                                               const flow::DualMetrics& metrics,
-                                               const flow::LocalMesh& local, double rho, double nu,
+CylinderChannelFlow make_cylinder_channel_flow(const mesh::Mesh& mesh,
+                                               const mesh::DualMetrics& metrics,
+                                               const mesh::LocalMesh& local, double rho, double nu,
                                                flow::Waveform inflow,
                                                bool stiffness_viscous = false);
 
@@ -32,7 +32,7 @@ void impose_initial_boundary_values(flow::BoundaryConditions& bc, flow::FlowStat
 
 // The flow::wall_force input of `state` for the residual force with the solver's viscous
 // weights; fills `grad` (the velocity gradient), whose lifetime the input borrows.
-flow::WallForceInput cylinder_force_input(const flow::LocalMesh& local,
+flow::WallForceInput cylinder_force_input(const mesh::LocalMesh& local,
                                           const flow::ProjectionRK4& solver,
                                           const flow::FlowState& state, double rho, double nu,
                                           flow::TensorField& grad,
@@ -41,7 +41,7 @@ flow::WallForceInput cylinder_force_input(const flow::LocalMesh& local,
 // Force (N) of the fluid on the "cylinder" patch: the consistent residual force of
 // flow/wall_force.hpp, with the body-force density in the wall-node balance when given.
 // `grad` is scratch. Collective.
-Eigen::Vector3d cylinder_force(const flow::LocalMesh& local, const flow::ProjectionRK4& solver,
+Eigen::Vector3d cylinder_force(const mesh::LocalMesh& local, const flow::ProjectionRK4& solver,
                                const flow::FlowState& state, double rho, double nu,
                                flow::TensorField& grad,
                                const flow::VectorField* body_force = nullptr);

@@ -123,7 +123,7 @@ LevelRun run_level(const Context& ctx, const Level& level, const Benchmark& b) {
   // The level as overrides of validation/dfg_cylinder/dfg_cylinder.toml, run by run::Simulation
   // (`valsalva run`'s path): dt = sigma of the RK4 stability limit, recomputed every step; the
   // last step lands on time.end.
-  const auto scene = io::load_scene(
+  const auto scene = scene::load_scene(
       case_scene("dfg_cylinder", "dfg_cylinder.toml"),
       {fmt::format("mesh.cylinder_channel.size_near={:.17g}", level.size_near),
        fmt::format("mesh.cylinder_channel.size_far={:.17g}", level.size_far),
@@ -155,7 +155,7 @@ LevelRun run_level(const Context& ctx, const Level& level, const Benchmark& b) {
   });
 
   const double zc = thickness / 2;
-  io::Probes probes(mesh, sim.metrics(), local,
+  analysis::Probes probes(mesh, sim.metrics(), local,
                     {{"front", Eigen::Vector3d(0.15, centre_y, zc)},
                      {"back", Eigen::Vector3d(0.25, centre_y, zc)}});
   const StagnationTraction stagnation(mesh, centre_x, centre_y, 0.5 * kDiameter);

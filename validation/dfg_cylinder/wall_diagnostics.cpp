@@ -6,8 +6,8 @@
 
 namespace valsalva::validation {
 
-EndDiagnostics end_diagnostics(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
-                               const flow::LocalMesh& local, const flow::ProjectionRK4& solver,
+EndDiagnostics end_diagnostics(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+                               const mesh::LocalMesh& local, const flow::ProjectionRK4& solver,
                                const flow::FlowState& state, double yc, double zc, double delta,
                                double q, const CylinderFluid& fluid) {
   EndDiagnostics d;
@@ -30,12 +30,12 @@ EndDiagnostics end_diagnostics(const flow::Mesh& mesh, const flow::DualMetrics& 
   const auto loads = flow::wall_loads(local, "cylinder", in);
   std::tie(d.p_front, d.p_back) =
       StagnationTraction(mesh, 0.2, yc, 0.5 * fluid.diameter).pressures(local, loads);
-  std::vector<io::ProbePoint> points;
+  std::vector<analysis::ProbePoint> points;
   for (int k = 0; k <= 3; ++k) {
     points.push_back({"front", Eigen::Vector3d(0.15 - k * delta, yc, zc)});
     points.push_back({"back", Eigen::Vector3d(0.25 + k * delta, yc, zc)});
   }
-  const auto v = io::Probes(mesh, metrics, local, points).sample(state);
+  const auto v = analysis::Probes(mesh, metrics, local, points).sample(state);
   auto p = [&](int k, int side) { return v[4 * (2 * k + side) + 3]; };
   d.p_front_wall_node = p(0, 0), d.p_back_wall_node = p(0, 1);
   d.p_front_linear = 2 * p(1, 0) - p(2, 0), d.p_back_linear = 2 * p(1, 1) - p(2, 1);

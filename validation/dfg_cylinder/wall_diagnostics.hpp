@@ -48,7 +48,7 @@ struct EndDiagnostics {
 // 0.11776 parabolic).
 class StagnationTraction {
  public:
-  StagnationTraction(const flow::Mesh& mesh, double centre_x, double centre_y, double radius) {
+  StagnationTraction(const mesh::Mesh& mesh, double centre_x, double centre_y, double radius) {
     for (int side = 0; side < 2; ++side) {  // 0: front (x < centre), 1: back
       std::vector<Eigen::Vector2d> near;    // distinct positions on the circle, by |y - centre_y|
       for (const Eigen::Vector3d& x : mesh.nodes) {
@@ -70,7 +70,7 @@ class StagnationTraction {
     }
   }
   // p at the front and the back stagnation point. Collective.
-  std::pair<double, double> pressures(const flow::LocalMesh& local,
+  std::pair<double, double> pressures(const mesh::LocalMesh& local,
                                       const std::vector<flow::WallLoad>& loads) const {
     std::array<double, 36> sums{};  // per side and position: force, area
     for (const auto& l : loads)
@@ -78,8 +78,7 @@ class StagnationTraction {
         if ((local.position[l.node].head<2>() - points_[k / 3][k % 3].xy).norm() < 1e-9)
           for (int c = 0; c < 3; ++c)
             sums[6 * k + c] += l.force[c], sums[6 * k + 3 + c] += l.area[c];
-    VALSALVA_MPI(
-        MPI_Allreduce(MPI_IN_PLACE, sums.data(), 36, MPI_DOUBLE, MPI_SUM, local.comm.get()));
+    local.comm.sum_in_place(sums);
     double p[2] = {0, 0};
     for (int k = 0; k < 6; ++k) {
       const Eigen::Vector3d f(&sums[6 * k]), a(&sums[6 * k + 3]);
@@ -96,8 +95,8 @@ class StagnationTraction {
   std::array<std::array<Point, 3>, 2> points_;
 };
 
-EndDiagnostics end_diagnostics(const flow::Mesh& mesh, const flow::DualMetrics& metrics,
-                               const flow::LocalMesh& local, const flow::ProjectionRK4& solver,
+EndDiagnostics end_diagnostics(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+                               const mesh::LocalMesh& local, const flow::ProjectionRK4& solver,
                                const flow::FlowState& state, double yc, double zc, double delta,
                                double q, const CylinderFluid& fluid);  // q: 0.5 rho U^2 D depth
 

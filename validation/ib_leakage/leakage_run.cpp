@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "analysis/pressure_drop.hpp"
+#include "core/comm.hpp"
 #include "ibm/dirac_transfer.hpp"
 #include "ibm/immersed_structure.hpp"
 #include "structure/solid_forces.hpp"
@@ -23,7 +24,7 @@ namespace {
 constexpr double region_distance = 5e-3, region_radius = 1.5e-3;  // m, see the header
 
 // Pressure on the node row nearest y = H/2 (z = 0), indexed by round(x / h), all ranks.
-void centre_line_pressure(const LeakageSetup& s, const flow::LocalMesh& local,
+void centre_line_pressure(const LeakageSetup& s, const mesh::LocalMesh& local,
                           const flow::ScalarField& p, LeakageResult& r) {
   const int n = static_cast<int>(std::lround(s.length() / s.h)) + 1;
   std::vector<double> sum(static_cast<std::size_t>(n), 0.0);
@@ -32,7 +33,7 @@ void centre_line_pressure(const LeakageSetup& s, const flow::LocalMesh& local,
     if (std::abs(x.y() - s.height / 2) > 0.51 * s.h || std::abs(x.z()) > s.h / 4) continue;
     sum[static_cast<std::size_t>(std::lround(x.x() / s.h))] = p[j];
   }
-  MPI_Allreduce(MPI_IN_PLACE, sum.data(), n, MPI_DOUBLE, MPI_SUM, local.comm.get());
+  local.comm.sum_in_place(sum);
   for (int i = 0; i < n; ++i) {
     r.profile_x.push_back(i * s.h);
     r.profile_p.push_back(sum[static_cast<std::size_t>(i)]);
@@ -47,7 +48,7 @@ class ForceSplit {
  public:
   ForceSplit(const LeakageSetup& s, const run::Simulation& sim, const ibm::TransferOptions& o)
       : s_(s),
-        local_(flow::distribute(sim.mesh(), sim.metrics(), sim.local().comm.get(),
+        local_(mesh::distribute(sim.mesh(), sim.metrics(), sim.local().comm.get(),
                                 {leakage_ghost_layers(s.kernel_width), "metis"})),
         transfer_(local_, o) {
     double v[2] = {0, 0};
@@ -82,7 +83,7 @@ class ForceSplit {
 
  private:
   const LeakageSetup& s_;
-  flow::LocalMesh local_;
+  mesh::LocalMesh local_;
   ibm::DiracTransfer transfer_;
   std::vector<char> wall_;
   double span_ = 0;
@@ -149,9 +150,9 @@ class Sampler {
           "ib_leakage: pressure regions at x = {:.4g} and {:.4g} m (radius {:.3g} m) do not fit "
           "in the channel [0, {:.4g}] m; lengthen `upstream` or `downstream`",
           x_up, x_down, region_radius, s_.length()));
-    up_ = std::make_unique<io::RegionMean>(sim.local(), mid + Eigen::Vector3d(x_up, 0, 0),
+    up_ = std::make_unique<analysis::RegionMean>(sim.local(), mid + Eigen::Vector3d(x_up, 0, 0),
                                            region_radius, "upstream");
-    down_ = std::make_unique<io::RegionMean>(sim.local(), mid + Eigen::Vector3d(x_down, 0, 0),
+    down_ = std::make_unique<analysis::RegionMean>(sim.local(), mid + Eigen::Vector3d(x_down, 0, 0),
                                              region_radius, "downstream");
     split_ = std::make_unique<ForceSplit>(s_, sim, ib.options().transfer);
     r_.interior_span = split_->interior_span();
@@ -194,7 +195,7 @@ class Sampler {
   const LeakageSetup& s_;
   LeakageResult& r_;
   std::vector<int> line_;
-  std::unique_ptr<io::RegionMean> up_, down_;
+  std::unique_ptr<analysis::RegionMean> up_, down_;
   std::unique_ptr<ForceSplit> split_;
   std::size_t inlet_ = 0, outlet_ = 0;
   double next_ = 0, last_time_ = 0;
@@ -248,7 +249,7 @@ LeakageResult run_leakage(const LeakageSetup& setup, const std::filesystem::path
   const auto result = run_scene_file(leakage_scene(), leakage_overrides(s), run_dir, comm, measure);
   r.dt = result.summary.time / static_cast<double>(result.summary.steps);
   double wall = MPI_Wtime() - t0;
-  MPI_Allreduce(MPI_IN_PLACE, &wall, 1, MPI_DOUBLE, MPI_MAX, comm);
+  wall = core::Comm(comm).max(wall);
   r.wall_seconds = wall;
   return r;
 }

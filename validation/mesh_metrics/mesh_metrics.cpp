@@ -25,10 +25,10 @@ struct Identities {
   std::int64_t nodes;
 };
 
-Identities check_identities(const flow::Mesh& mesh, MPI_Comm comm) {
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, comm, {2, "metis"});
-  const auto id = flow::measure_metric_identities(local, flow::mesh_volume(mesh));
+Identities check_identities(const mesh::Mesh& mesh, MPI_Comm comm) {
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto local = mesh::distribute(mesh, metrics, comm, {2, "metis"});
+  const auto id = mesh::measure_metric_identities(local, mesh::mesh_volume(mesh));
   return {id.volume_error, id.closure_error, id.gradient_error, metrics.num_nodes()};
 }
 
@@ -36,25 +36,26 @@ void run(const Context& ctx, Report& report) {
   const int n = ctx.quick ? 6 : 16;
   struct Named {
     std::string name;
-    flow::Mesh mesh;
+    mesh::Mesh mesh;
   };
   std::vector<Named> meshes;
   for (std::string type : {"hexa", "tetra", "prism", "pyramid", "mixed"}) {
-    io::BoxSpec spec;
+    mesh::BoxSpec spec;
     spec.cells = {n + 2, n, n - 1};
     spec.cell_type = type;
-    meshes.push_back({type, io::generate_box(spec)});
+    meshes.push_back({type, mesh::generate_box(spec)});
     spec.periodic = {false, true, true};
-    meshes.push_back({type + "_periodic_yz", io::generate_box(spec)});
+    meshes.push_back({type + "_periodic_yz", mesh::generate_box(spec)});
   }
-  io::BoxSpec perturbed;
+  mesh::BoxSpec perturbed;
   perturbed.cells = {n, n, n};
   perturbed.cell_type = "tetra";
   perturbed.perturbation = 0.2;
-  meshes.push_back({"tetra_perturbed_20pct", io::generate_box(perturbed)});
+  meshes.push_back({"tetra_perturbed_20pct", mesh::generate_box(perturbed)});
   perturbed.periodic = {true, true, true};
-  meshes.push_back({"tetra_perturbed_20pct_periodic_xyz", io::generate_box(perturbed)});
-  meshes.push_back({"gmsh_pipe", io::generate_pipe_mesh(0.0125, 0.05, ctx.quick ? 0.004 : 0.002)});
+  meshes.push_back({"tetra_perturbed_20pct_periodic_xyz", mesh::generate_box(perturbed)});
+  meshes.push_back(
+      {"gmsh_pipe", mesh::generate_pipe_mesh(0.0125, 0.05, ctx.quick ? 0.004 : 0.002)});
 
   int rank = 0;
   MPI_Comm_rank(ctx.comm, &rank);

@@ -21,6 +21,7 @@
 #include <fstream>
 #include <functional>
 
+#include "core/comm.hpp"
 #include "core/numeric_table.hpp"
 #include "run/run_directory.hpp"
 #include "run/simulation.hpp"
@@ -94,8 +95,8 @@ void run_level(const Context& ctx, Level& level, const Reference& reference) {
   level.wall_seconds = result.summary.wall_seconds;
   level.steady = result.summary.steady;
   // The fluid and the force of the run, from its own resolved scene (every rank reads it).
-  const auto scene = io::load_scene(dir / io::RunDirectory::resolved_scene_name);
-  const auto model = io::read_viscosity_model(scene);
+  const auto scene = scene::load_scene(dir / run::RunDirectory::resolved_scene_name);
+  const auto model = scene::read_viscosity_model(scene);
   const double G = scene.get<std::array<double, 3>>("forcing.force")[2];
   const auto [u_ref, q_ref] = reference(model, G);
   level.index = model.n;
@@ -110,18 +111,20 @@ void run_level(const Context& ctx, Level& level, const Reference& reference) {
     v += volume[k];
   }
   double sums[2] = {e2, v};
-  MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, ctx.comm);
+  core::Comm(ctx.comm).sum_in_place(std::span<double>(sums, 2));
   level.profile_error = std::sqrt(sums[0] / sums[1]) / u_max;
   int rank = 0;
   MPI_Comm_rank(ctx.comm, &rank);
   if (rank == 0) {
-    const auto sections = io::read_numeric_table(dir / "sections.csv", io::TableHeader::required);
+    const auto sections =
+        core::read_numeric_table(dir / "sections.csv", core::TableHeader::required);
     level.flow_rate = sections.column("mid_flux").back();
     if (const auto wss = dir / "wall_shear_history.csv"; std::filesystem::exists(wss))
-      level.wss_error =
-          io::read_numeric_table(wss, io::TableHeader::required).column("wall_mean_wss").back() /
-              (G * kRadius / 2) -
-          1;
+      level.wss_error = core::read_numeric_table(wss, core::TableHeader::required)
+                                .column("wall_mean_wss")
+                                .back() /
+                            (G * kRadius / 2) -
+                        1;
     // The profile for the plot: the nodes of rank 0 with the reference. Beside the run
     // directory, not in it: `run --overwrite` refuses a directory holding files it did not write.
     std::ofstream csv(ctx.out_dir / fmt::format("profile_{}_{}.csv", level.fluid, level.n));
@@ -129,8 +132,8 @@ void run_level(const Context& ctx, Level& level, const Reference& reference) {
     for (std::size_t k = 0; k < radius.size(); ++k)
       csv << fmt::format("{:.9e},{:.9e},{:.9e}\n", radius[k], velocity[k], u_ref(radius[k]));
   }
-  MPI_Bcast(&level.flow_rate, 1, MPI_DOUBLE, 0, ctx.comm);
-  MPI_Bcast(&level.wss_error, 1, MPI_DOUBLE, 0, ctx.comm);
+  core::Comm(ctx.comm).broadcast(level.flow_rate);
+  core::Comm(ctx.comm).broadcast(level.wss_error);
 }
 
 std::pair<std::function<double(double)>, double> power_law_reference(const flow::ViscosityModel& m,

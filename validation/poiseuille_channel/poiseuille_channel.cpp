@@ -24,6 +24,7 @@
 #include <fstream>
 #include <numbers>
 
+#include "core/comm.hpp"
 #include "core/numeric_table.hpp"
 #include "run/simulation.hpp"
 #include "validation/case.hpp"
@@ -61,7 +62,7 @@ struct Level {
 };
 
 // Linear interpolation of a column of probes.csv at time t.
-double at_time(const io::NumericTable& probes, const std::string& column, double t) {
+double at_time(const core::NumericTable& probes, const std::string& column, double t) {
   const auto time = probes.column("time"), value = probes.column(column);
   for (std::size_t k = 1; k < time.size(); ++k)
     if (time[k] >= t) {
@@ -106,24 +107,25 @@ void run_level(const Context& ctx, Level& level) {
   int rank = 0;
   MPI_Comm_rank(ctx.comm, &rank);
   if (rank != 0) return;
-  const auto sections = io::read_numeric_table(dir / "sections.csv", io::TableHeader::required);
+  const auto sections = core::read_numeric_table(dir / "sections.csv", core::TableHeader::required);
   level.flux = sections.column("cut_flux").back();
   if (level.flow_rate) {
     const double q = 2.0 / 3 * kUmax * kHeight * 3 * h;
     const auto time = sections.column("time"), flux = sections.column("cut_flux");
     for (std::size_t k = 0; k < time.size(); ++k)
       if (time[k] > 0) level.held = std::max(level.held, std::abs(flux[k] / q - 1));
-    level.force =
-        io::read_numeric_table(dir / "log.csv", io::TableHeader::required).column("force_x").back();
+    level.force = core::read_numeric_table(dir / "log.csv", core::TableHeader::required)
+                      .column("force_x")
+                      .back();
     return;
   }
   // The run's own outputs: the wall shear history (mean over each wall's nodes) and the probe.
   const auto wss =
-      io::read_numeric_table(dir / "wall_shear_history.csv", io::TableHeader::required);
+      core::read_numeric_table(dir / "wall_shear_history.csv", core::TableHeader::required);
   const double tau_w = kForce * kHeight / 2;
   for (const char* wall : {"ymin_mean_wss", "ymax_mean_wss"})
     level.wss_error = std::max(level.wss_error, std::abs(wss.column(wall).back() / tau_w - 1));
-  const auto probes = io::read_numeric_table(dir / "probes.csv", io::TableHeader::required);
+  const auto probes = core::read_numeric_table(dir / "probes.csv", core::TableHeader::required);
   const double tau = kHeight * kHeight / (std::numbers::pi * std::numbers::pi * kMu / kRho);
   for (double t : {0.5 * tau, tau, 2 * tau})
     level.startup_error =
@@ -142,7 +144,7 @@ void run_case(const Context& ctx, Report& report) {
   // Every metric was measured on rank 0 (the files) or reduced (the profile): broadcast.
   for (auto& l : levels)
     for (double* x : {&l.wss_error, &l.startup_error, &l.flux, &l.held, &l.force})
-      MPI_Bcast(x, 1, MPI_DOUBLE, 0, ctx.comm);
+      core::Comm(ctx.comm).broadcast(*x);
   if (rank == 0) {
     std::ofstream csv(ctx.out_dir / "levels.csv");
     csv << "cells,n,h,drive,steps,profile_l2_over_umax,wss_relative_error,"

@@ -29,6 +29,7 @@
 #include <fstream>
 #include <numbers>
 
+#include "core/comm.hpp"
 #include "core/numeric_table.hpp"
 #include "run/simulation.hpp"
 #include "validation/case.hpp"
@@ -85,7 +86,7 @@ struct Level {
   long nodes = 0;
 };
 
-double at_time(const io::NumericTable& table, const std::string& column, double t) {
+double at_time(const core::NumericTable& table, const std::string& column, double t) {
   const auto time = table.column("time"), value = table.column(column);
   for (std::size_t k = 1; k < time.size(); ++k)
     if (time[k] >= t) {
@@ -130,12 +131,12 @@ void run_level(const Context& ctx, Level& level) {
   if (rank != 0) return;
   const double tau = viscous_time();
   const auto wss =
-      io::read_numeric_table(dir / "wall_shear_history.csv", io::TableHeader::required);
-  const auto sections = io::read_numeric_table(dir / "sections.csv", io::TableHeader::required);
+      core::read_numeric_table(dir / "wall_shear_history.csv", core::TableHeader::required);
+  const auto sections = core::read_numeric_table(dir / "sections.csv", core::TableHeader::required);
   level.flux = sections.column("cut_flux").back();
   // The time-averaged wall shear of every wall node (steady over the averaging window).
   // patch (a name), node, x, y, z, tawss, osi, tau_x, tau_y, tau_z: the numbers read strictly.
-  io::TableLines lines(dir / "wall_shear.csv", {});
+  core::TableLines lines(dir / "wall_shear.csv", {});
   for (bool header = true; lines.next(); header = false) {
     const auto fields = lines.fields();
     if (header) continue;
@@ -145,7 +146,7 @@ void run_level(const Context& ctx, Level& level) {
   }
   if (!level.flow_rate) {
     level.wss_error = std::abs(wss.column("wall_mean_wss").back() / (kForce * kRadius / 2) - 1);
-    const auto probes = io::read_numeric_table(dir / "probes.csv", io::TableHeader::required);
+    const auto probes = core::read_numeric_table(dir / "probes.csv", core::TableHeader::required);
     for (double t : {0.5 * tau, tau, 2 * tau})
       level.startup_error = std::max(
           level.startup_error, std::abs(at_time(probes, "centre_w", t) - startup_axis(t)) / kUmax);
@@ -159,7 +160,7 @@ void run_level(const Context& ctx, Level& level) {
     if (time[k] >= tau)
       level.held_other = std::max(level.held_other, std::abs(other[k] / kFlowRate - 1));
   }
-  const auto log = io::read_numeric_table(dir / "log.csv", io::TableHeader::required);
+  const auto log = core::read_numeric_table(dir / "log.csv", core::TableHeader::required);
   const double end = log.column("time").back();
   level.force = log.column("force_z").back();
   level.force_change = std::abs(level.force - at_time(log, "force_z", end - tau)) / kForce;
@@ -177,7 +178,7 @@ void run_case(const Context& ctx, Report& report) {
   for (auto& l : levels)  // measured on rank 0 from the files
     for (double* x : {&l.wss_error, &l.wss_nodal, &l.startup_error, &l.flux, &l.held, &l.held_other,
                       &l.force, &l.force_change})
-      MPI_Bcast(x, 1, MPI_DOUBLE, 0, ctx.comm);
+      core::Comm(ctx.comm).broadcast(*x);
   if (rank == 0) {
     std::ofstream csv(ctx.out_dir / "levels.csv");
     csv << "drive,n,h,nodes,steps,profile_l2_over_umax,wss_mean_relative_error,"

@@ -15,6 +15,7 @@
 #include <fstream>
 
 #include "analysis/pressure_drop.hpp"
+#include "core/comm.hpp"
 #include "core/numeric_table.hpp"
 #include "run/simulation.hpp"
 #include "scene/scene.hpp"
@@ -40,7 +41,7 @@ void run_level(const Context& ctx, Level& level) {
   // The scene (validation/poiseuille_wss/poiseuille_wss.toml) at this level, through
   // run::Simulation; started from the exact parabola, mean velocity Q / (pi R^2).
   const auto scene =
-      io::load_scene(case_scene("poiseuille_wss", "poiseuille_wss.toml"),
+      scene::load_scene(case_scene("poiseuille_wss", "poiseuille_wss.toml"),
                      {fmt::format("mesh.pipe.size={:.17g}", kRadius / level.resolution)});
   run::Simulation sim(scene, level_request(dir), ctx.comm);
   sim.set_initial_velocity([&](const Eigen::Vector3d& x) {
@@ -50,15 +51,15 @@ void run_level(const Context& ctx, Level& level) {
   sim.run();
   const auto& local = sim.local();
   const auto& comm = local.comm;
-  const io::RegionMean up(local, Eigen::Vector3d(0, 0, z_up), 0.5 * kRadius, "upstream");
-  const io::RegionMean down(local, Eigen::Vector3d(0, 0, z_down), 0.5 * kRadius, "downstream");
+  const analysis::RegionMean up(local, Eigen::Vector3d(0, 0, z_up), 0.5 * kRadius, "upstream");
+  const analysis::RegionMean down(local, Eigen::Vector3d(0, 0, z_down), 0.5 * kRadius, "downstream");
   const double dp_exact = 8 * kMu * (z_down - z_up) * kQ / (M_PI * std::pow(kRadius, 4));
   level.dp_error = (up(sim.state().pressure) - down(sim.state().pressure)) / dp_exact - 1;
   level.nodes = sim.metrics().num_nodes();
   // Mean TAWSS over the wall nodes of the middle half, from the run's wall_shear.csv.
   if (comm.rank() == 0) {
     // patch (a name), node, x, y, z, tawss, osi, tau_x, tau_y, tau_z: the numbers read strictly.
-    io::TableLines lines(dir / "wall_shear.csv", {});
+    core::TableLines lines(dir / "wall_shear.csv", {});
     std::vector<double> z, tawss, osi;
     for (bool header = true; lines.next(); header = false) {
       const auto fields = lines.fields();
@@ -84,7 +85,7 @@ void run_level(const Context& ctx, Level& level) {
     level.wss_max = hi / exact - 1;
   }
   for (double* x : {&level.wss_error, &level.wss_min, &level.wss_max, &level.osi_max})
-    MPI_Bcast(x, 1, MPI_DOUBLE, 0, ctx.comm);
+    core::Comm(ctx.comm).broadcast(*x);
 }
 
 }  // namespace

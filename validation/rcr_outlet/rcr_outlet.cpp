@@ -19,6 +19,7 @@
 #include <fstream>
 #include <numbers>
 
+#include "core/comm.hpp"
 #include "core/numeric_table.hpp"
 #include "flow/lumped_outlets.hpp"
 #include "run/simulation.hpp"
@@ -46,7 +47,7 @@ struct Frequency {
 
 // rank 0: fits the last period of log.csv and fills the errors.
 void fit_pressure(const std::filesystem::path& outlets, double period, Frequency& f) {
-  const auto table = io::read_numeric_table(outlets, io::TableHeader::required);
+  const auto table = core::read_numeric_table(outlets, core::TableHeader::required);
   const auto t = table.column("time"), p = table.column("pressure_outlet");
   const auto q = table.column("flux_outlet"), pd = table.column("distal_pressure_outlet");
   const double omega = kTwoPi / period, end = t.back();
@@ -89,7 +90,7 @@ void run_frequency(const Context& ctx, Frequency& f) {
   if (rank == 0) fit_pressure(dir / "outlets.csv", period, f);
   for (double* x :
        {&f.amplitude_error, &f.phase_error, &f.mean_error, &f.law_residual, &f.amplitude, &f.phase})
-    MPI_Bcast(x, 1, MPI_DOUBLE, 0, ctx.comm);
+    core::Comm(ctx.comm).broadcast(*x);
 }
 
 struct SweepPoint {
@@ -133,7 +134,7 @@ void run_sweep_point(const Context& ctx, SweepPoint& s) {
   int rank = 0;
   MPI_Comm_rank(ctx.comm, &rank);
   if (rank == 0) {
-    const auto table = io::read_numeric_table(dir / "log.csv", io::TableHeader::required);
+    const auto table = core::read_numeric_table(dir / "log.csv", core::TableHeader::required);
     const auto qa = table.column("flux_xmax"), qin = table.column("flux_xmin");
     double lo = qa[0], hi = qa[0], share = 0;
     for (std::size_t k = 0; k < qa.size(); ++k) {
@@ -147,7 +148,7 @@ void run_sweep_point(const Context& ctx, SweepPoint& s) {
     s.roughness /= hi - lo;
     s.split = share;
   }
-  for (double* x : {&s.roughness, &s.split}) MPI_Bcast(x, 1, MPI_DOUBLE, 0, ctx.comm);
+  for (double* x : {&s.roughness, &s.split}) core::Comm(ctx.comm).broadcast(*x);
 }
 
 void run_case(const Context& ctx, Report& report) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/comm.hpp"
 #include "flow/convection_scheme.hpp"
 #include "flow/initial_condition.hpp"
 #include "flow/operators.hpp"
@@ -23,24 +24,24 @@ namespace valsalva::validation {
 namespace {
 
 struct TgvMesh {
-  flow::Mesh mesh;
-  flow::DualMetrics metrics;
-  flow::LocalMesh local;
+  mesh::Mesh mesh;
+  mesh::DualMetrics metrics;
+  mesh::LocalMesh local;
 };
 
 TgvMesh build_mesh(const TgvSpec& spec, MPI_Comm comm) {
   const double two_pi = 2 * std::numbers::pi;
   const double h = two_pi / spec.n;
-  io::BoxSpec box;
+  mesh::BoxSpec box;
   box.cell_type = spec.cell_type;
   box.perturbation = spec.perturbation;
   box.cells = {spec.n, spec.n, spec.nz};
   box.length = Eigen::Vector3d(two_pi, two_pi, spec.nz * h);
   box.periodic = {true, true, true};
   TgvMesh m;
-  m.mesh = io::generate_box(box);
-  m.metrics = flow::compute_dual_metrics(m.mesh);
-  m.local = flow::distribute(m.mesh, m.metrics, comm, {2, "metis"});
+  m.mesh = mesh::generate_box(box);
+  m.metrics = mesh::compute_dual_metrics(m.mesh);
+  m.local = mesh::distribute(m.mesh, m.metrics, comm, {2, "metis"});
   return m;
 }
 
@@ -48,7 +49,7 @@ flow::TaylorGreen exact_solution(const TgvSpec& spec) {
   return {1.0, 1.0, 1.0 / spec.reynolds, 1.0};  // U0 = L = rho = 1, nu = 1/Re (0 if Re = inf)
 }
 
-double mean_kinetic_energy(const flow::LocalMesh& local, const flow::VectorField& u) {
+double mean_kinetic_energy(const mesh::LocalMesh& local, const flow::VectorField& u) {
   double e = 0, v = 0;
   for (int i = 0; i < local.num_owned; ++i) {
     e += 0.5 * local.volume[i] * u[i].squaredNorm();
@@ -58,7 +59,7 @@ double mean_kinetic_energy(const flow::LocalMesh& local, const flow::VectorField
 }
 
 // sqrt(sum V |a - b|^2 / sum V) over owned nodes.
-double l2_difference(const flow::LocalMesh& local, const flow::VectorField& a,
+double l2_difference(const mesh::LocalMesh& local, const flow::VectorField& a,
                      const flow::VectorField& b) {
   double e = 0, v = 0;
   for (int i = 0; i < local.num_owned; ++i) {
@@ -140,7 +141,7 @@ TgvResult run_taylor_green(const TgvSpec& spec, MPI_Comm comm,
                                      level_overrides(spec, r.dt), run_dir, comm, measure);
   r.max_poisson_iterations = result.summary.max_poisson_iterations;
   r.max_divergence = result.summary.max_divergence;
-  r.wall_seconds = flow::Comm(comm).max(
+  r.wall_seconds = core::Comm(comm).max(
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return r;
 }

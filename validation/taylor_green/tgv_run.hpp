@@ -19,7 +19,7 @@
 namespace valsalva::validation {
 
 struct TgvSpec {
-  std::string cell_type = "hexa";  // io::BoxSpec cell types
+  std::string cell_type = "hexa";  // mesh::BoxSpec cell types
   double perturbation = 0.0;       // fraction of h
   int n = 16;                      // cells per 2 pi
   int nz = 3;                      // cells across the slab

@@ -10,6 +10,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "core/comm.hpp"
 #include "core/numeric_table.hpp"
 #include "flow/run_diagnostics.hpp"
 #include "run/simulation.hpp"
@@ -25,7 +26,7 @@ double cpu_seconds() {
 }
 }  // namespace
 
-flow::FlowState tgv_re1600_initial_state(const flow::LocalMesh& local) {
+flow::FlowState tgv_re1600_initial_state(const mesh::LocalMesh& local) {
   flow::FlowState state;
   for (const auto& x : local.position) {
     state.velocity.emplace_back(std::sin(x.x()) * std::cos(x.y()) * std::cos(x.z()),
@@ -36,7 +37,7 @@ flow::FlowState tgv_re1600_initial_state(const flow::LocalMesh& local) {
   return state;
 }
 
-double tgv_mean_energy(const flow::LocalMesh& local, const flow::VectorField& u) {
+double tgv_mean_energy(const mesh::LocalMesh& local, const flow::VectorField& u) {
   double e = 0;
   for (int i = 0; i < local.num_owned; ++i) e += 0.5 * local.volume[i] * u[i].squaredNorm();
   return local.comm.sum(e) / std::pow(2 * std::numbers::pi, 3);
@@ -94,14 +95,14 @@ TgvLesResult run_tgv_les(const TgvLesSpec& spec, int n, MPI_Comm comm,
       result.summary.steps > 0
           ? double(result.summary.total_poisson_iterations) / double(result.summary.steps)
           : 0.0;
-  r.wall_seconds = flow::Comm(comm).max(
+  r.wall_seconds = core::Comm(comm).max(
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count());
   return r;
 }
 
 std::vector<std::array<double, 3>> read_tgv_reference(const std::filesystem::path& file) {
   // time, energy, dissipation rate, enstrophy; blank-separated under '#' comments.
-  const auto table = io::read_numeric_table(file, io::TableHeader::none, 4, true);
+  const auto table = core::read_numeric_table(file, core::TableHeader::none, 4, true);
   std::vector<std::array<double, 3>> rows;
   for (const auto& r : table.rows) rows.push_back({r[0], r[1], r[2]});
   if (rows.size() < 2) throw std::runtime_error("no data rows in " + file.string());

@@ -21,9 +21,9 @@
 namespace valsalva::validation {
 
 // The initial velocity and pressure above at every local node.
-flow::FlowState tgv_re1600_initial_state(const flow::LocalMesh& local);
+flow::FlowState tgv_re1600_initial_state(const mesh::LocalMesh& local);
 // Collective: mean kinetic energy sum V |u|^2 / 2 over owned nodes / (2 pi)^3.
-double tgv_mean_energy(const flow::LocalMesh& local, const flow::VectorField& u);
+double tgv_mean_energy(const mesh::LocalMesh& local, const flow::VectorField& u);
 
 struct TgvLesSpec {
   std::string scheme = "central4";  // flow::make_convection_scheme

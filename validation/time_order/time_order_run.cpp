@@ -22,7 +22,7 @@ std::string TimeVariant::name() const {
 TimeOrderRun run_time_order(const TimeOrderRunSpec& spec, const std::filesystem::path& run_dir,
                             MPI_Comm comm) {
   const double dt = spec.t_end / spec.steps;
-  const auto scene = io::load_scene(
+  const auto scene = scene::load_scene(
       case_scene("time_order", "time_order.toml"),
       {fmt::format("mesh.box.cells=[{0}, {0}, {0}]", spec.cells),
        fmt::format("time.end={:.17g}", spec.t_end), fmt::format("time.dt={:.17g}", dt),
@@ -57,7 +57,7 @@ double velocity_l2_difference(const TimeOrderRun& a, const TimeOrderRun* b, MPI_
     volume += a.volume[j];
     sum += a.volume[j] * (b ? (a.velocity[j] - b->velocity[j]) : a.velocity[j]).squaredNorm();
   }
-  const flow::Comm c(comm);
+  const core::Comm c(comm);
   return std::sqrt(c.sum(sum) / c.sum(volume));
 }
 

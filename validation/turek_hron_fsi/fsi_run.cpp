@@ -75,8 +75,8 @@ class BarDensity {
   const std::vector<Vec>& markers() const { return markers_; }
 
  private:
-  const flow::LocalMesh& run_local_;
-  flow::LocalMesh local_;
+  const mesh::LocalMesh& run_local_;
+  mesh::LocalMesh local_;
   ibm::DiracTransfer transfer_;
   double depth_;
   Eigen::Matrix3Xd x_;

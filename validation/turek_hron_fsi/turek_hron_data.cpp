@@ -15,7 +15,7 @@ namespace {
 
 // A number of field i of a row; NaN for an empty field (or "rigid") when `optional`. Errors name
 // FILE:LINE:COLUMN and the column (core/numeric_table.hpp).
-double parse(const io::TableLines& lines, const std::vector<io::TableField>& f, std::size_t i,
+double parse(const core::TableLines& lines, const std::vector<core::TableField>& f, std::size_t i,
              const std::string& what, bool optional = false) {
   if (i >= f.size())
     throw lines.error(1, fmt::format("{} fields, no column {} ({})", f.size(), i + 1, what));
@@ -28,9 +28,9 @@ double parse(const io::TableLines& lines, const std::vector<io::TableField>& f, 
 // line of unique column names.
 template <class Row>
 void for_rows(const std::filesystem::path& file, const std::string& case_name, Row row) {
-  io::TableFormat format;
+  core::TableFormat format;
   format.quoted = true;
-  io::TableLines lines(file, format);
+  core::TableLines lines(file, format);
   if (!lines.next()) throw std::runtime_error(fmt::format("{}: no header line", file.string()));
   const auto width = lines.header(lines.fields()).size();
   while (lines.next()) {
@@ -48,7 +48,7 @@ TurekHronParameters read_turek_hron_parameters(const std::filesystem::path& dir,
   const auto file = dir / "turek_hron_parameters.csv";
   std::optional<TurekHronParameters> found;
   // case,rho_s,nu_s,mu_s,E_s,rho_f,nu_f,Ubar,Re,g,type
-  for_rows(file, case_name, [&](const io::TableLines& l, const std::vector<io::TableField>& f) {
+  for_rows(file, case_name, [&](const core::TableLines& l, const std::vector<core::TableField>& f) {
     TurekHronParameters p;
     p.rho_s = parse(l, f, 1, "rho_s", true);
     p.nu_s = parse(l, f, 2, "nu_s", true);
@@ -71,7 +71,7 @@ TurekHronReference read_turek_hron_reference(const std::filesystem::path& dir,
   const auto file = dir / "turek_hron_reference_values.csv";
   std::optional<TurekHronReference> found;
   // case,quantity,mean,amplitude,frequency_Hz,set,note
-  for_rows(file, case_name, [&](const io::TableLines& l, const std::vector<io::TableField>& f) {
+  for_rows(file, case_name, [&](const core::TableLines& l, const std::vector<core::TableField>& f) {
     if (f[1].text != quantity || f[5].text != set) return;
     found = TurekHronReference{parse(l, f, 2, "mean"), parse(l, f, 3, "amplitude", true),
                                parse(l, f, 4, "frequency_Hz", true)};

@@ -18,6 +18,7 @@
 #include <cmath>
 
 #include "analysis/valve_cycles.hpp"
+#include "core/comm.hpp"
 #include "core/numeric_table.hpp"
 #include "io/waveform_table.hpp"
 #include "run/data_dir.hpp"
@@ -83,11 +84,11 @@ struct Samples {
 };
 
 Samples read_valve_csv(const fs::path& file) {
-  io::TableFormat format;
-  format.header = io::TableHeader::required;
+  core::TableFormat format;
+  format.header = core::TableHeader::required;
   // nan: no contact pair within the contact search distance (valve/valve_monitor.cpp).
   format.maskable = [](const std::string& column) { return column == "min_gap"; };
-  const auto table = io::read_numeric_table(file, format);
+  const auto table = core::read_numeric_table(file, format);
   Samples s{table.column("time"), table.column("inlet_flow"), table.column("outlet_flow"), {}, 0};
   const auto tpg = table.column("tpg_mmHg"), ratio = table.column("opening_ratio"),
              stress = table.column("max_von_mises");
@@ -175,7 +176,7 @@ void run_case(const Context& ctx, Report& report) {
     cycles = complete_cycles(s);
     write_cycles(ctx.out_dir / "cycles.csv", cycles);
   }
-  MPI_Bcast(values, 5, MPI_DOUBLE, 0, ctx.comm);
+  core::Comm(ctx.comm).broadcast(std::span<double>(values, 5));
   // The imbalance is the Poisson tolerance's (1e-8 relative) on a flux of the peak's order.
   report.add("max |inlet - outlet flow| / peak flow", values[0], 0, 1e-6, Check::at_most);
   // The inlet interpolates the same table linearly: round-off only.
@@ -184,10 +185,10 @@ void run_case(const Context& ctx, Report& report) {
   report.add("valve.csv samples", values[3], ctx.quick ? 50 : 1000, 0, Check::at_least);
   if (ctx.quick && ctx.option("from_run").empty()) return;
   int count = static_cast<int>(cycles.size());
-  MPI_Bcast(&count, 1, MPI_INT, 0, ctx.comm);
+  core::Comm(ctx.comm).broadcast(count);
   if (rank != 0) cycles.resize(static_cast<std::size_t>(count));
-  MPI_Bcast(cycles.data(), count * static_cast<int>(sizeof(analysis::CycleSummary)), MPI_BYTE, 0,
-            ctx.comm);
+  VALSALVA_MPI(MPI_Bcast(cycles.data(), count * static_cast<int>(sizeof(analysis::CycleSummary)),
+                         MPI_BYTE, 0, ctx.comm));
   cycle_metrics(ctx, cycles, report);
 }
 

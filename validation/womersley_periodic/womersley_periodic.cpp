@@ -35,6 +35,7 @@
 #include <numbers>
 #include <set>
 
+#include "core/comm.hpp"
 #include "core/numeric_table.hpp"
 #include "flow/womersley.hpp"
 #include "run/simulation.hpp"
@@ -121,11 +122,11 @@ std::vector<std::string> overrides(const Run& run, const flow::Womersley& exact,
 // The flow-rate drive's records: sections.csv and log.csv of the run (rank 0).
 void read_drive(const std::filesystem::path& dir, const flow::Womersley& exact, Run& run) {
   const auto q = [&](double t) { return exact.mean * (1 + std::sin(2 * std::numbers::pi * t)); };
-  const auto sections = io::read_numeric_table(dir / "sections.csv", io::TableHeader::required);
+  const auto sections = core::read_numeric_table(dir / "sections.csv", core::TableHeader::required);
   const auto time = sections.column("time"), flux = sections.column("cut_flux");
   for (std::size_t k = 0; k < time.size(); ++k)
     if (time[k] > 0) run.held = std::max(run.held, std::abs(flux[k] - q(time[k])) / exact.mean);
-  const auto log = io::read_numeric_table(dir / "log.csv", io::TableHeader::required);
+  const auto log = core::read_numeric_table(dir / "log.csv", core::TableHeader::required);
   const auto t = log.column("time"), dt = log.column("dt"), force = log.column("force_z");
   double peak = 0;
   for (int k = 0; k < 1000; ++k)
@@ -196,7 +197,7 @@ void run_one(const Context& ctx, Run& run, const flow::Womersley& exact) {
   int rank = 0;
   MPI_Comm_rank(ctx.comm, &rank);
   if (run.flow_rate && rank == 0) read_drive(dir, exact, run);
-  for (double* x : {&run.held, &run.force_error}) MPI_Bcast(x, 1, MPI_DOUBLE, 0, ctx.comm);
+  for (double* x : {&run.held, &run.force_error}) core::Comm(ctx.comm).broadcast(*x);
   run.steps = result.summary.steps;
   run.max_divergence = result.summary.max_divergence;
   run.wall = MPI_Wtime() - t0;

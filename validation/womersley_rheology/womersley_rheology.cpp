@@ -23,6 +23,7 @@
 #include <numbers>
 
 #include "analysis/run_analysis.hpp"
+#include "core/comm.hpp"
 #include "core/numeric_table.hpp"
 #include "flow/womersley.hpp"
 #include "run/simulation.hpp"
@@ -153,7 +154,7 @@ void run_fluid(const Context& ctx, const Fluid& fluid, int n, const flow::Womers
       s[0] += wss->areas()[0][i] * wss->last_tau()[0][i].z();
       s[1] += wss->areas()[0][i];
     }
-    MPI_Allreduce(MPI_IN_PLACE, s, 2, MPI_DOUBLE, MPI_SUM, ctx.comm);
+    core::Comm(ctx.comm).sum_in_place(std::span<double>(s, 2));
     res.time.push_back(sim.state().time);
     res.tau.push_back(s[0] / s[1]);
   };
@@ -166,9 +167,9 @@ void run_fluid(const Context& ctx, const Fluid& fluid, int n, const flow::Womers
       s[0] += area[i] * tawss[i], s[1] += area[i] * osi[i], s[2] += area[i];
       lo = std::min(lo, osi[i]), hi = std::max(hi, osi[i]);
     }
-    MPI_Allreduce(MPI_IN_PLACE, s, 3, MPI_DOUBLE, MPI_SUM, ctx.comm);
-    MPI_Allreduce(MPI_IN_PLACE, &lo, 1, MPI_DOUBLE, MPI_MIN, ctx.comm);
-    MPI_Allreduce(MPI_IN_PLACE, &hi, 1, MPI_DOUBLE, MPI_MAX, ctx.comm);
+    core::Comm(ctx.comm).sum_in_place(std::span<double>(s, 3));
+    lo = core::Comm(ctx.comm).min(lo);
+    hi = core::Comm(ctx.comm).max(hi);
     res.tawss = s[0] / s[2], res.osi = s[1] / s[2], res.osi_min = lo, res.osi_max = hi;
     res.nodes = sim.local().global_nodes;
   };
@@ -180,17 +181,13 @@ void run_fluid(const Context& ctx, const Fluid& fluid, int n, const flow::Womers
   // The flux of [section.mid] after every step (sections.csv, rank 0; the same on every rank).
   int rank = 0;
   MPI_Comm_rank(ctx.comm, &rank);
-  int count = 0;
   if (rank == 0) {
-    const auto table = io::read_numeric_table(dir / "sections.csv", io::TableHeader::required);
+    const auto table = core::read_numeric_table(dir / "sections.csv", core::TableHeader::required);
     const auto time = table.column("time"), flux = table.column("mid_flux");
     res.q.clear();
     for (std::size_t k = 1; k < time.size(); ++k) res.q.push_back(flux[k]);  // after each step
-    count = static_cast<int>(res.q.size());
   }
-  MPI_Bcast(&count, 1, MPI_INT, 0, ctx.comm);
-  res.q.resize(static_cast<std::size_t>(count));
-  MPI_Bcast(res.q.data(), count, MPI_DOUBLE, 0, ctx.comm);
+  core::Comm(ctx.comm).broadcast(res.q);
   if (res.q.size() != res.time.size())
     throw std::runtime_error(fmt::format("womersley_rheology: {} fluxes in sections.csv, {} steps",
                                          res.q.size(), res.time.size()));

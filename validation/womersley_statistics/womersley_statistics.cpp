@@ -1,7 +1,7 @@
 // The analysis chain of a run checked on a flow whose statistics are known exactly: purely
 // oscillatory Womersley flow (Womersley, J. Physiol. 127, 1955; flow/womersley.hpp) at Wo = 4 in
-// a rigid pipe (Gmsh tetrahedra), the exact profile imposed at both ends, run through flow::RunLoop
-// with the scene-level analysis (io::RunAnalysis: phase statistics, wall shear stress, probes)
+// a rigid pipe (Gmsh tetrahedra), the exact profile imposed at both ends, run through run::RunLoop
+// with the scene-level analysis (analysis::RunAnalysis: phase statistics, wall shear stress, probes)
 // exactly as `valsalva run` does.
 //   1. Phase statistics: 8 bins over 2 cycles. The phase mean must equal the analytic profile
 //      sampled at the same instants (an accumulator fed the exact field at the same steps), and
@@ -25,7 +25,8 @@
 
 #include "analysis/piv_compare.hpp"
 #include "analysis/run_analysis.hpp"
-#include "flow/run_loop.hpp"
+#include "core/comm.hpp"
+#include "run/run_loop.hpp"
 #include "flow/womersley.hpp"
 #include "io/xdmf_writer.hpp"
 #include "mesh/dual_metrics.hpp"
@@ -69,9 +70,9 @@ struct Level {
 void run_level(const Context& ctx, Level& level) {
   const double size = kRadius / level.resolution;
   const auto dir = ctx.out_dir / fmt::format("level_{:g}", level.resolution);
-  const auto mesh = io::generate_pipe_mesh(kRadius, kLength, size);
-  const auto metrics = flow::compute_dual_metrics(mesh);
-  const auto local = flow::distribute(mesh, metrics, ctx.comm);
+  const auto mesh = mesh::generate_pipe_mesh(kRadius, kLength, size);
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const auto local = mesh::distribute(mesh, metrics, ctx.comm);
   if (local.comm.root()) std::filesystem::create_directories(dir);
   local.comm.barrier();
   const auto w = exact();
@@ -79,7 +80,7 @@ void run_level(const Context& ctx, Level& level) {
   for (int k = 0; k < 1000; ++k)
     u_peak = std::max(u_peak, std::abs(w.velocity(0, k * kPeriod / 1000)));
 
-  flow::RunOptions o;
+  scene::RunOptions o;
   o.projection.density = kRho;
   o.projection.viscosity = kNu;
   o.projection.poisson.tolerance = 1e-10;
@@ -99,19 +100,19 @@ void run_level(const Context& ctx, Level& level) {
   o.boundary = {inlet, outlet, flow::boundary_spec("wall", flow::BoundaryType::wall)};
 
   // Statistics over cycles 1 and 2 (the start-up from the exact field is one period).
-  io::AnalysisOptions a;
-  io::StatisticsOptions s;
+  analysis::AnalysisOptions a;
+  analysis::StatisticsOptions s;
   s.phase = {kPeriod, kBins, kPeriod, kRho, "phase"};
   a.statistics = {s};
   a.wall_shear.patches = {"wall"};
   a.wall_shear.start_time = kPeriod;
   a.probes.points = {{"centre", Eigen::Vector3d(0, 0, kLength / 2)}};
-  io::RunAnalysis analysis(mesh, metrics, local, a, kRho, kRho * kNu, dir, false);
+  analysis::RunAnalysis analysis(mesh, metrics, local, a, kRho, kRho * kNu, dir, false);
   auto exact_options = s.phase;
   exact_options.name = "exact";
-  io::PhaseStatistics exact_stats(local, exact_options, io::all_owned_nodes(local));
+  analysis::PhaseStatistics exact_stats(local, exact_options, analysis::all_owned_nodes(local));
 
-  flow::RunLoop loop(mesh, metrics, local, o);
+  run::RunLoop loop(mesh, metrics, local, o);
   flow::FlowState start;  // the analytic field at t = 0
   for (int j = 0; j < local.num_local(); ++j) {
     const auto& x = local.position[j];
@@ -120,7 +121,7 @@ void run_level(const Context& ctx, Level& level) {
   }
   loop.resume(start, 0);
   flow::VectorField u_exact(local.num_local(), Eigen::Vector3d::Zero());
-  flow::RunHooks hooks;
+  run::RunHooks hooks;
   hooks.after_step = [&](const flow::FlowState& state, std::int64_t step) {
     analysis.sample(state, step);
     for (int j = 0; j < local.num_local(); ++j) {
@@ -196,7 +197,7 @@ void run_level(const Context& ctx, Level& level) {
   std::size_t masked = 0, used = 0;
   if (comm.root()) {
     const double c30 = std::cos(M_PI / 6), s30 = std::sin(M_PI / 6);
-    const io::PivPlane plane(Eigen::Vector3d(0, 0, kLength / 2), Eigen::Vector3d(c30, s30, 0),
+    const analysis::PivPlane plane(Eigen::Vector3d(0, 0, kLength / 2), Eigen::Vector3d(c30, s30, 0),
                              Eigen::Vector3d(0, 0, 1));
     std::mt19937 rng(1388);
     std::normal_distribution<double> noise(0.0, kPivNoise * u_peak);
@@ -222,19 +223,19 @@ void run_level(const Context& ctx, Level& level) {
         }
     }
     piv.close(), clean.close();
-    const auto data = io::read_piv(dir / "piv_synthetic.csv");
-    const auto data_exact = io::read_piv(dir / "piv_exact.csv");
-    const io::PointLocator locator(mesh);
+    const auto data = analysis::read_piv(dir / "piv_synthetic.csv");
+    const auto data_exact = analysis::read_piv(dir / "piv_exact.csv");
+    const mesh::PointLocator locator(mesh);
     double su = 0, sv = 0, eu = 0, ev = 0;
     for (int b = 0; b < kBins; ++b) {
       const auto file = dir / "statistics" / fmt::format("phase_{:06d}.h5", b);
-      io::SimulationStatistics sim;
+      analysis::SimulationStatistics sim;
       sim.mean_velocity = io::read_nodal_field(file, "mean_velocity");
       const auto& frame = data.frames[std::size_t(b)];
-      const io::PivSampler sampler(locator, plane, frame);
-      const auto c = io::compare_frame(frame, sampler, sim);
+      const analysis::PivSampler sampler(locator, plane, frame);
+      const auto c = analysis::compare_frame(frame, sampler, sim);
       su += c.u.rmse * c.u.rmse, sv += c.v.rmse * c.v.rmse;
-      const auto e = io::compare_frame(data_exact.frames[std::size_t(b)], sampler, sim);
+      const auto e = analysis::compare_frame(data_exact.frames[std::size_t(b)], sampler, sim);
       eu += e.u.rmse * e.u.rmse, ev += e.v.rmse * e.v.rmse;
       masked += c.masked, used += c.u.points;
     }
@@ -253,10 +254,10 @@ void run_level(const Context& ctx, Level& level) {
   // noise estimate's own scatter (1 / sqrt(2 N) = 1.3 % at N = 3008).
   level.piv_noise_tolerance =
       0.02 + 3 * std::max(sim_u, sim_v) / (sigma * std::sqrt(std::max<double>(1, double(used))));
-  MPI_Bcast(&level.piv_noise_u, 1, MPI_DOUBLE, 0, ctx.comm);
-  MPI_Bcast(&level.piv_noise_v, 1, MPI_DOUBLE, 0, ctx.comm);
-  MPI_Bcast(&level.piv_sim_error, 1, MPI_DOUBLE, 0, ctx.comm);
-  MPI_Bcast(&level.piv_noise_tolerance, 1, MPI_DOUBLE, 0, ctx.comm);
+  core::Comm(ctx.comm).broadcast(level.piv_noise_u);
+  core::Comm(ctx.comm).broadcast(level.piv_noise_v);
+  core::Comm(ctx.comm).broadcast(level.piv_sim_error);
+  core::Comm(ctx.comm).broadcast(level.piv_noise_tolerance);
   if (comm.root())
     fmt::print(
         "womersley_statistics: {} nodes, {} steps, u_peak {:.4g} m/s; phase mean error "

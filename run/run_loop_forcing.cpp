@@ -4,21 +4,21 @@
 
 #include <algorithm>
 
-#include "flow/run_loop.hpp"
+#include "run/run_loop.hpp"
 
-namespace valsalva::flow {
+namespace valsalva::run {
 
 void RunLoop::install_forcing() {
   const auto& spec = options_.forcing;
-  if (spec.type == ForcingSpec::Type::none) {
+  if (spec.type == flow::ForcingSpec::Type::none) {
     if (options_.coupling.body_force) solver_.set_body_force(options_.coupling.body_force);
     return;
   }
-  prescribed_force_ = std::make_shared<VectorField>(forcing_density(local_, spec));
-  if (spec.type == ForcingSpec::Type::flow_rate) {
+  prescribed_force_ = std::make_shared<flow::VectorField>(flow::forcing_density(local_, spec));
+  if (spec.type == flow::ForcingSpec::Type::flow_rate) {
     // The controller sets the flux of a domain closed by walls and periodic pairs.
     for (const auto& b : options_.boundary)
-      if (b.type != BoundaryType::wall && b.type != BoundaryType::slip)
+      if (b.type != flow::BoundaryType::wall && b.type != flow::BoundaryType::slip)
         throw RunError(fmt::format("forcing.type = flow_rate: boundary patch '{}' is not a wall "
                                    "or slip wall; the flow-rate control drives domains closed by "
                                    "walls and periodic pairs, whose flux nothing else sets",
@@ -29,16 +29,16 @@ void RunLoop::install_forcing() {
                      "forcing.section");
     try {
       flow_rate_control_ =
-          std::make_shared<FlowRateControl>(local_, boundary_.get(), spec, options_.section_flux);
+          std::make_shared<flow::FlowRateControl>(local_, boundary_.get(), spec, options_.section_flux);
     } catch (const std::invalid_argument& e) {
       throw RunError(e.what(), "forcing.section");
     }
   }
   // The stage's force: the field itself when it is constant (kolmogorov, a constant uniform
   // force), else the uniform value at the stage time or the controller's force of the step.
-  auto prescribed = [spec, field = std::shared_ptr<const VectorField>(prescribed_force_),
-                     control = flow_rate_control_](double t, VectorField& f) {
-    if (spec.type == ForcingSpec::Type::flow_rate)
+  auto prescribed = [spec, field = std::shared_ptr<const flow::VectorField>(prescribed_force_),
+                     control = flow_rate_control_](double t, flow::VectorField& f) {
+    if (spec.type == flow::ForcingSpec::Type::flow_rate)
       std::fill(f.begin(), f.end(), Eigen::Vector3d(control->force() * control->direction()));
     else if (spec.time_dependent())
       std::fill(f.begin(), f.end(), spec.uniform_force(t));
@@ -46,8 +46,8 @@ void RunLoop::install_forcing() {
       f = *field;
   };
   solver_.set_body_force(
-      [prescribed, coupled = options_.coupling.body_force, own = std::make_shared<VectorField>()](
-          int stage, double t, const VectorField& u, VectorField& f) {
+      [prescribed, coupled = options_.coupling.body_force, own = std::make_shared<flow::VectorField>()](
+          int stage, double t, const flow::VectorField& u, flow::VectorField& f) {
         if (!coupled) {
           prescribed(t, f);
           return;
@@ -86,7 +86,7 @@ void RunLoop::restore_forcing_state(const std::vector<double>& saved) {
 std::string RunLoop::forcing_log_header() const {
   const auto type = options_.forcing.type;
   std::string h;
-  if (type == ForcingSpec::Type::uniform || type == ForcingSpec::Type::flow_rate)
+  if (type == flow::ForcingSpec::Type::uniform || type == flow::ForcingSpec::Type::flow_rate)
     h = ",force_x,force_y,force_z";
   if (flow_rate_control_) h += ",flow_rate_target";
   return h;
@@ -94,7 +94,7 @@ std::string RunLoop::forcing_log_header() const {
 
 std::string RunLoop::forcing_log_row() const {
   const auto type = options_.forcing.type;
-  if (type != ForcingSpec::Type::uniform && type != ForcingSpec::Type::flow_rate) return {};
+  if (type != flow::ForcingSpec::Type::uniform && type != flow::ForcingSpec::Type::flow_rate) return {};
   // + 0.0: no "-0" in the log for a component the direction does not have.
   const Eigen::Vector3d f =
       (flow_rate_control_
@@ -107,4 +107,4 @@ std::string RunLoop::forcing_log_row() const {
   return row;
 }
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::run

@@ -1,13 +1,13 @@
 // outlets.csv of the lumped outlets; see outlet_log.hpp.
-#include "flow/outlet_log.hpp"
+#include "run/outlet_log.hpp"
 
 #include <fmt/format.h>
 
 #include <stdexcept>
 
-namespace valsalva::flow {
+namespace valsalva::run {
 
-OutletLog::OutletLog(const std::filesystem::path& dir, const LumpedOutlets& outlets,
+OutletLog::OutletLog(const std::filesystem::path& dir, const flow::LumpedOutlets& outlets,
                      const std::vector<std::string>& patch_names, bool root, bool append)
     : outlets_(outlets) {
   if (!root || dir.empty()) return;
@@ -37,4 +37,4 @@ void OutletLog::write(std::int64_t step, double time) {
   file_ << row << "\n" << std::flush;
 }
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::run

@@ -1,5 +1,5 @@
 // The time loop of a flow run; see run_loop.hpp.
-#include "flow/run_loop.hpp"
+#include "run/run_loop.hpp"
 
 #include <fmt/format.h>
 
@@ -10,11 +10,11 @@
 #include <limits>
 #include <utility>
 
-#include "flow/outlet_log.hpp"
+#include "run/outlet_log.hpp"
 #include "flow/poisson_weights.hpp"
 #include "flow/womersley.hpp"
 
-namespace valsalva::flow {
+namespace valsalva::run {
 
 namespace {
 
@@ -26,19 +26,20 @@ double seconds(Clock::time_point a, Clock::time_point b) {
 
 }  // namespace
 
-std::vector<double> RunLoop::chosen_poisson_weights(const Mesh& mesh, const DualMetrics& metrics,
-                                                    const LocalMesh& local) const {
-  if (options_.poisson_weights == PoissonWeights::standard)
-    return poisson_weights(mesh, metrics, local);
+std::vector<double> RunLoop::chosen_poisson_weights(const mesh::Mesh& mesh,
+                                                    const mesh::DualMetrics& metrics,
+                                                    const mesh::LocalMesh& local) const {
+  if (options_.poisson_weights == scene::PoissonWeights::standard)
+    return flow::poisson_weights(mesh, metrics, local);
   try {
-    return slab_stiffness_weights(mesh, metrics, local);
+    return flow::slab_stiffness_weights(mesh, metrics, local);
   } catch (const std::invalid_argument& e) {
     throw RunError(std::string("poisson.weights = prism_slab: ") + e.what(), "poisson.weights");
   }
 }
 
-RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& local,
-                 RunOptions options, FieldSink sink)
+RunLoop::RunLoop(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+                 const mesh::LocalMesh& local, scene::RunOptions options, io::FieldSink sink)
     : local_(local),
       options_(std::move(options)),
       sink_(std::move(sink)),
@@ -48,23 +49,23 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
   state_.velocity.assign(n, Eigen::Vector3d::Zero());
   state_.pressure.assign(n, 0.0);
   if (ic.type == "taylor_green") {
-    const TaylorGreen tg{ic.velocity, ic.length, options_.projection.viscosity,
+    const flow::TaylorGreen tg{ic.velocity, ic.length, options_.projection.viscosity,
                          options_.projection.density};
     for (int j = 0; j < n; ++j) {
       state_.velocity[j] = tg.velocity(local.position[j], 0.0);
       state_.pressure[j] = tg.pressure(local.position[j], 0.0);
     }
   } else if (ic.type == "taylor_green_3d") {
-    const TaylorGreen3d tg{ic.velocity, ic.length, options_.projection.density};
+    const flow::TaylorGreen3d tg{ic.velocity, ic.length, options_.projection.density};
     for (int j = 0; j < n; ++j) {
       state_.velocity[j] = tg.velocity(local.position[j]);
       state_.pressure[j] = tg.pressure(local.position[j]);
     }
   } else if (ic.type == "cyclic_sines") {
     for (int j = 0; j < n; ++j)
-      state_.velocity[j] = cyclic_sines(local.position[j], ic.velocity, ic.length);
+      state_.velocity[j] = flow::cyclic_sines(local.position[j], ic.velocity, ic.length);
   } else if (ic.type == "womersley") {
-    const auto exact = Womersley::from_sine(ic.radius, options_.projection.viscosity, ic.flow_rate,
+    const auto exact = flow::Womersley::from_sine(ic.radius, options_.projection.viscosity, ic.flow_rate,
                                             ic.amplitude, ic.period, ic.phase);
     const Eigen::Vector3d axis = ic.axis.normalized();
     const double g0 = exact.pressure_gradient(0.0);
@@ -75,7 +76,7 @@ RunLoop::RunLoop(const Mesh& mesh, const DualMetrics& metrics, const LocalMesh& 
       if (ic.pressure_gradient) state_.pressure[j] = -options_.projection.density * g0 * s;
     }
   } else if (ic.type == "plane_poiseuille") {
-    for (int j = 0; j < n; ++j) state_.velocity[j] = plane_poiseuille(local.position[j], ic);
+    for (int j = 0; j < n; ++j) state_.velocity[j] = flow::plane_poiseuille(local.position[j], ic);
   } else if (ic.type != "rest") {
     throw RunError("flow run: unknown initial.type '" + ic.type +
                    "' (accepted: rest, taylor_green, taylor_green_3d, cyclic_sines, womersley, "
@@ -96,7 +97,7 @@ void RunLoop::impose_initial_boundary_values() {
   last_good_ = state_;
 }
 
-void RunLoop::set_initial_velocity(VectorField velocity) {
+void RunLoop::set_initial_velocity(flow::VectorField velocity) {
   if (velocity.size() != static_cast<std::size_t>(local_.num_local()))
     throw RunError(fmt::format("flow run: initial velocity of {} nodes, the local mesh has {}",
                                velocity.size(), local_.num_local()));
@@ -104,8 +105,8 @@ void RunLoop::set_initial_velocity(VectorField velocity) {
   impose_initial_boundary_values();
 }
 
-void RunLoop::resume(FlowState state, std::int64_t step, const ScalarField& pressure_increment,
-                     const ScalarField& subgrid_viscosity, const EdgeField& face_flux,
+void RunLoop::resume(flow::FlowState state, std::int64_t step, const flow::ScalarField& pressure_increment,
+                     const flow::ScalarField& subgrid_viscosity, const flow::EdgeField& face_flux,
                      const std::vector<double>& lumped_outlets) {
   const auto n = static_cast<std::size_t>(local_.num_local());
   if (state.velocity.size() != n || state.pressure.size() != n)
@@ -130,12 +131,12 @@ void RunLoop::resume(FlowState state, std::int64_t step, const ScalarField& pres
 }
 
 // Boundary conditions when the mesh has non-periodic patches (or the options name some).
-ProjectionOptions& RunLoop::attach_boundary() {
+flow::ProjectionOptions& RunLoop::attach_boundary() {
   auto& p = options_.projection;
   const auto faces = static_cast<std::int64_t>(local_.boundary.size());
   if (local_.comm.sum(faces) == 0 && options_.boundary.empty()) return p;
   try {
-    boundary_ = std::make_shared<BoundaryConditions>(local_, options_.boundary, p.viscosity);
+    boundary_ = std::make_shared<flow::BoundaryConditions>(local_, options_.boundary, p.viscosity);
   } catch (const std::invalid_argument& e) {
     throw RunError(std::string("flow run: ") + e.what(), "boundary");
   }
@@ -151,15 +152,15 @@ double RunLoop::choose_dt(double remaining) {
   // a law that has one at every node (flow/viscosity_model.hpp, viscosity_cap). LES: nu + max
   // nu_sgs of the previous step's last stage bounds the viscous rate.
   const auto& rheology = options_.projection.rheology;
-  if (const double cap = viscosity_cap(rheology); cap > 0) {
+  if (const double cap = flow::viscosity_cap(rheology); cap > 0) {
     const double nu = cap / options_.projection.density + solver_.max_subgrid_viscosity();
-    rates_ = stability_rates(local_, solver_.laplacian_weights(), nu, state_.velocity, scratch_);
+    rates_ = flow::stability_rates(local_, solver_.laplacian_weights(), nu, state_.velocity, scratch_);
   } else if (solver_.variable_viscosity()) {
-    rates_ = stability_rates(local_, solver_.laplacian_weights(),
+    rates_ = flow::stability_rates(local_, solver_.laplacian_weights(),
                              solver_.viscosity_field(state_.velocity), state_.velocity, scratch_);
   } else {
     const double nu = options_.projection.viscosity + solver_.max_subgrid_viscosity();
-    rates_ = stability_rates(local_, solver_.laplacian_weights(), nu, state_.velocity, scratch_);
+    rates_ = flow::stability_rates(local_, solver_.laplacian_weights(), nu, state_.velocity, scratch_);
   }
   const double limit = 1.0 / rates_.stability;  // +inf at rest without viscosity
   double dt = t.dt;
@@ -216,33 +217,33 @@ double RunLoop::choose_dt(double remaining) {
   return remaining < 2 * dt ? remaining / 2 : dt;
 }
 
-void RunLoop::write_fields(const std::string& basename, const FlowState& state) {
+void RunLoop::write_fields(const std::string& basename, const flow::FlowState& state) {
   if (!sink_) return;
   const auto& out = options_.output;
-  FieldSet set;
+  io::FieldSet set;
   set.state_velocity = &state.velocity;
   if (out.velocity) set.vectors.emplace_back("velocity", &state.velocity);
   if (out.pressure) set.scalars.emplace_back("pressure", &state.pressure);
   if (out.vorticity) {
-    gradient(local_, state.velocity, grad_);
-    vorticity(grad_, omega_);
+    flow::gradient(local_, state.velocity, grad_);
+    flow::vorticity(grad_, omega_);
     set.vectors.emplace_back("vorticity", &omega_);
   }
   if (out.q_criterion) {
-    if (!out.vorticity) gradient(local_, state.velocity, grad_);
-    q_criterion(grad_, q_);
+    if (!out.vorticity) flow::gradient(local_, state.velocity, grad_);
+    flow::q_criterion(grad_, q_);
     set.scalars.emplace_back("q_criterion", &q_);
   }
   sink_(basename, state.time, set);
 }
 
-void RunLoop::print_progress(const StepReport& report, double dt, double energy, double per_step,
+void RunLoop::print_progress(const flow::StepReport& report, double dt, double energy, double per_step,
                              double eta, const std::string& flux_text) const {
   const auto& out = options_.output;
   const double cfl = dt * rates_.convective, fourier = dt * rates_.viscous;
   // Node-steps per second over all ranks: the throughput a user compares between runs.
   const double rate = per_step > 0 ? double(local_.global_nodes) / per_step : 0.0;
-  if (out.progress == Progress::lines) {
+  if (out.progress == scene::Progress::lines) {
     fmt::print(
         "step {:>7} t {:.6e} s dt {:.3e} s CFL {:.3f} Fo {:.3f} max|div| {:.2e} 1/s "
         "KE {:.6e} J Poisson {} it {:.1e}{} wall/step {:.3e} s ({:.3g} node-steps/s) ETA {:.1f} "
@@ -250,7 +251,7 @@ void RunLoop::print_progress(const StepReport& report, double dt, double energy,
         step_, state_.time, dt, cfl, fourier, report.max_divergence, energy,
         report.poisson.iterations, report.poisson.relative_residual, flux_text, per_step, rate,
         eta);
-  } else if (out.progress == Progress::status) {
+  } else if (out.progress == scene::Progress::status) {
     std::string cycle;
     if (out.cycle_period > 0) {
       const double c = state_.time / out.cycle_period;
@@ -323,9 +324,9 @@ RunSummary RunLoop::run() {
   std::int64_t last_written = step_, last_logged = step_;
   auto last_log_time = Clock::now();
   RunSummary summary;
-  StepReport report;
+  flow::StepReport report;
   double dt = 0;
-  const double energy0 = kinetic_energy(local_, rho, state_.velocity);  // collective
+  const double energy0 = flow::kinetic_energy(local_, rho, state_.velocity);  // collective
   if (root && out.print)
     fmt::print("flow: t = {:.9g} s (step {}), kinetic energy {:.6e} J, running to t = {:.6g} s\n",
                state_.time, step_, energy0, t.end);
@@ -348,7 +349,7 @@ RunSummary RunLoop::run() {
       report = solver_.step(state_, dt);
       if (flow_rate_control_) {
         // The flux through the section held at its target (flow/flow_rate_control.hpp).
-        EdgeField flux = solver_.face_flux();
+        flow::EdgeField flux = solver_.face_flux();
         flow_rate_control_->correct(state_.velocity, flux, dt, rho, state_.time);
         solver_.set_face_flux(flux, state_.velocity);
       }
@@ -357,13 +358,13 @@ RunSummary RunLoop::run() {
     } catch (const std::exception& e) {
       ++step_;
       const auto bad =
-          find_bad_state(local_, state_.velocity, state_.pressure, options_.velocity_limit);
+          flow::find_bad_state(local_, state_.velocity, state_.pressure, options_.velocity_limit);
       fail(bad.empty() ? std::string(e.what()) : bad + " (" + e.what() + ")");
     }
     ++step_;
     if (hooks_.modify_velocity) hooks_.modify_velocity(state_, step_);
     if (auto bad =
-            find_bad_state(local_, state_.velocity, state_.pressure, options_.velocity_limit);
+            flow::find_bad_state(local_, state_.velocity, state_.pressure, options_.velocity_limit);
         !bad.empty())
       fail(bad);
     summary.max_divergence = std::max(summary.max_divergence, report.max_divergence);
@@ -405,7 +406,7 @@ RunSummary RunLoop::run() {
       last_log_time = now;
       last_logged = step_;
       const double eta = per_step * std::max(0.0, t.end - state_.time) / dt;
-      const double energy = kinetic_energy(local_, rho, state_.velocity);
+      const double energy = flow::kinetic_energy(local_, rho, state_.velocity);
       const double cfl = dt * rates_.convective, fourier = dt * rates_.viscous;
       std::string flux_text, flux_csv;
       if (boundary_) {
@@ -459,20 +460,20 @@ RunSummary RunLoop::run() {
     }
   }
   if (fields && last_written != step_ && !summary.stopped) write_fields("fields", state_);
-  if (root && out.print && out.progress == Progress::status) fmt::print("\n");
+  if (root && out.print && out.progress == scene::Progress::status) fmt::print("\n");
 
   summary.steps = step_;
   summary.time = state_.time;
   summary.wall_seconds = local_.comm.max(seconds(start, Clock::now()));
   // The decaying vortex exp(-2 nu t / L^2) is the exact solution of a Newtonian fluid only: a
   // non-Newtonian one's viscosity varies in space and time, so no error is reported against it.
-  const bool newtonian = options_.projection.rheology.law == ViscosityLaw::newtonian;
+  const bool newtonian = options_.projection.rheology.law == flow::ViscosityLaw::newtonian;
   if (options_.initial.type == "taylor_green" && !summary.stopped && !newtonian && root &&
       out.print)
     fmt::print(
         "Taylor-Green velocity error: not reported, the decaying vortex is the exact solution of "
         "a Newtonian fluid only (flow.viscosity_model = {})\n",
-        viscosity_law_name(options_.projection.rheology.law));
+        flow::viscosity_law_name(options_.projection.rheology.law));
   if (options_.initial.type == "taylor_green" && !summary.stopped && newtonian) {
     const auto e = taylor_green_error();
     summary.taylor_green = e;
@@ -492,7 +493,7 @@ RunSummary RunLoop::run() {
 }
 
 TaylorGreenError RunLoop::taylor_green_error() const {
-  const TaylorGreen tg{options_.initial.velocity, options_.initial.length,
+  const flow::TaylorGreen tg{options_.initial.velocity, options_.initial.length,
                        options_.projection.viscosity, options_.projection.density};
   double volume = 0, e2 = 0, einf = 0, x2 = 0;
   for (int j = 0; j < local_.num_owned; ++j) {
@@ -508,4 +509,4 @@ TaylorGreenError RunLoop::taylor_green_error() const {
   return {std::sqrt(c.sum(e2) / volume), c.max(einf), std::sqrt(c.sum(x2) / volume)};
 }
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::run

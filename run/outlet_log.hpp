@@ -13,18 +13,18 @@
 
 #include "flow/lumped_outlets.hpp"
 
-namespace valsalva::flow {
+namespace valsalva::run {
 
 class OutletLog {
  public:
   // Opens <dir>/outlets.csv on the root rank (nothing elsewhere, or with an empty dir).
-  OutletLog(const std::filesystem::path& dir, const LumpedOutlets& outlets,
+  OutletLog(const std::filesystem::path& dir, const flow::LumpedOutlets& outlets,
             const std::vector<std::string>& patch_names, bool root, bool append);
   void write(std::int64_t step, double time);
 
  private:
-  const LumpedOutlets& outlets_;
+  const flow::LumpedOutlets& outlets_;
   std::ofstream file_;
 };
 
-}  // namespace valsalva::flow
+}  // namespace valsalva::run
