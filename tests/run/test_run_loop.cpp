@@ -12,7 +12,7 @@
 #include <numbers>
 #include <string>
 
-#include "field_test_utils.hpp"
+#include "tests/flow/field_test_utils.hpp"
 #include "flow/body_forcing.hpp"
 #include "run/run_loop.hpp"
 #include "scene/scene.hpp"
