@@ -1,9 +1,9 @@
 // Phase- or time-averaged statistics at points along a line segment
 // (analysis/phase_accumulator.hpp), for scenes that need profiles rather than fields: a diameter
-// across a pipe, the axis of a jet. The values at the points come from analysis::Probes (point location
-// in the replicated mesh, interpolation with the containing cell's shape functions, the same bits
-// at any rank count), so every rank holds the same accumulators; rank 0 saves them in checkpoints
-// and writes <dir>/<name>.csv with one row per (phase bin, point):
+// across a pipe, the axis of a jet. The values at the points come from analysis::Probes (point
+// location in the replicated mesh, interpolation with the containing cell's shape functions, the
+// same bits at any rank count), so every rank holds the same accumulators; rank 0 saves them in
+// checkpoints and writes <dir>/<name>.csv with one row per (phase bin, point):
 //   bin, phase_time, s (arc length from the origin, m), x, y, z, samples,
 //   mean_u, mean_v, mean_w, mean_p, rms_u, rms_v, rms_w, rms_p, uu, vv, ww, uv, vw, uw, k
 // Points outside the mesh are left out, as with line samples (a diameter whose ends lie on the

@@ -141,14 +141,14 @@ double PhaseAccumulator::kinetic_energy(int bin, int i) const {
 }
 
 std::vector<io::CheckpointArray> PhaseAccumulator::moment_arrays(std::span<const std::int64_t> rows,
-                                                             std::int64_t global_rows,
-                                                             bool root) const {
+                                                                 std::int64_t global_rows,
+                                                                 bool root) const {
   const int cols = options_.bins * per_node;
   io::CheckpointArray moments{options_.name + "_moments",
-                          global_rows,
-                          cols,
-                          std::vector<std::int64_t>(rows.begin(), rows.end()),
-                          {}};
+                              global_rows,
+                              cols,
+                              std::vector<std::int64_t>(rows.begin(), rows.end()),
+                              {}};
   moments.data.resize(rows.size() * cols);
   for (std::size_t i = 0; i < rows.size(); ++i)
     for (int b = 0; b < options_.bins; ++b)

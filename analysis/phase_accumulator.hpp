@@ -9,8 +9,9 @@
 // Results: RMS = sqrt(M2/n) (population, as PIV ensemble statistics), Reynolds stresses
 // <u_i' u_j'> = M2_ij / n in m^2/s^2, fluctuating kinetic energy k = rho/2 (u'^2+v'^2+w'^2) in
 // J/m^3. period = 0 gives the plain time average (one bin).
-// The points are whatever the owner says: mesh nodes (analysis::PhaseStatistics) or points on a line
-// (analysis::LineStatistics); both save the accumulators through checkpoint_arrays()/restore() here.
+// The points are whatever the owner says: mesh nodes (analysis::PhaseStatistics) or points on a
+// line (analysis::LineStatistics); both save the accumulators through checkpoint_arrays()/restore()
+// here.
 #pragma once
 
 #include <array>
@@ -71,7 +72,7 @@ class PhaseAccumulator {
   // e.g. none when the points are replicated and rank 0 saves them), <name>_counts and
   // <name>_meta (saved by the root rank).
   std::vector<io::CheckpointArray> moment_arrays(std::span<const std::int64_t> rows,
-                                             std::int64_t global_rows, bool root) const;
+                                                 std::int64_t global_rows, bool root) const;
   // Reads them back for point i = row rows[i] (every point of this accumulator). Throws naming
   // `where` when the options or the number of rows differ.
   void restore_moments(const io::CheckpointReader& reader, std::span<const std::int64_t> rows,

@@ -6,7 +6,7 @@
 //
 // How the run loop uses it:
 //   analysis::PhaseStatistics stats(local, {period, bins, t_start, rho, "stats"},
-//                             analysis::nodes_near_plane(local, p0, n, 0.5e-3));   // or all_owned_nodes
+//                                   nodes_near_plane(local, p0, n, 0.5e-3));  // or all_owned_nodes
 //   after each step (t >= t_start):  stats.add(state.time, state.velocity, state.pressure);
 //   checkpoint: writer.write(state, step, dt, stats.checkpoint_arrays());
 //   restart:    stats.restore(reader);

@@ -10,8 +10,9 @@
 //   auto piv = analysis::read_piv(file);  analysis::PivPlane plane(origin, ex, ey);
 //   analysis::PivSampler sampler(locator, plane, piv.frames[f]);         // once per PIV grid
 //   auto fields = analysis::SimulationStatistics{...nodal arrays of the matching phase...};
-//   auto cmp = analysis::compare_frame(piv.frames[f], sampler, fields);  // metrics + sampled values
-//   analysis::write_comparison_csv(out / "phase_03.csv", piv.frames[f], cmp);   // for plot_piv.py
+//   auto cmp = analysis::compare_frame(piv.frames[f], sampler, fields);  // metrics + sampled
+//   values analysis::write_comparison_csv(out / "phase_03.csv", piv.frames[f], cmp);   // for
+//   plot_piv.py
 #pragma once
 
 #include <Eigen/Dense>

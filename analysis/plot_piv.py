@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Side-by-side PIV / simulation plots from the CSV files of io/piv_compare.
+"""Side-by-side PIV / simulation plots from the CSV files of analysis/piv_compare.
 
   plot_piv.py frame.csv out.png [--profile profile.csv ...] [--title TEXT]
 

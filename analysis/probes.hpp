@@ -5,9 +5,10 @@
 // any rank count.
 //
 // How the run loop uses it (all collective):
-//   analysis::Probes probes(mesh, metrics, local, scene_probe_points);   // throws if a point is outside
-//   analysis::ProbeCsv csv(run_dir / "probes.csv", probes);              // header written by rank 0
-//   every N steps: csv.append(state.time, probes.sample(state));    // u, v, w, p per probe
+//   analysis::Probes probes(mesh, metrics, local, scene_probe_points);   // throws if a point is
+//   outside analysis::ProbeCsv csv(run_dir / "probes.csv", probes);              // header written
+//   by rank 0 every N steps: csv.append(state.time, probes.sample(state));    // u, v, w, p per
+//   probe
 #pragma once
 
 #include <Eigen/Dense>

@@ -39,7 +39,7 @@ class WallShearRecorder {
   // mu(gamma_dot) of the sampled velocity, in place of the constructor's dynamic_viscosity.
   void set_viscosity_model(const flow::ViscosityModel& model) { model_ = model; }
   std::vector<io::CheckpointArray> checkpoint_arrays() const;
-  void restore(const io::CheckpointReader& reader);            // collective
+  void restore(const io::CheckpointReader& reader);        // collective
   void write(const std::filesystem::path& run_dir) const;  // collective
 
   const std::vector<flow::WallShearStatistics>& statistics() const { return stats_; }

@@ -1,7 +1,7 @@
 // `valsalva compare-piv STATS.xmf PIV_FILE --origin x,y,z --ex x,y,z --ey x,y,z [--line ...]`:
-// reads the statistics written by analysis::PhaseStatistics::write (mesh, one HDF5 file per phase bin,
-// <name>_phases.csv), reads the PIV file, matches every PIV frame to the bin whose phase time is
-// nearest to the frame's phase/time value (or to --bin), and writes metrics.csv, frame_<i>.csv,
+// reads the statistics written by analysis::PhaseStatistics::write (mesh, one HDF5 file per phase
+// bin, <name>_phases.csv), reads the PIV file, matches every PIV frame to the bin whose phase time
+// is nearest to the frame's phase/time value (or to --bin), and writes metrics.csv, frame_<i>.csv,
 // profile_<line>_<i>.csv and frame_<i>.png (analysis/plot_piv.py) into --out. PIV files in other
 // units than m and m/s take --length-scale / --velocity-scale (analysis::PivUnits). Runs on rank 0.
 #include "app/command_compare_piv.hpp"
@@ -74,7 +74,7 @@ int run(const Options& o) {
   const auto phase_times = analysis::read_phase_times(dir / (name + "_phases.csv"));
   const auto piv = analysis::read_piv(o.piv, o.units);
   const analysis::PivPlane plane(Eigen::Vector3d(o.origin.data()), Eigen::Vector3d(o.ex.data()),
-                           Eigen::Vector3d(o.ey.data()));
+                                 Eigen::Vector3d(o.ey.data()));
   std::vector<analysis::ProfileLine> lines;
   for (const auto& l : o.lines) lines.push_back(parse_line(l)), lines.back().points = o.line_points;
   const mesh::PointLocator locator(mesh);
@@ -102,8 +102,8 @@ int run(const Options& o) {
     if (bin >= int(phase_times.size()))
       throw std::invalid_argument(fmt::format(
           "compare-piv: --bin {} but the statistics have {} bins", bin, phase_times.size()));
-    const auto sim =
-        analysis::read_statistics_bin(dir / fmt::format("{}_{:06d}.h5", name, bin), mesh, mesh_file);
+    const auto sim = analysis::read_statistics_bin(dir / fmt::format("{}_{:06d}.h5", name, bin),
+                                                   mesh, mesh_file);
     const analysis::PivSampler sampler(locator, plane, frame);
     auto c = analysis::compare_frame(frame, sampler, sim);
     const auto csv = fs::path(o.out) / fmt::format("frame_{:03d}.csv", f);

@@ -74,7 +74,8 @@ int run(const Options& o) {
           fmt::format("psd: probe file '{}' has no column '{}' (columns: {})", o.file, c, known));
     }
   const std::vector<double> time = series.column("time");
-  const analysis::Sampling sampling = analysis::check_sampling(time, fmt::format("psd: '{}'", o.file));
+  const analysis::Sampling sampling =
+      analysis::check_sampling(time, fmt::format("psd: '{}'", o.file));
   const std::size_t n = time.size();
   if (!sampling.uniform)
     fmt::print(

@@ -57,14 +57,15 @@ int check_scene(const std::filesystem::path& scene_file, const std::vector<std::
                          mesh.num_nodes(), mesh.num_cells()));
   const auto metrics = mesh::compute_dual_metrics(mesh);
   phase.next("checking the scene against the mesh");
-  const auto boundary = scene::read_boundary_conditions(scene, mesh);  // every patch has a condition
-  scene::read_analysis_options(scene, mesh);  // probes, samples, statistics, wall shear
+  const auto boundary =
+      scene::read_boundary_conditions(scene, mesh);  // every patch has a condition
+  scene::read_analysis_options(scene, mesh);         // probes, samples, statistics, wall shear
   const auto immersed = scene::read_immersed_setup(scene, mesh);  // meshes, materials, clamps
-  scene::read_valve_monitor_options(scene, mesh);                 // [valve]: its structure and patches
-  scene::check_les_scene(scene);                                  // LES output fields
-  scene::flow_run_options(scene, {});                             // time step, output volume
-  scene::check_initial_state(scene, mesh);  // a Taylor-Green start on a 2 pi L-periodic mesh
-  scene::check_forcing(scene, boundary);    // a flow-rate drive on a domain closed by walls
+  scene::read_valve_monitor_options(scene, mesh);  // [valve]: its structure and patches
+  scene::check_les_scene(scene);                   // LES output fields
+  scene::flow_run_options(scene, {});              // time step, output volume
+  scene::check_initial_state(scene, mesh);         // a Taylor-Green start on a 2 pi L-periodic mesh
+  scene::check_forcing(scene, boundary);           // a flow-rate drive on a domain closed by walls
   scene::check_cycle_periods(scene);        // valve and statistics cycles against the inlet table
   scene::check_step_count(scene, metrics);  // the viscous bound on dt against time.end
   std::string coupling;

@@ -21,9 +21,9 @@ class InternalError : public std::logic_error {
 
 }  // namespace valsalva::core
 
-#define VALSALVA_CHECK(condition, ...)                                                     \
-  do {                                                                                     \
-    if (!(condition))                                                                      \
+#define VALSALVA_CHECK(condition, ...)                                                          \
+  do {                                                                                          \
+    if (!(condition))                                                                           \
       ::valsalva::core::check_failed(#condition, __FILE__, __LINE__, std::string{__VA_ARGS__}); \
   } while (false)
 

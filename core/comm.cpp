@@ -1,10 +1,10 @@
 #include "core/comm.hpp"
 
+#include <fmt/format.h>
+
 #include <limits>
 
 #include "core/check.hpp"
-
-#include <fmt/format.h>
 
 namespace valsalva::core {
 

@@ -15,7 +15,8 @@ namespace valsalva::io {
 struct FieldSet {
   std::vector<std::pair<std::string, const flow::ScalarField*>> scalars;
   std::vector<std::pair<std::string, const flow::VectorField*>> vectors;
-  const flow::VectorField* state_velocity = nullptr;  // the written state's velocity (derived fields)
+  const flow::VectorField* state_velocity =
+      nullptr;  // the written state's velocity (derived fields)
 };
 using FieldSink = std::function<void(const std::string& basename, double time, const FieldSet&)>;
 

@@ -8,7 +8,8 @@
 
 namespace valsalva::run {
 
-ImmersedCoupling build_immersed_coupling(const scene::ImmersedSetup& setup, mesh::LocalMesh& local) {
+ImmersedCoupling build_immersed_coupling(const scene::ImmersedSetup& setup,
+                                         mesh::LocalMesh& local) {
   ImmersedCoupling c;
   c.structure = std::make_unique<ibm::ImmersedStructure>(local, setup.options);
   auto& ib = *c.structure;

@@ -13,8 +13,8 @@ namespace valsalva::run {
 
 namespace fs = std::filesystem;
 
-ImmersedRun::ImmersedRun(scene::ImmersedSetup setup, mesh::LocalMesh& local, const fs::path& run_dir,
-                         bool in_place, std::int64_t start_step)
+ImmersedRun::ImmersedRun(scene::ImmersedSetup setup, mesh::LocalMesh& local,
+                         const fs::path& run_dir, bool in_place, std::int64_t start_step)
     : setup_(std::move(setup)), local_(local), root_(local.comm.rank() == 0) {
   auto coupling = build_immersed_coupling(setup_, local_);
   ib_ = std::move(coupling.structure);

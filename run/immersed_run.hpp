@@ -22,11 +22,11 @@
 #include <memory>
 #include <vector>
 
-#include "run/run_loop.hpp"
 #include "ibm/immersed_structure.hpp"
 #include "io/checkpoint.hpp"
 #include "io/solid_series.hpp"
 #include "mesh/local_mesh.hpp"
+#include "run/run_loop.hpp"
 #include "scene/scene_keys_structure.hpp"
 
 namespace valsalva::run {
@@ -37,8 +37,8 @@ class ImmersedRun {
   // bound once; throws std::runtime_error naming the structure when a marker is outside the
   // mesh. `in_place` (a restart in its own run directory) appends to structures.csv and names
   // the Lagrangian series <name>_restart_<start_step>.
-  ImmersedRun(scene::ImmersedSetup setup, mesh::LocalMesh& local, const std::filesystem::path& run_dir,
-              bool in_place, std::int64_t start_step);
+  ImmersedRun(scene::ImmersedSetup setup, mesh::LocalMesh& local,
+              const std::filesystem::path& run_dir, bool in_place, std::int64_t start_step);
 
   // For scene::RunOptions::coupling (captures `this`).
   scene::StepCoupling coupling();

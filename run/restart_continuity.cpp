@@ -109,8 +109,9 @@ std::vector<fs::path> superseded_restart_outputs(const fs::path& dir, std::int64
   return found;
 }
 
-void continue_in_place(const fs::path& dir, const scene::Scene& scene, std::int64_t step, double time,
-                       double dt, const std::vector<std::string>& series, const core::Comm& comm) {
+void continue_in_place(const fs::path& dir, const scene::Scene& scene, std::int64_t step,
+                       double time, double dt, const std::vector<std::string>& series,
+                       const core::Comm& comm) {
   std::string error;
   if (comm.root()) {
     try {

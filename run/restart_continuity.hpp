@@ -39,8 +39,8 @@ std::vector<std::filesystem::path> superseded_restart_outputs(const std::filesys
 // throws std::logic_error) must exist and is truncated, the superseded restart outputs are removed,
 // and the scene is recorded as resolved_scene_restart_<step>.toml. Rank 0 does the work and prints
 // what it cut; an error is thrown on every rank.
-void continue_in_place(const std::filesystem::path& dir, const scene::Scene& scene, std::int64_t step,
-                       double time, double dt, const std::vector<std::string>& series,
-                       const core::Comm& comm);
+void continue_in_place(const std::filesystem::path& dir, const scene::Scene& scene,
+                       std::int64_t step, double time, double dt,
+                       const std::vector<std::string>& series, const core::Comm& comm);
 
 }  // namespace valsalva::run

@@ -28,8 +28,8 @@ class RunDirectory {
   // typo nor a copied scene or marker can wipe a user's folder). Rank 0 then writes the marker
   // and resolved_scene.toml; the other ranks wait. Every rank returns the same directory or
   // throws the same RunDirectoryError.
-  static RunDirectory prepare(const std::filesystem::path& dir, bool overwrite, const scene::Scene& scene,
-                              MPI_Comm comm);
+  static RunDirectory prepare(const std::filesystem::path& dir, bool overwrite,
+                              const scene::Scene& scene, MPI_Comm comm);
 
   const std::filesystem::path& path() const { return path_; }
   std::filesystem::path file(std::string_view name) const { return path_ / name; }

@@ -10,9 +10,9 @@
 #include <limits>
 #include <utility>
 
-#include "run/outlet_log.hpp"
 #include "flow/poisson_weights.hpp"
 #include "flow/womersley.hpp"
+#include "run/outlet_log.hpp"
 
 namespace valsalva::run {
 
@@ -50,7 +50,7 @@ RunLoop::RunLoop(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
   state_.pressure.assign(n, 0.0);
   if (ic.type == "taylor_green") {
     const flow::TaylorGreen tg{ic.velocity, ic.length, options_.projection.viscosity,
-                         options_.projection.density};
+                               options_.projection.density};
     for (int j = 0; j < n; ++j) {
       state_.velocity[j] = tg.velocity(local.position[j], 0.0);
       state_.pressure[j] = tg.pressure(local.position[j], 0.0);
@@ -65,8 +65,8 @@ RunLoop::RunLoop(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
     for (int j = 0; j < n; ++j)
       state_.velocity[j] = flow::cyclic_sines(local.position[j], ic.velocity, ic.length);
   } else if (ic.type == "womersley") {
-    const auto exact = flow::Womersley::from_sine(ic.radius, options_.projection.viscosity, ic.flow_rate,
-                                            ic.amplitude, ic.period, ic.phase);
+    const auto exact = flow::Womersley::from_sine(ic.radius, options_.projection.viscosity,
+                                                  ic.flow_rate, ic.amplitude, ic.period, ic.phase);
     const Eigen::Vector3d axis = ic.axis.normalized();
     const double g0 = exact.pressure_gradient(0.0);
     for (int j = 0; j < n; ++j) {
@@ -105,7 +105,8 @@ void RunLoop::set_initial_velocity(flow::VectorField velocity) {
   impose_initial_boundary_values();
 }
 
-void RunLoop::resume(flow::FlowState state, std::int64_t step, const flow::ScalarField& pressure_increment,
+void RunLoop::resume(flow::FlowState state, std::int64_t step,
+                     const flow::ScalarField& pressure_increment,
                      const flow::ScalarField& subgrid_viscosity, const flow::EdgeField& face_flux,
                      const std::vector<double>& lumped_outlets) {
   const auto n = static_cast<std::size_t>(local_.num_local());
@@ -154,13 +155,16 @@ double RunLoop::choose_dt(double remaining) {
   const auto& rheology = options_.projection.rheology;
   if (const double cap = flow::viscosity_cap(rheology); cap > 0) {
     const double nu = cap / options_.projection.density + solver_.max_subgrid_viscosity();
-    rates_ = flow::stability_rates(local_, solver_.laplacian_weights(), nu, state_.velocity, scratch_);
+    rates_ =
+        flow::stability_rates(local_, solver_.laplacian_weights(), nu, state_.velocity, scratch_);
   } else if (solver_.variable_viscosity()) {
-    rates_ = flow::stability_rates(local_, solver_.laplacian_weights(),
-                             solver_.viscosity_field(state_.velocity), state_.velocity, scratch_);
+    rates_ =
+        flow::stability_rates(local_, solver_.laplacian_weights(),
+                              solver_.viscosity_field(state_.velocity), state_.velocity, scratch_);
   } else {
     const double nu = options_.projection.viscosity + solver_.max_subgrid_viscosity();
-    rates_ = flow::stability_rates(local_, solver_.laplacian_weights(), nu, state_.velocity, scratch_);
+    rates_ =
+        flow::stability_rates(local_, solver_.laplacian_weights(), nu, state_.velocity, scratch_);
   }
   const double limit = 1.0 / rates_.stability;  // +inf at rest without viscosity
   double dt = t.dt;
@@ -237,8 +241,8 @@ void RunLoop::write_fields(const std::string& basename, const flow::FlowState& s
   sink_(basename, state.time, set);
 }
 
-void RunLoop::print_progress(const flow::StepReport& report, double dt, double energy, double per_step,
-                             double eta, const std::string& flux_text) const {
+void RunLoop::print_progress(const flow::StepReport& report, double dt, double energy,
+                             double per_step, double eta, const std::string& flux_text) const {
   const auto& out = options_.output;
   const double cfl = dt * rates_.convective, fourier = dt * rates_.viscous;
   // Node-steps per second over all ranks: the throughput a user compares between runs.
@@ -494,7 +498,7 @@ RunSummary RunLoop::run() {
 
 TaylorGreenError RunLoop::taylor_green_error() const {
   const flow::TaylorGreen tg{options_.initial.velocity, options_.initial.length,
-                       options_.projection.viscosity, options_.projection.density};
+                             options_.projection.viscosity, options_.projection.density};
   double volume = 0, e2 = 0, einf = 0, x2 = 0;
   for (int j = 0; j < local_.num_owned; ++j) {
     const auto exact = tg.velocity(local_.position[j], state_.time);

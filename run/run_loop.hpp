@@ -1,13 +1,13 @@
 // A flow run from an initial state to an end time: time step fixed or from CFL and Fourier
-// targets (refused beyond the RK4 stability limit, see run_diagnostics.hpp), a progress line
+// targets (refused beyond the RK4 stability limit, see flow/run_diagnostics.hpp), a progress line
 // and a CSV row (log.csv) every log_every steps, fields at the output interval, and a guard
 // that stops the run on NaN/Inf or a runaway velocity after writing the last good state.
-// Fields go through a FieldSink so that flow/ stays independent of io/ (app/ plugs in
-// io::FieldOutput). Every non-periodic boundary patch needs a condition (RunOptions::boundary,
-// flow/boundary_conditions.hpp); the log gains the flux through each such patch and the global
-// mass imbalance (the sum of all boundary fluxes), and for each lumped outlet its pressure
-// (pressure_<patch>) and, for an RCR, its distal pressure (distal_pressure_<patch>); the same
-// with the flux go into outlets.csv every step (flow/outlet_log.hpp).
+// Fields go through a FieldSink (run::Simulation plugs in io::FieldOutput). What to run comes as
+// scene::RunOptions (scene/run_options.hpp). Every non-periodic boundary patch needs a condition
+// (RunOptions::boundary, flow/boundary_conditions.hpp); the log gains the flux through each such
+// patch and the global mass imbalance (the sum of all boundary fluxes), and for each lumped outlet
+// its pressure (pressure_<patch>) and, for an RCR, its distal pressure (distal_pressure_<patch>);
+// the same with the flux go into outlets.csv every step (run/outlet_log.hpp).
 #pragma once
 
 #include <cstdint>
@@ -26,22 +26,23 @@
 #include "flow/projection_rk4.hpp"
 #include "flow/run_diagnostics.hpp"
 #include "io/field_set.hpp"
-#include "scene/run_options.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
 #include "mesh/mesh.hpp"
+#include "scene/run_options.hpp"
 
 namespace valsalva::run {
 
-// Checkpoint/restart hooks (app/ plugs in io::CheckpointWriter and run::StopSignal, so flow/ stays
-// independent of io/). Both are called on every rank after every step and must be collective.
+// Checkpoint/restart hooks (run::Simulation plugs in io::CheckpointWriter and run::StopSignal).
+// Both are called on every rank after every step and must be collective.
 struct RunHooks {
   // Right after each step, before the state checks and the other hooks: may change the velocity
   // (e.g. a validation case's rescaling to a target spectrum during a spin-up). The solver's
   // own arrays (pressure increment, face flux, nu_sgs) are left as the step made them.
   // Collective; empty = none.
   std::function<void(flow::FlowState&, std::int64_t step)> modify_velocity;
-  // After each step, before the checkpoint hook: measurements (app/ plugs in analysis::RunAnalysis).
+  // After each step, before the checkpoint hook: measurements (run::Simulation plugs in
+  // analysis::RunAnalysis).
   std::function<void(const flow::FlowState&, std::int64_t step)> after_step;
   // After each step: the state, the step count, the step's dt and why: a regular step (the hook
   // decides, e.g. every N steps), a stop request (the hook must write) or the run's last step
@@ -111,8 +112,10 @@ class RunLoop {
   // of a coarser level, interpolated).
   void set_initial_velocity(flow::VectorField velocity);
   // `lumped_outlets` (LumpedOutlets::saved(); empty = none) the lumped outlets' states.
-  void resume(flow::FlowState state, std::int64_t step, const flow::ScalarField& pressure_increment = {},
-              const flow::ScalarField& subgrid_viscosity = {}, const flow::EdgeField& face_flux = {},
+  void resume(flow::FlowState state, std::int64_t step,
+              const flow::ScalarField& pressure_increment = {},
+              const flow::ScalarField& subgrid_viscosity = {},
+              const flow::EdgeField& face_flux = {},
               const std::vector<double>& lumped_outlets = {});
   // The last pressure increment and nu_sgs (for checkpoints; nu_sgs is empty without a model).
   const flow::ScalarField& pressure_increment() const { return solver_.pressure_increment(); }

@@ -28,8 +28,8 @@ void RunLoop::install_forcing() {
       throw RunError("forcing.type = flow_rate needs the flux of its section (forcing.section)",
                      "forcing.section");
     try {
-      flow_rate_control_ =
-          std::make_shared<flow::FlowRateControl>(local_, boundary_.get(), spec, options_.section_flux);
+      flow_rate_control_ = std::make_shared<flow::FlowRateControl>(local_, boundary_.get(), spec,
+                                                                   options_.section_flux);
     } catch (const std::invalid_argument& e) {
       throw RunError(e.what(), "forcing.section");
     }
@@ -45,18 +45,19 @@ void RunLoop::install_forcing() {
     else
       f = *field;
   };
-  solver_.set_body_force(
-      [prescribed, coupled = options_.coupling.body_force, own = std::make_shared<flow::VectorField>()](
-          int stage, double t, const flow::VectorField& u, flow::VectorField& f) {
-        if (!coupled) {
-          prescribed(t, f);
-          return;
-        }
-        coupled(stage, t, u, f);
-        own->resize(f.size());
-        prescribed(t, *own);
-        for (std::size_t j = 0; j < f.size(); ++j) f[j] += (*own)[j];
-      });
+  solver_.set_body_force([prescribed, coupled = options_.coupling.body_force,
+                          own = std::make_shared<flow::VectorField>()](int stage, double t,
+                                                                       const flow::VectorField& u,
+                                                                       flow::VectorField& f) {
+    if (!coupled) {
+      prescribed(t, f);
+      return;
+    }
+    coupled(stage, t, u, f);
+    own->resize(f.size());
+    prescribed(t, *own);
+    for (std::size_t j = 0; j < f.size(); ++j) f[j] += (*own)[j];
+  });
 }
 
 void RunLoop::update_forcing_field() {
@@ -94,7 +95,8 @@ std::string RunLoop::forcing_log_header() const {
 
 std::string RunLoop::forcing_log_row() const {
   const auto type = options_.forcing.type;
-  if (type != flow::ForcingSpec::Type::uniform && type != flow::ForcingSpec::Type::flow_rate) return {};
+  if (type != flow::ForcingSpec::Type::uniform && type != flow::ForcingSpec::Type::flow_rate)
+    return {};
   // + 0.0: no "-0" in the log for a component the direction does not have.
   const Eigen::Vector3d f =
       (flow_rate_control_

@@ -297,7 +297,7 @@ Simulation::Simulation(const scene::Scene& scene_in, const RunRequest& request, 
                       [](const flow::BoundarySpec& b) { return flow::lumped_type(b.type); }))
         series.push_back("outlets.csv");
       run::continue_in_place(p.run_path, scene, in->info().step, in->info().time, in->info().dt,
-                            series, p.local.comm);
+                             series, p.local.comm);
     }
   }
   if (!analysis_options.empty())

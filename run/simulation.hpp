@@ -12,9 +12,9 @@
 #include <memory>
 #include <string>
 
-#include "run/run_loop.hpp"
 #include "mesh/local_mesh.hpp"
 #include "mesh/mesh.hpp"
+#include "run/run_loop.hpp"
 #include "scene/scene.hpp"
 
 namespace valsalva::ibm {

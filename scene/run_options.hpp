@@ -54,8 +54,8 @@ struct OutputOptions {
   double cycle_period = 0;  // s; > 0 shows cycle and phase in the status line
 };
 
-// Something that moves with the flow and pushes on it (app/ plugs in the immersed structures of
-// ibm/, so that flow/ stays independent of them): its force density at every RK stage, its own
+// Something that moves with the flow and pushes on it (run::Simulation plugs in the immersed
+// structures of ibm/): its force density at every RK stage, its own
 // update once the step is taken (markers to t^{n+1}) and the largest time step its explicit
 // coupling admits. All empty = none: nothing is called or allocated.
 struct StepCoupling {

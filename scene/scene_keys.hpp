@@ -1,4 +1,4 @@
-// One declaration function per module, each in io/scene_keys_<module>.cpp. scene_schema()
+// One declaration function per module, each in scene/scene_keys_<module>.cpp. scene_schema()
 // (scene/scene_schema.cpp) calls every one of them: add a module's function here and there.
 #pragma once
 

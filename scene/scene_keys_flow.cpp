@@ -1,4 +1,4 @@
-// Scene keys of the flow solver (flow/projection_rk4, flow/pressure_poisson, flow/run_loop):
+// Scene keys of the flow solver (flow/projection_rk4, flow/pressure_poisson, run/run_loop):
 // fluid properties, time stepping, the pressure Poisson solver, the initial state and the
 // field output; and their reader flow_run_options.
 #include "scene/scene_keys_flow.hpp"

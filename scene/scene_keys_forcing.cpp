@@ -111,7 +111,8 @@ Eigen::Vector3d finite_vector(const Scene& scene, const std::string& key) {
 flow::Waveform table(const Scene& scene) {
   try {
     auto factor = io::read_waveform_table(scene.path("forcing.file"));
-    io::check_table_wrap(factor, scene.get<double>("time.end"), scene.path("forcing.file").string());
+    io::check_table_wrap(factor, scene.get<double>("time.end"),
+                         scene.path("forcing.file").string());
     return factor;
   } catch (const std::exception& e) {
     throw scene.error("forcing.file", e.what());

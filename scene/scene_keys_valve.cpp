@@ -95,7 +95,7 @@ void declare_valve_keys(Schema& s) {
 }
 
 std::optional<analysis::ValveMonitorOptions> read_valve_monitor_options(const Scene& scene,
-                                                              const mesh::Mesh& mesh) {
+                                                                        const mesh::Mesh& mesh) {
   analysis::ValveMonitorOptions o;
   o.structure = scene.get<std::string>("valve.structure");
   if (o.structure.empty()) return std::nullopt;

@@ -15,6 +15,6 @@ void declare_valve_keys(Schema& schema);
 // Empty when valve.structure is empty. Throws SceneError naming the key for an unknown
 // structure or patch, a zero axis, a non-positive annulus radius or TPG radius.
 std::optional<analysis::ValveMonitorOptions> read_valve_monitor_options(const Scene& scene,
-                                                              const mesh::Mesh& mesh);
+                                                                        const mesh::Mesh& mesh);
 
 }  // namespace valsalva::scene

@@ -1,5 +1,5 @@
 // Declarations of every scene key: dotted path, type, default (or required), unit, accepted
-// values and a one-line doc. Each module declares its keys once, in io/scene_keys_<module>.cpp;
+// values and a one-line doc. Each module declares its keys once, in scene/scene_keys_<module>.cpp;
 // scene_schema() gathers them into the one registry that validates scenes and generates
 // docs/scenes.md (same habit as deal.II's ParameterHandler: declare once, reject the rest).
 //

@@ -18,4 +18,13 @@ std::vector<double> velocity_by_dual_node(const mesh::LocalMesh& local, const fl
   return all;
 }
 
+std::vector<double> scalar_by_dual_node(const mesh::LocalMesh& local,
+                                        const std::vector<double>& field, std::int64_t dual_nodes) {
+  std::vector<double> all(static_cast<std::size_t>(dual_nodes), 0.0);
+  for (int j = 0; j < local.num_owned; ++j) all[local.dual_node[j]] = field[j];
+  VALSALVA_MPI(MPI_Allreduce(MPI_IN_PLACE, all.data(), static_cast<int>(all.size()), MPI_DOUBLE,
+                             MPI_SUM, local.comm.get()));
+  return all;
+}
+
 }  // namespace valsalva::validation

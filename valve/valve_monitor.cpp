@@ -40,7 +40,7 @@ int free_edge_midpoint(const structure::SolidMesh& m, const std::string& prefix)
 }
 
 analysis::RegionMean region(const mesh::LocalMesh& local, const Eigen::Vector3d& c, double r,
-                      const char* key) {
+                            const char* key) {
   return analysis::RegionMean(local, c, r, fmt::format("valve.{}", key));
 }
 

@@ -36,7 +36,8 @@ class ValveMonitor {
   // structure or set when the leaflets lack node sets leaflet1..3 / leaflet<i>_free_edge, or a
   // pressure region holds no node. `append`: continue the CSV files of an earlier run.
   ValveMonitor(const mesh::LocalMesh& local, const ibm::ImmersedStructure& structure, int body,
-               analysis::ValveMonitorOptions options, const std::filesystem::path& run_dir, bool append);
+               analysis::ValveMonitorOptions options, const std::filesystem::path& run_dir,
+               bool append);
 
   // Collective: the row due after step `step` (step 0 = the initial state).
   void sample(const flow::FlowState& state, std::int64_t step);

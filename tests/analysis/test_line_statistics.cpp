@@ -196,13 +196,13 @@ TEST_CASE("line statistics: a checkpoint mid-run continues to the same bits") {
     run_cycles(other, back, 2, cycles);
     CHECK(same_bits(back, straight));
 
-    analysis::LineStatistics shifted(mesh, metrics, other, options,
-                               {diagonal.origin, diagonal.end + Eigen::Vector3d(0, 0, 0.01), 7},
-                               "statistics.diag");
+    analysis::LineStatistics shifted(
+        mesh, metrics, other, options,
+        {diagonal.origin, diagonal.end + Eigen::Vector3d(0, 0, 0.01), 7}, "statistics.diag");
     CHECK_THROWS_WITH(shifted.restore(io::CheckpointReader(other, io::mesh_hash(mesh), path)),
                       doctest::Contains("saved point 1 is at"));
-    analysis::LineStatistics other_bins(mesh, metrics, other, {period, 2, 0.1, rho, "diag"}, diagonal,
-                                  "statistics.diag");
+    analysis::LineStatistics other_bins(mesh, metrics, other, {period, 2, 0.1, rho, "diag"},
+                                        diagonal, "statistics.diag");
     CHECK_THROWS_WITH(other_bins.restore(io::CheckpointReader(other, io::mesh_hash(mesh), path)),
                       doctest::Contains("saved with period 0.4 s, 4 bins"));
   }
@@ -213,17 +213,18 @@ TEST_CASE("line statistics: points outside the mesh are left out; bad lines are 
   const auto metrics = mesh::compute_dual_metrics(mesh);
   const auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD);
   // x = -1.05, -0.55, -0.05 are outside the unit box, 0.45 and 0.95 inside.
-  analysis::LineStatistics half(mesh, metrics, local, options, {{-1.05, 0.5, 0.5}, {0.95, 0.5, 0.5}, 5},
-                          "statistics.half");
+  analysis::LineStatistics half(mesh, metrics, local, options,
+                                {{-1.05, 0.5, 0.5}, {0.95, 0.5, 0.5}, 5}, "statistics.half");
   CHECK(half.outside() == 3);
   REQUIRE(half.arc_length().size() == 2);
   CHECK(half.arc_length()[0] == doctest::Approx(1.5).epsilon(1e-15));
-  CHECK_THROWS_WITH(analysis::LineStatistics(mesh, metrics, local, options, {{2, 2, 2}, {3, 3, 3}, 4},
-                                       "statistics.away"),
-                    doctest::Contains("statistics.away: none of the 4 points"));
   CHECK_THROWS_WITH(analysis::LineStatistics(mesh, metrics, local, options,
-                                       {{0.5, 0.5, 0.5}, {0.5, 0.5, 0.5}, 4}, "statistics.dot"),
-                    doctest::Contains("statistics.dot.end: the line has zero length"));
+                                             {{2, 2, 2}, {3, 3, 3}, 4}, "statistics.away"),
+                    doctest::Contains("statistics.away: none of the 4 points"));
+  CHECK_THROWS_WITH(
+      analysis::LineStatistics(mesh, metrics, local, options, {{0.5, 0.5, 0.5}, {0.5, 0.5, 0.5}, 4},
+                               "statistics.dot"),
+      doctest::Contains("statistics.dot.end: the line has zero length"));
 
   // The scene: the key at fault is named, with its file and line.
   auto error_of = [&](const std::string& tables) {

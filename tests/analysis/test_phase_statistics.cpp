@@ -59,7 +59,8 @@ void fill(const mesh::LocalMesh& local, std::int64_t c, int b, flow::FlowState& 
   }
 }
 
-void run_cycles(const mesh::LocalMesh& local, analysis::PhaseStatistics& stats, int first, int last) {
+void run_cycles(const mesh::LocalMesh& local, analysis::PhaseStatistics& stats, int first,
+                int last) {
   flow::FlowState s;
   for (int c = first; c < last; ++c)
     for (int b = 0; b < bins; ++b) {
@@ -74,7 +75,8 @@ TEST_CASE("phase statistics of a synthetic periodic signal") {
   const auto mesh = box();
   const auto metrics = mesh::compute_dual_metrics(mesh);
   auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
-  analysis::PhaseStatistics stats(local, {period, bins, 0.2, rho, "phase"}, analysis::all_owned_nodes(local));
+  analysis::PhaseStatistics stats(local, {period, bins, 0.2, rho, "phase"},
+                                  analysis::all_owned_nodes(local));
   CHECK(stats.bin_of(0.2) == 0);
   CHECK(stats.bin_of(0.2 + 0.25 * period) == 1);
   CHECK(stats.bin_of(0.2 + 3.99 * period) == 3);

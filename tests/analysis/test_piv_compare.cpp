@@ -56,10 +56,11 @@ Setup setup(const std::string& type) {
 analysis::PivPlane tilted_plane() {
   const double a = M_PI / 6, b = M_PI / 9;
   return analysis::PivPlane({0.5, 0.5, 0.5}, {std::cos(a), 0, std::sin(a)},
-                      {-std::sin(a) * std::sin(b), std::cos(b), std::cos(a) * std::sin(b)});
+                            {-std::sin(a) * std::sin(b), std::cos(b), std::cos(a) * std::sin(b)});
 }
 
-analysis::PivFrame synthetic(const analysis::PivPlane& plane, double sigma, std::uint64_t seed, double extent) {
+analysis::PivFrame synthetic(const analysis::PivPlane& plane, double sigma, std::uint64_t seed,
+                             double extent) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> noise(0.0, sigma);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -105,7 +106,8 @@ TEST_CASE("PIV comparison on a tilted plane: round-off without noise, sigma with
 
     const double sigma = 0.01;
     const auto noisy = synthetic(plane, sigma, 2, 0.3);
-    const auto c = analysis::compare_frame(noisy, analysis::PivSampler(locator, plane, noisy), s.sim);
+    const auto c =
+        analysis::compare_frame(noisy, analysis::PivSampler(locator, plane, noisy), s.sim);
     MESSAGE(type, ": RMSE u ", c.u.rmse, " v ", c.v.rmse, " u_rms ", c.u_rms.rmse, " v_rms ",
             c.v_rms.rmse, "; normalised u ", c.u.normalised_error, "; correlation u ",
             c.u.correlation, " v ", c.v.correlation, "; masked ", c.masked);
@@ -126,8 +128,8 @@ TEST_CASE("PIV comparison on a tilted plane: round-off without noise, sigma with
 
     // Profile along the plane's x axis: the simulation follows the analytic field exactly, the
     // PIV side takes the nearest grid point (spacing 0.03) and so matches to sigma.
-    const auto profile = analysis::sample_profile({"x_axis", {-0.3, 0.0}, {0.3, 0.0}, 21}, exact_sampler,
-                                            noisy, s.sim, 0.02);
+    const auto profile = analysis::sample_profile({"x_axis", {-0.3, 0.0}, {0.3, 0.0}, 21},
+                                                  exact_sampler, noisy, s.sim, 0.02);
     double worst = 0;
     for (std::size_t k = 0; k < profile.s.size(); ++k)
       worst =
@@ -210,7 +212,8 @@ TEST_CASE("PIV files in mm and mm/s read with scale factors give the metrics of 
   CHECK(cb.u_rms.rmse == doctest::Approx(ca.u_rms.rmse).epsilon(1e-12));
   // Without the scale factors the mm file is far off (the check can fail).
   const auto raw = analysis::read_piv(out / "mm.csv").frames.at(0);
-  CHECK(analysis::compare_frame(raw, analysis::PivSampler(locator, plane, raw), s.sim).outside > 300);
+  CHECK(analysis::compare_frame(raw, analysis::PivSampler(locator, plane, raw), s.sim).outside >
+        300);
 
   CHECK_THROWS_WITH_AS(analysis::read_piv(data / "good.dat", {0.0, 1.0}),
                        doctest::Contains("length scale 0 and velocity scale 1 must be positive"),

@@ -1,6 +1,6 @@
-// analysis::RunAnalysis driven by hand on a small periodic box: the statistics' interim files appear
-// at start_time + k write_interval with the samples taken so far, a pressure-drop row has the
-// volume-weighted region means of a linear pressure (exact), and probes read the state.
+// analysis::RunAnalysis driven by hand on a small periodic box: the statistics' interim files
+// appear at start_time + k write_interval with the samples taken so far, a pressure-drop row has
+// the volume-weighted region means of a linear pressure (exact), and probes read the state.
 #include <doctest/doctest.h>
 #include <mpi.h>
 

@@ -14,12 +14,12 @@
 
 #include "analysis/run_analysis.hpp"
 #include "analysis/section_flux.hpp"
-#include "run/run_loop.hpp"
 #include "mesh/box_generator.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
 #include "mesh/periodic_pipe_generator.hpp"
 #include "mesh/pipe_generator.hpp"
+#include "run/run_loop.hpp"
 
 using namespace valsalva;
 
@@ -66,8 +66,9 @@ TEST_CASE("section flux of a Poiseuille pipe equals the inlet flow rate") {
   box.bound = analysis::SectionOptions::Bound::box;
   box.lo = {-0.01, -0.01, 0.0};
   box.hi = {0.01, 0.01, 0.02};
-  std::vector<analysis::SectionOptions> cuts = {section("near_inlet", 0.002), section("mid", 0.01), disc,
-                                          box, section("tilted", 0.01, {0.3, -0.2, 1.0})};
+  std::vector<analysis::SectionOptions> cuts = {section("near_inlet", 0.002), section("mid", 0.01),
+                                                disc, box,
+                                                section("tilted", 0.01, {0.3, -0.2, 1.0})};
   for (const auto& o : cuts) {
     const analysis::SectionFlux s(local, o);
     const double q = s.flux(loop.face_flux());

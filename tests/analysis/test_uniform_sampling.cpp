@@ -48,6 +48,7 @@ TEST_CASE("uniform sampling: bad series are refused") {
                     doctest::Contains("not strictly increasing at sample 2"));
   CHECK_THROWS_WITH(analysis::check_sampling(std::vector<double>{0.0, NAN, 0.3}, "probes.csv"),
                     doctest::Contains("not strictly increasing at sample 1"));
-  CHECK_THROWS_WITH(analysis::resample_uniform(std::vector<double>{0, 1}, std::vector<double>{0}, 4),
-                    doctest::Contains("2 times, 1 values"));
+  CHECK_THROWS_WITH(
+      analysis::resample_uniform(std::vector<double>{0, 1}, std::vector<double>{0}, 4),
+      doctest::Contains("2 times, 1 values"));
 }

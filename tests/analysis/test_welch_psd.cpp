@@ -58,7 +58,8 @@ TEST_CASE("Welch PSD: sine plus white noise") {
 
 TEST_CASE("Welch PSD: bad options are named") {
   std::vector<double> x(100, 1.0);
-  CHECK_THROWS_WITH(analysis::welch_psd(x, 10, {200, 0.5}), doctest::Contains("segment_length = 200"));
+  CHECK_THROWS_WITH(analysis::welch_psd(x, 10, {200, 0.5}),
+                    doctest::Contains("segment_length = 200"));
   CHECK_THROWS_WITH(analysis::welch_psd(x, 10, {50, 1.0}), doctest::Contains("overlap = 1"));
   CHECK_THROWS_WITH(analysis::welch_psd(x, 0, {50, 0.5}), doctest::Contains("sample_rate = 0"));
 }

@@ -1,8 +1,8 @@
-#include "core/check.hpp"
-
 #include <doctest/doctest.h>
 
 #include <string>
+
+#include "core/check.hpp"
 
 using valsalva::core::InternalError;
 

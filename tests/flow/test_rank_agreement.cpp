@@ -1,8 +1,9 @@
 // Rank-count agreement (issue 3 item 6): a short Taylor-Green run on split tetrahedra (periodic;
 // also with central4 + the 4th-order operators on perturbed tetrahedra)
 // and a short Womersley pipe run (Gmsh tetrahedra, Womersley inlet, wall, pressure outlet with
-// backflow stabilisation) give the same velocity and pressure on the communicator (np 1, 2, 3)
-// as on one rank alone (MPI_COMM_SELF), node by node in the partition-independent dual-node
+// backflow stabilisation: validation/womersley/womersley_delaunay.toml with overrides, run by
+// run::Simulation as users run it) give the same velocity and pressure on the communicator (np 1,
+// 2, 3) as on one rank alone (MPI_COMM_SELF), node by node in the partition-independent dual-node
 // order.
 // Tolerance 1e-10 relative: the Poisson solves stop at a relative residual of 1e-13, so the
 // rank-dependent parts left are the AMG hierarchy's effect on that residual (1e-13 relative per

@@ -138,9 +138,10 @@ TEST_CASE("prepare creates the directory, writes the resolved scene, and guards 
 }
 
 TEST_CASE("the default run path is runs/<scene file stem>") {
-  const scene::Scene unnamed = scene::parse_scene("[mesh]\nsource = \"box\"\n", "scenes/cavity.toml");
+  const scene::Scene unnamed =
+      scene::parse_scene("[mesh]\nsource = \"box\"\n", "scenes/cavity.toml");
   CHECK(run::default_run_path(unnamed) == fs::path("runs/cavity"));
-  const scene::Scene named = scene::parse_scene("[run]\noutput_dir = \"out/a\"\n[mesh]\nsource = \"box\"\n",
-                                  "scenes/cavity.toml");
+  const scene::Scene named = scene::parse_scene(
+      "[run]\noutput_dir = \"out/a\"\n[mesh]\nsource = \"box\"\n", "scenes/cavity.toml");
   CHECK(run::default_run_path(named) == fs::path("out/a"));
 }

@@ -12,11 +12,11 @@
 #include <numbers>
 #include <string>
 
-#include "tests/flow/field_test_utils.hpp"
 #include "flow/body_forcing.hpp"
 #include "run/run_loop.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_keys_flow.hpp"
+#include "tests/flow/field_test_utils.hpp"
 
 using namespace valsalva;
 
@@ -331,7 +331,7 @@ interval = 5
 interval_unit = "steps"
 fields = ["vorticity"]
 )",
-                                     "s.toml");
+                                        "s.toml");
   const auto o = scene::flow_run_options(scene, "dir");
   CHECK(o.projection.viscosity == doctest::Approx(1e-6));
   CHECK(o.time.cfl == 0.4);
@@ -362,8 +362,8 @@ TEST_CASE("time.scheme and time.project_stages become run options; unknown schem
   CHECK_FALSE(defaults.projection.project_stages);
   const auto classic = scene::flow_run_options(
       scene::parse_scene("[mesh]\nsource = \"box\"\n[time]\nscheme = \"rk4_classic\"\n"
-                      "project_stages = true\n",
-                      "c.toml"),
+                         "project_stages = true\n",
+                         "c.toml"),
       "dir");
   CHECK(classic.projection.time_scheme == flow::TimeScheme::rk4_classic);
   CHECK(classic.projection.project_stages);
@@ -432,7 +432,7 @@ type = "taylor_green_3d"
 velocity = 1.0
 length = 1.0
 )",
-                                     "tg3.toml");
+                                        "tg3.toml");
   mesh::BoxSpec box;
   box.cells = {4, 4, 4};
   box.length = Eigen::Vector3d::Constant(2 * std::numbers::pi);
@@ -465,7 +465,7 @@ stability_fraction = 0.8
 [poisson]
 periodic_damping = true
 )",
-                                     "k.toml");
+                                        "k.toml");
   const auto o = scene::flow_run_options(scene, "dir");
   CHECK(o.forcing.type == flow::ForcingSpec::Type::kolmogorov);
   CHECK(o.forcing.across == Eigen::Vector3d::UnitY());  // the default
@@ -572,7 +572,7 @@ mean_velocity = 0.5
 width = 6.283185307179586
 point = [0.0, 0.0, 0.0]
 direction = )" + direction + "\n",
-                           "p.toml");
+                              "p.toml");
   };
   auto o = scene::flow_run_options(scene_with("[2.0, 0.0, 0.0]"), "dir");
   CHECK(o.initial.type == "plane_poiseuille");

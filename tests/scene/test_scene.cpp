@@ -82,8 +82,8 @@ TEST_CASE("user-named tables, file paths and errors raised by other modules") {
   CHECK(s.path("mesh.file") == (data / "meshes/channel.msh").lexically_normal());
   CHECK(s.get<double>("mesh.scale") == 0.001);
 
-  const scene::SceneError e = s.error("mesh.periodic.spanwise.master", "patch 'front' is not in the mesh",
-                               "inlet, outlet, wall");
+  const scene::SceneError e = s.error("mesh.periodic.spanwise.master",
+                                      "patch 'front' is not in the mesh", "inlet, outlet, wall");
   CHECK(std::string(e.what()) == (data / "gmsh_periodic.toml").string() +
                                      ":8:1: key 'mesh.periodic.spanwise.master': patch 'front' is "
                                      "not in the mesh (accepted: inlet, outlet, wall)");
@@ -159,7 +159,7 @@ type = "wall"
 type = "velocity_inlet"
 velocity = [0, 0, 0.3]
 )",
-                              "w.toml", schema);
+                                            "w.toml", schema);
   CHECK(s.names("boundary") == std::vector<std::string>{"wall_1", "in"});
   CHECK(s.get<std::array<double, 3>>("boundary.in.velocity") == std::array{0.0, 0.0, 0.3});
   CHECK_FALSE(s.has("boundary.wall_1.velocity"));  // only inlets have a velocity
@@ -200,8 +200,8 @@ TEST_CASE("numbers that do not fit, non-finite floats and repeated directions ar
         "(accepted: each of \"x\", \"y\", \"z\", no repeats)");
   CHECK(error_of("[mesh]\nsource = \"box\"\nsource = \"pipe\"\n")
             .rfind("t.toml:3:10: TOML syntax error: ", 0) == 0);  // a key written twice
-  CHECK(scene::format_value(scene::KeyValue{std::map<std::string, double>{{"a b", 1.0}, {"c", 2.5}}}) ==
-        "{ \"a b\" = 1.0, c = 2.5 }");
+  CHECK(scene::format_value(scene::KeyValue{std::map<std::string, double>{
+            {"a b", 1.0}, {"c", 2.5}}}) == "{ \"a b\" = 1.0, c = 2.5 }");
 }
 
 TEST_CASE("bad declarations are refused when the schema is checked") {
@@ -235,9 +235,10 @@ TEST_CASE("edit distance") {
 
 TEST_CASE("overrides (run --set KEY=VALUE) replace or add keys and are checked like the file") {
   const std::string text = "[mesh]\nsource = \"box\"\n[mesh.box]\ncells = [4, 4, 4]\n";
-  const scene::Scene s = scene::parse_scene(text, "o.toml",
-                              {"mesh.box.cells=[6, 7, 8]", "flow.scheme=central4", "time.end = 2.5",
-                               "mesh.box.periodic=['x']", "run.overwrite=true"});
+  const scene::Scene s =
+      scene::parse_scene(text, "o.toml",
+                         {"mesh.box.cells=[6, 7, 8]", "flow.scheme=central4", "time.end = 2.5",
+                          "mesh.box.periodic=['x']", "run.overwrite=true"});
   CHECK(s.get<std::array<int, 3>>("mesh.box.cells") == std::array{6, 7, 8});
   CHECK(s.get<std::string>("flow.scheme") == "central4");  // a bare word is a string
   CHECK(s.get<double>("time.end") == 2.5);

@@ -24,7 +24,7 @@ TEST_CASE("docs/scenes.md matches the scene-key declarations byte for byte") {
     const fs::path fresh = fs::current_path() / "scenes.md.generated";
     std::ofstream(fresh, std::ios::binary) << generated.str();
     FAIL_CHECK(
-        committed.string() << " is out of date with io/scene_keys_*.cpp; regenerate it with\n"
+        committed.string() << " is out of date with scene/scene_keys_*.cpp; regenerate it with\n"
                            << "  build/bin/valsalva docs-scenes > docs/scenes.md\n"
                            << "or copy " << fresh.string());
   }

@@ -74,7 +74,7 @@ clamped = ["bottom"]
 tether_stiffness = 5.0
 stresses = false
 )",
-                                     "t.toml");
+                                        "t.toml");
   const auto setup = scene::read_immersed_setup(scene, scene::build_mesh(scene));
   REQUIRE(setup.structures.size() == 1);
   const auto& s = setup.structures[0];
@@ -162,7 +162,7 @@ contact_formulation = "two_half_pass"
 contact_wall_radius = 0.02
 contact_wall_faces = ["front"]
 )",
-                                     "t.toml");
+                                        "t.toml");
   const auto setup = scene::read_immersed_setup(scene, scene::build_mesh(scene));
   const auto& body = setup.structures.at(0).body;
   const auto& mesh = setup.structures.at(0).mesh;
@@ -220,7 +220,9 @@ elements = )" +
   }
   // Without initial_stretch the markers start at the reference positions.
   const auto plain = scene::parse_scene(fluid + sphere("[2, 2, 1]"), "t.toml");
-  CHECK(scene::read_immersed_setup(plain, scene::build_mesh(plain)).structures.at(0).initial.size() == 0);
+  CHECK(
+      scene::read_immersed_setup(plain, scene::build_mesh(plain)).structures.at(0).initial.size() ==
+      0);
   CHECK(error_of(sphere("[2, 3, 1]"))
             .find("key 'structure.cell.elements': a sphere shell has 2 x 3 elements") !=
         std::string::npos);
@@ -240,7 +242,8 @@ root_arc_centre = [0.0, 0.01, 0.0]
 root_arc_radius = )" +
            radius + "\n";
   };
-  const auto scene = scene::parse_scene(fluid + glued("0.003") + "initial_bend = 0.001\n", "t.toml");
+  const auto scene =
+      scene::parse_scene(fluid + glued("0.003") + "initial_bend = 0.001\n", "t.toml");
   const auto setup = scene::read_immersed_setup(scene, scene::build_mesh(scene));
   const auto& m = setup.structures.at(0).mesh;
   // The clamped end on the arc, the tip where it was, the nodes between evenly spread.

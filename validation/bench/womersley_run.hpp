@@ -1,57 +1,36 @@
-// One Womersley pipe run with its own time loop, for bench_womersley_study's set-up choices and
-// test_rank_agreement (the validation case validation/womersley runs its scenes through
-// run::Simulation instead): a rigid straight pipe
-// (Gmsh tetrahedra: 3D Delaunay, mesh/pipe_generator.hpp, or an extruded disk,
-// mesh/extruded_pipe_generator.hpp) with a Womersley-profile sine inflow
-// Q(t) = Q0 (1 + sin(2 pi t / T)), no-slip wall and an outlet, started from the exact solution
-// (flow/womersley.hpp; velocity and the linear pressure of G(0)) so that the viscous transient
-// of a start from rest, R^2 / (14.7 nu) = 3.1 s at Wo = 17, does not hide the discretisation
-// error. Fluid and period of the reference experiment (rho 1100, mu 3.6e-3, T = 1 s); the radius
-// gives the Womersley number exactly, R = Wo sqrt(nu T / (2 pi)), and the mean velocity is
-// U0 = 5 D / T (3.48 L/min through D = 24.5 mm at Wo = 17), so every Wo takes the same number
-// of steps per period at the same nodes per diameter.
-// Sampled: at `phases` equally spaced times of the period `sample_period` (0-based), the nodes
-// of the cross-section slab |z - L/2| <= h/2 against u_exact(r, t) e_z.
+// One inlet-driven Womersley pipe run for bench_womersley_study's set-up choices and
+// test_rank_agreement, through the product's one run path: the scene of the validation case
+// validation/womersley (womersley.toml: the extruded disk, mesh/extruded_pipe_generator.hpp;
+// womersley_delaunay.toml: Gmsh's 3D Delaunay tetrahedra, mesh/pipe_generator.hpp) with the
+// set-up as `--set`-style overrides, run by run::Simulation (validation::run_scene_file). A rigid
+// straight pipe with a Womersley-profile sine inflow Q(t) = Q0 (1 + sin(2 pi t / T)), no-slip
+// wall and an outlet, started from the exact solution (flow/womersley.hpp; velocity and the
+// linear pressure of G(0)) so that the viscous transient of a start from rest, R^2 / (14.7 nu) =
+// 3.1 s at Wo = 17, does not hide the discretisation error. Fluid and period of the reference
+// experiment (rho 1100, mu 3.6e-3, T = 1 s); R = Wo sqrt(nu T / (2 pi)), mean velocity
+// U0 = 5 D / T, so every Wo takes the same number of steps per period at the same nodes per
+// diameter. The fixed step (time.dt) is a whole number of steps per phase.
+// Sampled by the run's observer: at `phases` equally spaced times of the period
+// `sample_period` (0-based), the nodes of the cross-section slab |z - L/2| <= h/2 against
+// u_exact(r, t) e_z; with an LES model nu_sgs / nu of each step's last RK stage.
 #pragma once
 
 #include <mpi.h>
 
-#include <algorithm>
 #include <string>
 #include <vector>
 
-#include "flow/boundary_conditions.hpp"
 #include "flow/womersley.hpp"
-#include "mesh/extruded_pipe_generator.hpp"
-#include "mesh/local_mesh.hpp"
-#include "mesh/pipe_generator.hpp"
-#include "validation/gather_to_root.hpp"
+#include "validation/womersley/womersley_scene.hpp"
 
 namespace valsalva::validation {
 
-struct WomersleySetup {
-  double womersley = 17;
-  double nodes_per_diameter = 20;  // mesh size D / nodes_per_diameter
-  double length_in_diameters = 2;
-  flow::BoundaryType outlet = flow::BoundaryType::pressure_outlet;
-  std::string les_model = "none";  // none | sigma | wale | smagorinsky (default constants)
-  double cfl = 0.4;                // dt ~ cfl h / u_peak, a whole number of steps per phase
+// The scene's choices (WomersleyLevel: mesh type and size, outlet, les model, solver options;
+// dt is set from cfl) and the sampling.
+struct WomersleySetup : WomersleyLevel {
+  double cfl = 0.4;  // dt ~ cfl h / u_peak, a whole number of steps per phase
   int phases = 8;
-  int sample_period = 3;  // 3 = the 4th period
-  double poisson_tolerance = 1e-10;
-  int max_steps = 0;  // > 0: stop after that many steps (no sampling; rank tests)
-  // Study knobs (bench_womersley_study): the solver options and the sampled region.
-  bool stiffness_viscous = false;  // flow::ProjectionOptions::stiffness_viscous
-  bool pressure_damping = true;    // flow::ProjectionOptions::pressure_damping
   bool sample_whole_pipe = false;  // sample every node, not only the mid-length slab
-  bool unscaled_inlet = false;     // flow::BoundarySpec::unscaled_profile
-  double mesh_size_factor = 1;     // Gmsh's size = factor * D / nodes_per_diameter
-  mesh::PipeMeshOptions mesh;      // wall sizes are given in units of that Gmsh size
-  // The mesh: false = Gmsh's 3D Delaunay tetrahedra (mesh/pipe_generator.hpp, `mesh`), true = a
-  // Gmsh disk extruded into prism layers split into tetrahedra (mesh/extruded_pipe_generator.hpp).
-  bool extruded = false;
-  double layer_height = 1;        // extruded: the layers' height in units of the Gmsh size
-  mesh::DiskWallGrading grading;  // extruded: sizes in units of the Gmsh size
 };
 
 struct PhaseSample {
@@ -69,24 +48,19 @@ struct WomersleyResult {
   flow::Womersley exact;  // the exact solution of the run
   double radius = 0, length = 0, h = 0, u_peak = 0, dt = 0, wall = 0;
   long nodes = 0;
-  int steps = 0;
+  std::int64_t steps = 0;
   std::vector<PhaseSample> phases;
   double max_error = 0, l2_error = 0, transverse = 0;  // worst over the phases
-  // LES: nu_sgs / nu over owned nodes and all RK stages (max, and mean per node-stage).
-  double max_nu_ratio = 0, mean_nu_ratio = 0;
-  double first_stage_nu_ratio = 0;  // max at the first stage (the exact, parallel initial field)
-  double interior_nu_ratio = 0;     // max over the middle third |z - L/2| <= L/6
+  // LES: nu_sgs / nu of each step's last RK stage over owned nodes (max, mean per node-step,
+  // max over the middle third |z - L/2| <= L/6).
+  double max_nu_ratio = 0, mean_nu_ratio = 0, interior_nu_ratio = 0;
   // Final velocity (3 per node) and pressure by dual node (global order, on every rank).
   std::vector<double> final_velocity, final_pressure;
   double max_divergence = 0;
 };
 
-// The pipe radius of a Womersley number (the fluid and period of the runs), m.
-double womersley_radius(double womersley);
-
-// The pipe mesh of a set-up, the same on every rank of `comm` (collective). Throws as the
-// generators do.
-mesh::Mesh womersley_mesh(const WomersleySetup& setup, MPI_Comm comm);
+// The scene's overrides of a set-up, with its time.dt.
+std::vector<std::string> womersley_setup_overrides(const WomersleySetup& setup);
 
 // Collective over `comm`.
 WomersleyResult run_womersley(const WomersleySetup& setup, MPI_Comm comm);
@@ -99,22 +73,5 @@ struct PhaseSteps {
 };
 PhaseSteps phase_steps(const flow::Womersley& exact, double period, int phases, double cfl,
                        double h);
-
-// Running max and sum of nu_sgs / nu over the owned nodes of every RK stage (an LES model on a
-// laminar pipe flow).
-struct NuSgsRecord {
-  double max = 0, sum = 0, count = 0;
-  void add(const mesh::LocalMesh& local, const flow::ScalarField& nu_sgs, double nu) {
-    for (int i = 0; i < local.num_owned; ++i) {
-      max = std::max(max, nu_sgs[i] / nu);
-      sum += nu_sgs[i] / nu;
-    }
-    count += local.num_owned;
-  }
-  double global_max(const mesh::LocalMesh& local) const { return local.comm.max(max); }
-  double global_mean(const mesh::LocalMesh& local) const {
-    return local.comm.sum(sum) / std::max(1.0, local.comm.sum(count));
-  }
-};
 
 }  // namespace valsalva::validation

@@ -101,11 +101,11 @@ LevelResult run_level(const Context& ctx, int n, double re, double tolerance, do
   // final state; its log.csv is in runs/<tag>/.
   const auto scene =
       scene::load_scene(case_scene("cavity", "cavity.toml"),
-                     {fmt::format("mesh.box.cells=[{}, {}, 3]", n, n),
-                      fmt::format("mesh.box.length=[1.0, 1.0, {:.17g}]", 3.0 / n),
-                      fmt::format("flow.viscosity={:.17g}", lid * 1.0 / re),
-                      fmt::format("time.steady_tolerance={:.17g}", tolerance * lid * lid),
-                      fmt::format("time.end={:.17g}", t_max)});
+                        {fmt::format("mesh.box.cells=[{}, {}, 3]", n, n),
+                         fmt::format("mesh.box.length=[1.0, 1.0, {:.17g}]", 3.0 / n),
+                         fmt::format("flow.viscosity={:.17g}", lid * 1.0 / re),
+                         fmt::format("time.steady_tolerance={:.17g}", tolerance * lid * lid),
+                         fmt::format("time.end={:.17g}", t_max)});
   run::Simulation sim(scene, level_request(ctx.out_dir / "runs" / tag), ctx.comm);
   if (start)
     sim.set_initial_velocity([&](const Eigen::Vector3d& x) {

@@ -156,8 +156,8 @@ LevelRun run_level(const Context& ctx, const Level& level, const Benchmark& b) {
 
   const double zc = thickness / 2;
   analysis::Probes probes(mesh, sim.metrics(), local,
-                    {{"front", Eigen::Vector3d(0.15, centre_y, zc)},
-                     {"back", Eigen::Vector3d(0.25, centre_y, zc)}});
+                          {{"front", Eigen::Vector3d(0.15, centre_y, zc)},
+                           {"back", Eigen::Vector3d(0.25, centre_y, zc)}});
   const StagnationTraction stagnation(mesh, centre_x, centre_y, 0.5 * kDiameter);
   flow::TensorField grad;
   auto sample = [&] {

@@ -62,9 +62,9 @@ void write_data(const Context& ctx, const std::vector<Run>& runs) {
         "{:.6e},{:.6e},{:.6e},{:.6f},{:.6e},{:.6e},{:.1f}\n",
         label, s.h, s.kernel_width, s.thickness, r.nodes, r.markers, r.dt, r.dt_min, r.dt_max,
         r.steps, r.leak, r.leak_reference, r.leak / r.leak_reference, r.leak_change, r.ramp_leak,
-        r.jump / analysis::pascal_per_mmhg, s.pressure / analysis::pascal_per_mmhg, r.tether, r.interior,
-        r.wall, r.interior / (r.jump * r.interior_span), r.deflection, r.static_deflection,
-        r.wall_seconds);
+        r.jump / analysis::pascal_per_mmhg, s.pressure / analysis::pascal_per_mmhg, r.tether,
+        r.interior, r.wall, r.interior / (r.jump * r.interior_span), r.deflection,
+        r.static_deflection, r.wall_seconds);
     for (const auto& h : r.history)
       history.print(
           "{},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e}\n",

@@ -151,9 +151,9 @@ class Sampler {
           "in the channel [0, {:.4g}] m; lengthen `upstream` or `downstream`",
           x_up, x_down, region_radius, s_.length()));
     up_ = std::make_unique<analysis::RegionMean>(sim.local(), mid + Eigen::Vector3d(x_up, 0, 0),
-                                           region_radius, "upstream");
+                                                 region_radius, "upstream");
     down_ = std::make_unique<analysis::RegionMean>(sim.local(), mid + Eigen::Vector3d(x_down, 0, 0),
-                                             region_radius, "downstream");
+                                                   region_radius, "downstream");
     split_ = std::make_unique<ForceSplit>(s_, sim, ib.options().transfer);
     r_.interior_span = split_->interior_span();
     const auto& mesh = sim.mesh();

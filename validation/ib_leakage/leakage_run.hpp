@@ -2,9 +2,9 @@
 // overrides, run by run::Simulation like `valsalva run` (validation/scene_run.hpp); the pressure
 // is ramped to the full load and held. Sampled by the run's observer, every t_end / 400 and at
 // the end: the flow through the ends, the area the membrane displaces, the pressure jump between
-// two region means (analysis::RegionMean: spheres of radius 1.5 mm on the centre line, 5 mm upstream
-// of the membrane and 5 mm downstream of the static solution's most deflected point under the
-// imposed load, beyond the widest kernel's reach of 3 mm), the tether reaction and the
+// two region means (analysis::RegionMean: spheres of radius 1.5 mm on the centre line, 5 mm
+// upstream of the membrane and 5 mm downstream of the static solution's most deflected point under
+// the imposed load, beyond the widest kernel's reach of 3 mm), the tether reaction and the
 // membrane's force on the fluid split between interior and wall nodes.
 // The leak is measured by mass balance, not from the instantaneous flow: the fluid upstream of
 // the membrane gains D dA/dt (A the area between the membrane's mid-surface and its flat start,

@@ -42,7 +42,7 @@ void run_level(const Context& ctx, Level& level) {
   // run::Simulation; started from the exact parabola, mean velocity Q / (pi R^2).
   const auto scene =
       scene::load_scene(case_scene("poiseuille_wss", "poiseuille_wss.toml"),
-                     {fmt::format("mesh.pipe.size={:.17g}", kRadius / level.resolution)});
+                        {fmt::format("mesh.pipe.size={:.17g}", kRadius / level.resolution)});
   run::Simulation sim(scene, level_request(dir), ctx.comm);
   sim.set_initial_velocity([&](const Eigen::Vector3d& x) {
     const double s = std::min(1.0, std::hypot(x.x(), x.y()) / kRadius);
@@ -52,7 +52,8 @@ void run_level(const Context& ctx, Level& level) {
   const auto& local = sim.local();
   const auto& comm = local.comm;
   const analysis::RegionMean up(local, Eigen::Vector3d(0, 0, z_up), 0.5 * kRadius, "upstream");
-  const analysis::RegionMean down(local, Eigen::Vector3d(0, 0, z_down), 0.5 * kRadius, "downstream");
+  const analysis::RegionMean down(local, Eigen::Vector3d(0, 0, z_down), 0.5 * kRadius,
+                                  "downstream");
   const double dp_exact = 8 * kMu * (z_down - z_up) * kQ / (M_PI * std::pow(kRadius, 4));
   level.dp_error = (up(sim.state().pressure) - down(sim.state().pressure)) / dp_exact - 1;
   level.nodes = sim.metrics().num_nodes();

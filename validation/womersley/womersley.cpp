@@ -39,7 +39,9 @@
 #include "run/simulation.hpp"
 #include "validation/case.hpp"
 #include "validation/gather_to_root.hpp"
+#include "validation/nu_sgs_stats.hpp"
 #include "validation/scene_run.hpp"
+#include "validation/womersley/womersley_scene.hpp"
 
 namespace valsalva::validation {
 
@@ -74,10 +76,6 @@ struct Run {
   std::vector<double> final_velocity;  // by dual node, every rank
 };
 
-double pipe_radius(double wo) {
-  return wo * std::sqrt(kViscosity / kDensity / (2 * std::numbers::pi / kPeriod));
-}
-
 // The laminar run on the same mesh, outlet and steps as `les`, among the runs before it.
 const Run* laminar_twin(const std::vector<Run>& runs, const Run& les) {
   for (const auto& r : runs) {
@@ -90,39 +88,10 @@ const Run* laminar_twin(const std::vector<Run>& runs, const Run& les) {
   return nullptr;
 }
 
-// The scene's overrides of a level: mesh, the exact start, the inlet, the outlet, the step.
-std::vector<std::string> overrides(const Run& run, double q0) {
-  const auto& s = run.setup;
-  const double r = run.radius, l = run.length, h = run.h;
-  const std::string mesh = s.delaunay ? "mesh.pipe." : "mesh.extruded_pipe.";
-  std::vector<std::string> o = {fmt::format("{}radius={:.17g}", mesh, r),
-                                fmt::format("{}length={:.17g}", mesh, l),
-                                fmt::format("{}size={:.17g}", mesh, h),
-                                fmt::format("initial.womersley.radius={:.17g}", r),
-                                fmt::format("initial.womersley.flow_rate={:.17g}", q0),
-                                fmt::format("initial.womersley.amplitude={:.17g}", q0),
-                                fmt::format("initial.womersley.period={:.17g}", kPeriod),
-                                fmt::format("initial.womersley.point=[0.0, 0.0, {:.17g}]", l),
-                                fmt::format("boundary.inlet.flow_rate={:.17g}", q0),
-                                fmt::format("boundary.inlet.amplitude={:.17g}", q0),
-                                fmt::format("boundary.inlet.period={:.17g}", kPeriod),
-                                fmt::format("les.model={}", s.les),
-                                fmt::format("time.dt={:.17g}", run.dt),
-                                fmt::format("time.end={:.17g}", (s.sample_period + 1) * kPeriod)};
-  if (s.convective) o.push_back("boundary.outlet.type=convective_outlet");
-  // Rows for the thin Stokes layer of Wo 17 only (header): first 0.2 h, ratio 1.2, to 1.5 h.
-  if (!s.delaunay && s.wo > 10) {
-    o.push_back(fmt::format("mesh.extruded_pipe.layer_first={:.17g}", 0.2 * h));
-    o.push_back("mesh.extruded_pipe.layer_ratio=1.2");
-    o.push_back(fmt::format("mesh.extruded_pipe.layer_thickness={:.17g}", 1.5 * h));
-  }
-  return o;
-}
-
 void run_one(const Context& ctx, Run& run) {
   const auto& s = run.setup;
   const double nu = kViscosity / kDensity;
-  run.radius = pipe_radius(s.wo);
+  run.radius = womersley_radius(s.wo);
   const double d = 2 * run.radius;
   run.h = d / s.npd, run.length = 2 * d;
   const double q0 = 5 * d / kPeriod * std::numbers::pi * run.radius * run.radius;
@@ -139,7 +108,8 @@ void run_one(const Context& ctx, Run& run) {
   auto radius_of = [&](const Eigen::Vector3d& x) {
     return std::min(std::hypot(x.x(), x.y()), r_pipe);
   };
-  double transverse = 0, nu_max = 0, nu_sum = 0, nu_count = 0, nu_interior = 0;
+  double transverse = 0, nu_interior = 0;
+  NuSgsStats nu_stats;
   SceneRun measure;
   measure.at_start = [&](const run::Simulation& sim) {
     if (s.les == "none") return;
@@ -156,13 +126,11 @@ void run_one(const Context& ctx, Run& run) {
   measure.observer = [&](const run::Simulation& sim, std::int64_t step) {
     const auto& local = sim.local();
     const auto& u = sim.state().velocity;
-    if (const auto& nu_sgs = sim.loop().subgrid_viscosity(); !nu_sgs.empty())
-      for (int j = 0; j < local.num_owned; ++j) {
-        nu_max = std::max(nu_max, nu_sgs[j] / nu);
-        nu_sum += nu_sgs[j] / nu, nu_count += 1;
-        if (std::abs(local.position[j].z() - l / 2) <= l / 6)
-          nu_interior = std::max(nu_interior, nu_sgs[j] / nu);
-      }
+    const auto& nu_sgs = sim.loop().subgrid_viscosity();
+    nu_stats.add(local, nu_sgs, nu);
+    for (int j = 0; j < (nu_sgs.empty() ? 0 : local.num_owned); ++j)
+      if (std::abs(local.position[j].z() - l / 2) <= l / 6)
+        nu_interior = std::max(nu_interior, nu_sgs[j] / nu);
     if (step <= first_sample || (step - first_sample) % per_phase != 0) return;
     Phase p;
     p.time = sim.state().time;
@@ -192,16 +160,21 @@ void run_one(const Context& ctx, Run& run) {
     const auto& local = sim.local();
     run.nodes = local.global_nodes;
     run.transverse = local.comm.max(transverse) / run.u_peak;
-    run.max_nu = local.comm.max(nu_max);
-    run.mean_nu = local.comm.sum(nu_sum) / std::max(1.0, local.comm.sum(nu_count));
+    run.max_nu = nu_stats.global_max(local);
+    run.mean_nu = nu_stats.global_mean(local);
     run.interior_nu = local.comm.max(nu_interior);
     run.final_velocity =
         velocity_by_dual_node(local, sim.state().velocity, sim.metrics().num_nodes());
   };
   const double t0 = MPI_Wtime();
-  const auto result = run_scene_file(
-      case_scene("womersley", s.delaunay ? "womersley_delaunay.toml" : "womersley.toml"),
-      overrides(run, q0), ctx.out_dir / "runs" / run.label, ctx.comm, measure);
+  WomersleyLevel level;
+  level.womersley = s.wo, level.nodes_per_diameter = s.npd, level.extruded = !s.delaunay;
+  level.outlet = s.convective ? "convective_outlet" : "pressure_outlet";
+  level.les_model = s.les, level.sample_period = s.sample_period, level.dt = run.dt;
+  if (!s.delaunay && s.wo > 10)  // rows for the thin Stokes layer of Wo 17 only (header)
+    level.layer_first = 0.2, level.layer_thickness = 1.5;
+  const auto result = run_scene_file(womersley_scene(level), womersley_overrides(level),
+                                     ctx.out_dir / "runs" / run.label, ctx.comm, measure);
   run.steps = result.summary.steps;
   run.max_divergence = result.summary.max_divergence;
   run.wall = MPI_Wtime() - t0;
@@ -369,6 +342,50 @@ void run_case(const Context& ctx, Report& report) {
 }
 
 }  // namespace
+
+double womersley_radius(double wo) {
+  return wo * std::sqrt(kViscosity / kDensity / (2 * std::numbers::pi / kPeriod));
+}
+
+std::filesystem::path womersley_scene(const WomersleyLevel& level) {
+  return case_scene("womersley", level.extruded ? "womersley.toml" : "womersley_delaunay.toml");
+}
+
+std::vector<std::string> womersley_overrides(const WomersleyLevel& s) {
+  const double r = womersley_radius(s.womersley), d = 2 * r, l = s.length_in_diameters * d;
+  const double size = s.mesh_size_factor * d / s.nodes_per_diameter;
+  const double q0 = 5 * d / kPeriod * std::numbers::pi * r * r;
+  const std::string mesh = s.extruded ? "mesh.extruded_pipe." : "mesh.pipe.";
+  std::vector<std::string> o = {
+      fmt::format("{}radius={:.17g}", mesh, r),
+      fmt::format("{}length={:.17g}", mesh, l),
+      fmt::format("{}size={:.17g}", mesh, size),
+      fmt::format("initial.womersley.radius={:.17g}", r),
+      fmt::format("initial.womersley.flow_rate={:.17g}", q0),
+      fmt::format("initial.womersley.amplitude={:.17g}", q0),
+      fmt::format("initial.womersley.period={:.17g}", kPeriod),
+      fmt::format("initial.womersley.point=[0.0, 0.0, {:.17g}]", l),
+      fmt::format("boundary.inlet.flow_rate={:.17g}", q0),
+      fmt::format("boundary.inlet.amplitude={:.17g}", q0),
+      fmt::format("boundary.inlet.period={:.17g}", kPeriod),
+      fmt::format("boundary.outlet.type={}", s.outlet),
+      fmt::format("les.model={}", s.les_model),
+      fmt::format("flow.viscous_weights={}", s.stiffness_viscous ? "stiffness" : "two_point"),
+      fmt::format("poisson.tolerance={:.17g}", s.poisson_tolerance),
+      fmt::format("time.dt={:.17g}", s.dt),
+      fmt::format("time.end={:.17g}", (s.sample_period + 1) * kPeriod),
+      fmt::format("time.max_steps={}", s.max_steps)};
+  if (!s.extruded) return o;
+  const std::pair<const char*, double> graded[] = {{"layer_height", s.layer_height},
+                                                   {"wall_size", s.wall_size},
+                                                   {"wall_distance", s.wall_distance},
+                                                   {"layer_first", s.layer_first},
+                                                   {"layer_thickness", s.layer_thickness}};
+  for (const auto& [key, value] : graded)
+    o.push_back(fmt::format("{}{}={:.17g}", mesh, key, value * size));
+  o.push_back(fmt::format("{}layer_ratio={:.17g}", mesh, s.layer_ratio));
+  return o;
+}
 
 Case womersley_case() {
   return {"womersley",

@@ -35,36 +35,24 @@
 #include <numbers>
 #include <set>
 
-#include "core/comm.hpp"
 #include "core/numeric_table.hpp"
 #include "flow/womersley.hpp"
 #include "run/simulation.hpp"
 #include "validation/case.hpp"
 #include "validation/gather_to_root.hpp"
+#include "validation/nu_sgs_stats.hpp"
 #include "validation/scene_run.hpp"
+#include "validation/womersley_periodic/womersley_periodic_scene.hpp"
 
 namespace valsalva::validation {
 
 namespace {
 
-constexpr double kDensity = 1100, kViscosity = 3.6e-3, kPeriod = 1.0, kWomersley = 17;
-constexpr int kPhases = 8;
-constexpr double kCfl = 0.4;
+constexpr double kDensity = 1100, kViscosity = 3.6e-3, kPeriod = 1.0;
 
-struct Run {
+struct Run : PeriodicLevel, PeriodicRun {
   std::string label;
-  double npd = 10;  // triangle size D / npd
-  bool split = false;
-  bool flow_rate = false;  // driven by its flow rate ([forcing] flow_rate) instead of G(t)
-  std::string les = "none";
-  int periods = 2;
-  // Results.
-  long nodes = 0;
-  std::int64_t steps = 0;
-  double dt = 0, u_peak = 0, max_error = 0, l2_error = 0, transverse = 0;
-  double max_nu_ratio = 0, mean_nu_ratio = 0, change = 0, max_divergence = 0, wall = 0;
-  std::vector<double> samples;         // rank 0: time, r, u_z, u_exact per node, last period
-  std::vector<double> final_velocity;  // by dual node, every rank
+  double change = 0;  // LES: max |u - u_laminar| / u_peak at the end (same mesh, partition)
   // Flow-rate drive: max |Q - Q(t)| / Q0 over the steps; max |F - rho G(t - dt/2)| / max |rho G|
   // over the last period (the force of a step acts over it: its midpoint).
   double held = 0, force_error = 0;
@@ -75,48 +63,6 @@ const Run& find(const std::vector<Run>& runs, const std::string& label) {
       std::find_if(runs.begin(), runs.end(), [&](const Run& r) { return r.label == label; });
   if (it == runs.end()) throw std::logic_error("womersley_periodic: no run " + label);
   return *it;
-}
-
-// The Womersley solution of the case: R from Wo, Q0 = (5 D / T) pi R^2.
-flow::Womersley exact_solution() {
-  const double nu = kViscosity / kDensity, omega = 2 * std::numbers::pi / kPeriod;
-  const double r = kWomersley * std::sqrt(nu / omega);
-  const double q0 = 5 * 2 * r / kPeriod * std::numbers::pi * r * r;
-  return flow::Womersley::from_sine(r, nu, q0, q0, kPeriod, 0.0);
-}
-
-// The scene's overrides of a run: mesh, the exact start, the force rho G(t) written as
-// rho (G0 + A sin(w t + phase)) (G(t) - G0 = a cos w t + b sin w t, a = G(0) - G0,
-// b = G(T/4) - G0: A = hypot(a, b), phase = atan2(a, b)), the time step and the model.
-std::vector<std::string> overrides(const Run& run, const flow::Womersley& exact, double dt) {
-  const double r = exact.radius, h = 2 * r / run.npd;
-  const double q0 = exact.mean;
-  std::vector<std::string> o = {
-      fmt::format("mesh.periodic_pipe.radius={:.17g}", r),
-      fmt::format("mesh.periodic_pipe.size={:.17g}", h),
-      fmt::format("mesh.periodic_pipe.length={:.17g}", 3 * h),
-      fmt::format("mesh.periodic_pipe.cells={}", run.split ? "tetra" : "prism"),
-      fmt::format("initial.womersley.radius={:.17g}", r),
-      fmt::format("initial.womersley.flow_rate={:.17g}", q0),
-      fmt::format("initial.womersley.amplitude={:.17g}", q0),
-      fmt::format("initial.womersley.period={:.17g}", kPeriod),
-      fmt::format("forcing.period={:.17g}", kPeriod),
-      fmt::format("time.dt={:.17g}", dt),
-      fmt::format("time.end={:.17g}", run.periods * kPeriod),
-      fmt::format("les.model={}", run.les)};
-  if (run.flow_rate) {  // the target Q(t) = Q0 (1 + sin(w t)) through the mid-period section
-    o.push_back(fmt::format("forcing.flow_rate={:.17g}", q0));
-    o.push_back(fmt::format("forcing.flow_rate_amplitude={:.17g}", q0));
-    o.push_back(fmt::format("section.cut.point=[0.0, 0.0, {:.17g}]", 1.5 * h));
-    return o;
-  }
-  const double g0 = 0.5 * (exact.pressure_gradient(0) + exact.pressure_gradient(kPeriod / 2));
-  const double a = exact.pressure_gradient(0) - g0, b = exact.pressure_gradient(kPeriod / 4) - g0;
-  o.push_back(fmt::format("forcing.force=[0.0, 0.0, {:.17g}]", kDensity * g0));
-  o.push_back(
-      fmt::format("forcing.force_amplitude=[0.0, 0.0, {:.17g}]", kDensity * std::hypot(a, b)));
-  o.push_back(fmt::format("forcing.phase={:.17g}", std::atan2(a, b)));
-  return o;
 }
 
 // The flow-rate drive's records: sections.csv and log.csv of the run (rank 0).
@@ -140,67 +86,12 @@ void read_drive(const std::filesystem::path& dir, const flow::Womersley& exact, 
 }
 
 void run_one(const Context& ctx, Run& run, const flow::Womersley& exact) {
-  const double r_pipe = exact.radius, h = 2 * r_pipe / run.npd, nu = kViscosity / kDensity;
-  // The step: CFL kCfl at the peak centreline velocity over the period, a whole number per phase.
-  for (int k = 0; k < 1000; ++k)
-    run.u_peak = std::max(run.u_peak, exact.velocity(0.0, kPeriod * k / 1000));
-  const double interval = kPeriod / kPhases;
-  const auto per_phase = static_cast<std::int64_t>(std::ceil(interval / (kCfl * h / run.u_peak)));
-  run.dt = interval / per_phase;
-  const std::int64_t first_sample = per_phase * kPhases * (run.periods - 1);
-  double transverse = 0, nu_max = 0, nu_sum = 0, nu_count = 0;
-  std::vector<double> mine;
-  auto radius_of = [&](const Eigen::Vector3d& x) {
-    return std::min(std::hypot(x.x(), x.y()), r_pipe);
-  };
-  SceneRun measure;
-  measure.observer = [&](const run::Simulation& sim, std::int64_t step) {
-    const auto& local = sim.local();
-    const auto& u = sim.state().velocity;
-    for (int j = 0; j < local.num_owned; ++j)
-      transverse = std::max(transverse, std::hypot(u[j].x(), u[j].y()));
-    if (const auto& nu_sgs = sim.loop().subgrid_viscosity(); !nu_sgs.empty())
-      for (int j = 0; j < local.num_owned; ++j) {
-        nu_max = std::max(nu_max, nu_sgs[j] / nu);
-        nu_sum += nu_sgs[j] / nu, nu_count += 1;
-      }
-    if (step <= first_sample || (step - first_sample) % per_phase != 0) return;
-    const double t = sim.state().time;
-    double e2 = 0, volume = 0, emax = 0;
-    for (int j = 0; j < local.num_owned; ++j) {
-      const double r = radius_of(local.position[j]), ue = exact.velocity(r, t);
-      emax = std::max(emax, std::abs(u[j].z() - ue));
-      e2 += local.volume[j] * (u[j].z() - ue) * (u[j].z() - ue);
-      volume += local.volume[j];
-      mine.insert(mine.end(), {t, r, u[j].z(), ue});
-    }
-    run.max_error = std::max(run.max_error, local.comm.max(emax) / run.u_peak);
-    run.l2_error =
-        std::max(run.l2_error, std::sqrt(local.comm.sum(e2) / local.comm.sum(volume)) / run.u_peak);
-  };
-  measure.at_end = [&](const run::Simulation& sim) {
-    const auto& local = sim.local();
-    run.nodes = local.global_nodes;
-    run.transverse = local.comm.max(transverse) / run.u_peak;
-    run.max_nu_ratio = local.comm.max(nu_max);
-    run.mean_nu_ratio = local.comm.sum(nu_sum) / std::max(1.0, local.comm.sum(nu_count));
-    run.final_velocity =
-        velocity_by_dual_node(local, sim.state().velocity, sim.metrics().num_nodes());
-    run.samples = gather_to_root(mine, ctx.comm);
-  };
-  const double t0 = MPI_Wtime();
   const auto dir = ctx.out_dir / "runs" / run.label;
-  const auto result = run_scene_file(
-      case_scene("womersley_periodic",
-                 run.flow_rate ? "womersley_periodic_flow_rate.toml" : "womersley_periodic.toml"),
-      overrides(run, exact, run.dt), dir, ctx.comm, measure);
+  static_cast<PeriodicRun&>(run) = run_periodic_level(run, exact, dir, ctx.comm);
   int rank = 0;
   MPI_Comm_rank(ctx.comm, &rank);
   if (run.flow_rate && rank == 0) read_drive(dir, exact, run);
-  for (double* x : {&run.held, &run.force_error}) core::Comm(ctx.comm).broadcast(*x);
-  run.steps = result.summary.steps;
-  run.max_divergence = result.summary.max_divergence;
-  run.wall = MPI_Wtime() - t0;
+  for (double* x : {&run.held, &run.force_error}) MPI_Bcast(x, 1, MPI_DOUBLE, 0, ctx.comm);
 }
 
 void write_samples(const Context& ctx, const std::vector<Run>& runs, double radius,
@@ -228,7 +119,7 @@ void run_case(const Context& ctx, Report& report) {
   int rank = 0;
   MPI_Comm_rank(ctx.comm, &rank);
   const int periods = ctx.quick ? 2 : 4;
-  const auto exact = exact_solution();
+  const auto exact = periodic_womersley_exact();
   std::vector<Run> runs;
   const auto add = [&](const std::string& label, double npd, bool split, const std::string& les) {
     Run r;
@@ -352,7 +243,115 @@ void run_case(const Context& ctx, Report& report) {
              order("prism_d20", "prism_d40", true), 2.0, 0.5, Check::at_least);
 }
 
+// The scene's overrides of a level: mesh, the exact start, the drive, the step and the model.
+// The force rho G(t) is written as rho (G0 + A sin(w t + phase)) (G(t) - G0 = a cos w t +
+// b sin w t, a = G(0) - G0, b = G(T/4) - G0: A = hypot(a, b), phase = atan2(a, b)).
+std::vector<std::string> periodic_womersley_overrides(const PeriodicLevel& run,
+                                                      const flow::Womersley& exact, double dt) {
+  const double r = exact.radius, h = 2 * r / run.npd;
+  const double q0 = exact.mean;
+  std::vector<std::string> o = {
+      fmt::format("mesh.periodic_pipe.radius={:.17g}", r),
+      fmt::format("mesh.periodic_pipe.size={:.17g}", h),
+      fmt::format("mesh.periodic_pipe.length={:.17g}", 3 * h),
+      fmt::format("mesh.periodic_pipe.cells={}", run.split ? "tetra" : "prism"),
+      fmt::format("initial.womersley.radius={:.17g}", r),
+      fmt::format("initial.womersley.flow_rate={:.17g}", q0),
+      fmt::format("initial.womersley.amplitude={:.17g}", q0),
+      fmt::format("initial.womersley.period={:.17g}", kPeriod),
+      fmt::format("forcing.period={:.17g}", kPeriod),
+      fmt::format("time.dt={:.17g}", dt),
+      fmt::format("time.end={:.17g}", run.periods * kPeriod),
+      fmt::format("les.model={}", run.les)};
+  if (run.flow_rate) {  // the target Q(t) = Q0 (1 + sin(w t)) through the mid-period section
+    o.push_back(fmt::format("forcing.flow_rate={:.17g}", q0));
+    o.push_back(fmt::format("forcing.flow_rate_amplitude={:.17g}", q0));
+    o.push_back(fmt::format("section.cut.point=[0.0, 0.0, {:.17g}]", 1.5 * h));
+    return o;
+  }
+  const double g0 = 0.5 * (exact.pressure_gradient(0) + exact.pressure_gradient(kPeriod / 2));
+  const double a = exact.pressure_gradient(0) - g0, b = exact.pressure_gradient(kPeriod / 4) - g0;
+  o.push_back(fmt::format("forcing.force=[0.0, 0.0, {:.17g}]", kDensity * g0));
+  o.push_back(
+      fmt::format("forcing.force_amplitude=[0.0, 0.0, {:.17g}]", kDensity * std::hypot(a, b)));
+  o.push_back(fmt::format("forcing.phase={:.17g}", std::atan2(a, b)));
+  return o;
+}
+
 }  // namespace
+
+flow::Womersley periodic_womersley_exact(double womersley) {
+  const double nu = kViscosity / kDensity, omega = 2 * std::numbers::pi / kPeriod;
+  const double r = womersley * std::sqrt(nu / omega);
+  const double q0 = 5 * 2 * r / kPeriod * std::numbers::pi * r * r;
+  return flow::Womersley::from_sine(r, nu, q0, q0, kPeriod, 0.0);
+}
+
+PeriodicRun run_periodic_level(const PeriodicLevel& level, const flow::Womersley& exact,
+                               const std::filesystem::path& run_dir, MPI_Comm comm) {
+  const double t0 = MPI_Wtime();
+  PeriodicRun run;
+  const double r_pipe = exact.radius, h = 2 * r_pipe / level.npd, nu = kViscosity / kDensity;
+  const double length = 3 * h;  // the period: 3 layers
+  // The step: CFL level.cfl at the peak centreline velocity over the period, a whole number per
+  // phase.
+  for (int k = 0; k < 1000; ++k)
+    run.u_peak = std::max(run.u_peak, exact.velocity(0.0, kPeriod * k / 1000));
+  const double interval = kPeriod / level.phases;
+  const auto per_phase =
+      static_cast<std::int64_t>(std::ceil(interval / (level.cfl * h / run.u_peak)));
+  run.dt = interval / per_phase;
+  const std::int64_t first_sample = per_phase * level.phases * (level.periods - 1);
+  double transverse = 0;
+  NuSgsStats nu_sgs;
+  std::vector<double> mine;
+  auto radius_of = [&](const Eigen::Vector3d& x) {
+    return std::min(std::hypot(x.x(), x.y()), r_pipe);
+  };
+  SceneRun measure;
+  measure.observer = [&](const run::Simulation& sim, std::int64_t step) {
+    const auto& local = sim.local();
+    const auto& u = sim.state().velocity;
+    for (int j = 0; j < local.num_owned; ++j)
+      transverse = std::max(transverse, std::hypot(u[j].x(), u[j].y()));
+    nu_sgs.add(local, sim.loop().subgrid_viscosity(), nu);
+    if (step <= first_sample || (step - first_sample) % per_phase != 0) return;
+    const double t = sim.state().time;
+    double e2 = 0, volume = 0, emax = 0, q = 0, qe = 0;
+    for (int j = 0; j < local.num_owned; ++j) {
+      const double r = radius_of(local.position[j]), ue = exact.velocity(r, t);
+      emax = std::max(emax, std::abs(u[j].z() - ue));
+      e2 += local.volume[j] * (u[j].z() - ue) * (u[j].z() - ue);
+      volume += local.volume[j];
+      q += local.volume[j] * u[j].z(), qe += local.volume[j] * ue;
+      mine.insert(mine.end(), {t, r, u[j].z(), ue});
+    }
+    run.max_error = std::max(run.max_error, local.comm.max(emax) / run.u_peak);
+    run.l2_error =
+        std::max(run.l2_error, std::sqrt(local.comm.sum(e2) / local.comm.sum(volume)) / run.u_peak);
+    run.phase_time.push_back(t);
+    run.mean_flux.push_back(local.comm.sum(q) / length);
+    run.exact_mean_flux.push_back(local.comm.sum(qe) / length);
+  };
+  measure.at_end = [&](const run::Simulation& sim) {
+    const auto& local = sim.local();
+    run.nodes = local.global_nodes;
+    run.transverse = local.comm.max(transverse) / run.u_peak;
+    run.max_nu_ratio = nu_sgs.global_max(local);
+    run.mean_nu_ratio = nu_sgs.global_mean(local);
+    run.final_velocity =
+        velocity_by_dual_node(local, sim.state().velocity, sim.metrics().num_nodes());
+    run.samples = gather_to_root(mine, comm);
+  };
+  const auto result = run_scene_file(
+      case_scene("womersley_periodic",
+                 level.flow_rate ? "womersley_periodic_flow_rate.toml" : "womersley_periodic.toml"),
+      periodic_womersley_overrides(level, exact, run.dt), run_dir, comm, measure);
+  run.steps = result.summary.steps;
+  run.max_divergence = result.summary.max_divergence;
+  run.wall = MPI_Wtime() - t0;
+  return run;
+}
 
 Case womersley_periodic_case() {
   return {"womersley_periodic",

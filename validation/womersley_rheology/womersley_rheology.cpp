@@ -79,7 +79,7 @@ struct Result {
 };
 
 flow::ViscosityModel carreau_yasuda_blood() {
-  flow::ViscosityModel m;  // Cho & Kensey 1991, the scene defaults (io/scene_keys_rheology)
+  flow::ViscosityModel m;  // Cho & Kensey 1991, the scene defaults (scene/scene_keys_rheology)
   m.law = flow::ViscosityLaw::carreau_yasuda;
   m.mu_0 = 0.056, m.mu_inf = kMuInf, m.lambda = 3.313, m.a = 2, m.n = 0.3568;
   return m;

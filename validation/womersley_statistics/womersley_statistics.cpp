@@ -1,8 +1,8 @@
 // The analysis chain of a run checked on a flow whose statistics are known exactly: purely
 // oscillatory Womersley flow (Womersley, J. Physiol. 127, 1955; flow/womersley.hpp) at Wo = 4 in
 // a rigid pipe (Gmsh tetrahedra), the exact profile imposed at both ends, run through run::RunLoop
-// with the scene-level analysis (analysis::RunAnalysis: phase statistics, wall shear stress, probes)
-// exactly as `valsalva run` does.
+// with the scene-level analysis (analysis::RunAnalysis: phase statistics, wall shear stress,
+// probes) exactly as `valsalva run` does.
 //   1. Phase statistics: 8 bins over 2 cycles. The phase mean must equal the analytic profile
 //      sampled at the same instants (an accumulator fed the exact field at the same steps), and
 //      the RMS the analytic within-bin RMS (not zero: the flow changes within a bin of T/8); the
@@ -26,12 +26,12 @@
 #include "analysis/piv_compare.hpp"
 #include "analysis/run_analysis.hpp"
 #include "core/comm.hpp"
-#include "run/run_loop.hpp"
 #include "flow/womersley.hpp"
 #include "io/xdmf_writer.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
 #include "mesh/pipe_generator.hpp"
+#include "run/run_loop.hpp"
 #include "validation/case.hpp"
 
 namespace valsalva::validation {
@@ -198,7 +198,7 @@ void run_level(const Context& ctx, Level& level) {
   if (comm.root()) {
     const double c30 = std::cos(M_PI / 6), s30 = std::sin(M_PI / 6);
     const analysis::PivPlane plane(Eigen::Vector3d(0, 0, kLength / 2), Eigen::Vector3d(c30, s30, 0),
-                             Eigen::Vector3d(0, 0, 1));
+                                   Eigen::Vector3d(0, 0, 1));
     std::mt19937 rng(1388);
     std::normal_distribution<double> noise(0.0, kPivNoise * u_peak);
     std::uniform_real_distribution<double> coin(0.0, 1.0);
