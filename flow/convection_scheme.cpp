@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "core/enum_names.hpp"
 #include "flow/convection_central4.hpp"
 
 namespace valsalva::flow {
@@ -24,18 +25,21 @@ class ConvectionCentral2 final : public ConvectionScheme {
 
 }  // namespace
 
-const std::vector<std::string>& convection_scheme_names() {
-  static const std::vector<std::string> names = {"central2", "central4"};
-  return names;
-}
+constexpr core::EnumNames<ConvectionKind, 2> kKinds{{"central2", "central4"},
+                                                    "flow: convective scheme"};
 
-std::unique_ptr<ConvectionScheme> make_convection_scheme(const std::string& name,
+VALSALVA_ENUM_NAMES(ConvectionKind, kKinds, convection_scheme_names, to_string,
+                    parse_convection_kind)
+
+std::unique_ptr<ConvectionScheme> make_convection_scheme(ConvectionKind kind,
                                                          const mesh::LocalMesh& mesh) {
-  if (name == "central2") return std::make_unique<ConvectionCentral2>(mesh);
-  if (name == "central4") return std::make_unique<ConvectionCentral4>(mesh);
-  std::string accepted;
-  for (const auto& n : convection_scheme_names()) accepted += (accepted.empty() ? "" : ", ") + n;
-  throw std::invalid_argument("flow: convective scheme '" + name + "' is not one of " + accepted);
+  switch (kind) {
+    case ConvectionKind::central2:
+      return std::make_unique<ConvectionCentral2>(mesh);
+    case ConvectionKind::central4:
+      return std::make_unique<ConvectionCentral4>(mesh);
+  }
+  throw std::logic_error("flow::make_convection_scheme: unknown convective scheme");
 }
 
 }  // namespace valsalva::flow

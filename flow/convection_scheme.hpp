@@ -23,6 +23,7 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "flow/face_flux.hpp"
@@ -43,12 +44,18 @@ class ConvectionScheme {
   virtual std::string name() const = 0;
 };
 
-// The accepted names, in the order of the scene documentation.
-const std::vector<std::string>& convection_scheme_names();
+// The convective scheme of the scene key flow.scheme (ProjectionOptions::scheme).
+enum class ConvectionKind { central2, central4 };
 
-// Throws std::invalid_argument naming the scheme and the accepted names for an unknown one, and
-// the scheme's own error when the mesh cannot carry it (central4: fewer than 2 ghost layers).
-std::unique_ptr<ConvectionScheme> make_convection_scheme(const std::string& name,
+// The accepted names, in the order of the scene documentation: "central2", "central4".
+const std::vector<std::string>& convection_scheme_names();
+std::string to_string(ConvectionKind kind);
+// std::invalid_argument naming the scheme and the accepted names for an unknown name.
+ConvectionKind parse_convection_kind(std::string_view name);
+
+// Throws the scheme's own error when the mesh cannot carry it (central4: fewer than 2 ghost
+// layers).
+std::unique_ptr<ConvectionScheme> make_convection_scheme(ConvectionKind kind,
                                                          const mesh::LocalMesh& mesh);
 
 }  // namespace valsalva::flow

@@ -14,12 +14,30 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace valsalva::flow {
 
+// The start of the scene key initial.type.
+enum class InitialType {
+  rest,
+  taylor_green,
+  taylor_green_3d,
+  cyclic_sines,
+  womersley,
+  plane_poiseuille
+};
+
+// The scene names, in the order of the enum: "rest", "taylor_green", "taylor_green_3d",
+// "cyclic_sines", "womersley", "plane_poiseuille".
+const std::vector<std::string>& initial_type_names();
+std::string to_string(InitialType type);
+// std::invalid_argument naming the value and the accepted names for an unknown name.
+InitialType parse_initial_type(std::string_view name);
+
 struct InitialCondition {
-  std::string type =
-      "rest";             // rest | taylor_green(_3d) | cyclic_sines | womersley | plane_poiseuille
+  InitialType type = InitialType::rest;
   double velocity = 1.0;  // U0, m/s (taylor_green, taylor_green_3d, cyclic_sines)
   double length = 1.0;    // L, m: the period is 2 pi L (the vortices, cyclic_sines)
   // womersley: Womersley's pipe flow (flow/womersley.hpp) at t = 0 for the flow rate

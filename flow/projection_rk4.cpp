@@ -21,7 +21,8 @@ ProjectionRK4::ProjectionRK4(const mesh::LocalMesh& mesh, ProjectionOptions opti
       weights_(flow::laplacian_weights(mesh)),
       poisson_weights_(poisson_weights.empty() ? weights_ : std::move(poisson_weights)),
       convection_(make_convection_scheme(options.scheme, mesh)),
-      old_convection_(options.scheme == "central4" && !options.fourth_order_operators),
+      old_convection_(options.scheme == ConvectionKind::central4 &&
+                      !options.fourth_order_operators),
       poisson_(mesh, poisson_weights_, options.poisson),
       dp_(mesh.num_local(), 0.0),
       rk_(tableau(options.time_scheme)),
@@ -110,7 +111,7 @@ void ProjectionRK4::projection_flux(const VectorField& u, EdgeField& flux) {
 }
 
 void ProjectionRK4::scheme_flux(const VectorField& u, EdgeField& flux) {
-  if (options_.scheme == "central4") {
+  if (options_.scheme == ConvectionKind::central4) {
     gradient(mesh_, u, grad_flux_);
     hermite_face_flux(mesh_, u, grad_flux_, flux);
   } else {
@@ -223,7 +224,7 @@ int ProjectionRK4::project_stage(VectorField& w, double c, double dt, double t,
   if (auto* bc = options_.boundary.get()) bc->hold_outlets(w), bc->impose(w, t);
   // The stage's convective flux: the projected flux, with the scheme's face value in place of
   // the projection's where they differ (as F_1 of convective_flux()).
-  if ((options_.scheme == "central4") != static_cast<bool>(order4_)) {
+  if ((options_.scheme == ConvectionKind::central4) != static_cast<bool>(order4_)) {
     scheme_flux(w, flux_offset_);
     for (std::size_t e = 0; e < stage_flux_.size(); ++e) stage_flux_[e] += flux_offset_[e];
     projection_flux(w, flux_offset_);

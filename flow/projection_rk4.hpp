@@ -67,9 +67,9 @@ struct FlowState {
 };
 
 struct ProjectionOptions {
-  double density = 1.0;             // kg/m^3
-  double viscosity = 0.0;           // kinematic, m^2/s
-  std::string scheme = "central2";  // convective scheme (flow::make_convection_scheme)
+  double density = 1.0;                              // kg/m^3
+  double viscosity = 0.0;                            // kinematic, m^2/s
+  ConvectionKind scheme = ConvectionKind::central2;  // flow.scheme (flow/convection_scheme.hpp)
   // Laminar viscous term with the Poisson matrix's edge weights and no non-orthogonal
   // correction (flow::viscous with correction = false): on all-tetrahedral meshes with the P1
   // weights of flow::poisson_weights this is the median-dual flux of the piecewise-linear

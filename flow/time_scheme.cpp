@@ -3,6 +3,8 @@
 
 #include <stdexcept>
 
+#include "core/enum_names.hpp"
+
 namespace valsalva::flow {
 
 RungeKuttaTableau tableau(TimeScheme scheme) {
@@ -15,23 +17,9 @@ RungeKuttaTableau tableau(TimeScheme scheme) {
   throw std::logic_error("flow::tableau: unknown time scheme");
 }
 
-const std::vector<std::string>& time_scheme_names() {
-  static const std::vector<std::string> names{"rk4_jameson", "rk4_classic"};
-  return names;
-}
+constexpr core::EnumNames<TimeScheme, 2> kSchemes{{"rk4_jameson", "rk4_classic"},
+                                                  "flow: time scheme"};
 
-std::string time_scheme_name(TimeScheme scheme) {
-  return time_scheme_names()[static_cast<std::size_t>(scheme)];
-}
-
-TimeScheme parse_time_scheme(std::string_view name) {
-  const auto& names = time_scheme_names();
-  for (std::size_t i = 0; i < names.size(); ++i)
-    if (names[i] == name) return static_cast<TimeScheme>(i);
-  std::string accepted;
-  for (const auto& n : names) accepted += (accepted.empty() ? "" : ", ") + n;
-  throw std::invalid_argument("flow: time scheme '" + std::string(name) + "' is not one of " +
-                              accepted);
-}
+VALSALVA_ENUM_NAMES(TimeScheme, kSchemes, time_scheme_names, time_scheme_name, parse_time_scheme)
 
 }  // namespace valsalva::flow

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "core/enum_names.hpp"
 #include "mesh/mesh_check.hpp"
 
 namespace valsalva::mesh {
@@ -46,8 +47,8 @@ double hashed_uniform(std::uint64_t seed, std::int64_t i, std::int64_t j, std::i
 class BoxBuilder {
  public:
   explicit BoxBuilder(const BoxSpec& spec) : spec_(spec) {
-    mesh_.source =
-        fmt::format("box {}x{}x{} {}", spec.cells[0], spec.cells[1], spec.cells[2], spec.cell_type);
+    mesh_.source = fmt::format("box {}x{}x{} {}", spec.cells[0], spec.cells[1], spec.cells[2],
+                               to_string(spec.cell_type));
     mesh_.add_region("fluid");
     for (const char* p : {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"}) mesh_.add_patch(p);
     make_grid_nodes();
@@ -99,14 +100,14 @@ class BoxBuilder {
         }
   }
 
-  std::string type_of_cell(int i) const {
-    if (spec_.cell_type != "mixed") return spec_.cell_type;
+  BoxCellType type_of_cell(int i) const {
+    if (spec_.cell_type != BoxCellType::mixed) return spec_.cell_type;
     // Slabs along x: hexahedra | pyramids | tetrahedra | prisms (conforming interfaces).
     const int q = spec_.cells[0] / 4;
-    if (i < q) return "hexa";
-    if (i < 2 * q) return "pyramid";
-    if (i < 3 * q) return "tetra";
-    return "prism";
+    if (i < q) return BoxCellType::hexa;
+    if (i < 2 * q) return BoxCellType::pyramid;
+    if (i < 3 * q) return BoxCellType::tetra;
+    return BoxCellType::prism;
   }
 
   void add_oriented(CellType type, std::vector<GlobalIndex> nodes) {
@@ -127,21 +128,25 @@ class BoxBuilder {
     std::array<GlobalIndex, 8> c;
     for (int v = 0; v < 8; ++v)
       c[v] = grid_node(i + kHexCorner[v][0], j + kHexCorner[v][1], k + kHexCorner[v][2]);
-    const std::string type = type_of_cell(i);
-    if (type == "hexa") {
-      mesh_.add_cell(CellType::hexa, c, 0);
-    } else if (type == "tetra") {
-      for (const auto& t : kKuhnTets)
-        add_oriented(CellType::tetra, {c[t[0]], c[t[1]], c[t[2]], c[t[3]]});
-    } else if (type == "prism") {
-      for (const auto& p : kPrisms)
-        add_oriented(CellType::prism, {c[p[0]], c[p[1]], c[p[2]], c[p[3]], c[p[4]], c[p[5]]});
-    } else if (type == "pyramid") {
-      add_pyramids(i, c);
-    } else {
-      throw std::invalid_argument(fmt::format(
-          "box mesh: cell_type '{}' is not one of hexa, tetra, prism, pyramid, mixed", type));
+    switch (type_of_cell(i)) {
+      case BoxCellType::hexa:
+        mesh_.add_cell(CellType::hexa, c, 0);
+        return;
+      case BoxCellType::tetra:
+        for (const auto& t : kKuhnTets)
+          add_oriented(CellType::tetra, {c[t[0]], c[t[1]], c[t[2]], c[t[3]]});
+        return;
+      case BoxCellType::prism:
+        for (const auto& p : kPrisms)
+          add_oriented(CellType::prism, {c[p[0]], c[p[1]], c[p[2]], c[p[3]], c[p[4]], c[p[5]]});
+        return;
+      case BoxCellType::pyramid:
+        add_pyramids(i, c);
+        return;
+      case BoxCellType::mixed:
+        break;  // type_of_cell never returns it
     }
+    throw std::logic_error("box mesh: no cell type for a mixed-mesh slab");
   }
 
   // Six pyramids around a centre node, one on each hexahedron face. In a mixed mesh the +x
@@ -152,7 +157,8 @@ class BoxBuilder {
     mesh_.nodes.push_back(centre / 8.0);
     logical_.push_back({-1, -1, -1});
     const GlobalIndex apex = mesh_.num_nodes() - 1;
-    const bool next_is_tetra = spec_.cell_type == "mixed" && type_of_cell(i + 1) == "tetra";
+    const bool next_is_tetra =
+        spec_.cell_type == BoxCellType::mixed && type_of_cell(i + 1) == BoxCellType::tetra;
     for (const auto& f : mesh::cell_faces(CellType::hexa)) {
       const bool plus_x = f == std::vector<int>{1, 2, 6, 5};
       if (plus_x && next_is_tetra) {
@@ -219,6 +225,11 @@ class BoxBuilder {
 
 }  // namespace
 
+constexpr core::EnumNames<BoxCellType, 5> kCellTypes{{"hexa", "tetra", "prism", "pyramid", "mixed"},
+                                                     "box mesh: cell_type"};
+
+VALSALVA_ENUM_NAMES(BoxCellType, kCellTypes, box_cell_type_names, to_string, parse_box_cell_type)
+
 mesh::Mesh generate_box(const BoxSpec& spec) {
   for (int d = 0; d < 3; ++d) {
     if (spec.cells[d] < 1)
@@ -234,7 +245,7 @@ mesh::Mesh generate_box(const BoxSpec& spec) {
   if (spec.perturbation < 0 || spec.perturbation > 0.4)
     throw std::invalid_argument(
         fmt::format("box mesh: perturbation = {} must be in [0, 0.4]", spec.perturbation));
-  if (spec.cell_type == "mixed" && spec.cells[0] < 4)
+  if (spec.cell_type == BoxCellType::mixed && spec.cells[0] < 4)
     throw std::invalid_argument("box mesh: a mixed mesh needs at least 4 cells along x");
   return BoxBuilder(spec).build();
 }

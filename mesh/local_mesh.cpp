@@ -7,6 +7,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "core/enum_names.hpp"
+
 namespace valsalva::mesh {
 
 namespace {
@@ -52,21 +54,23 @@ std::vector<int> metis_partition(const DualMetrics& m, int parts) {
 
 }  // namespace
 
+constexpr core::EnumNames<PartitionMethod, 2> kMethods{{"metis", "block"}, "partition method"};
+
+VALSALVA_ENUM_NAMES(PartitionMethod, kMethods, partition_method_names, to_string,
+                    parse_partition_method)
+
 std::vector<int> partition_nodes(const DualMetrics& metrics, const core::Comm& comm,
-                                 const std::string& method) {
+                                 PartitionMethod method) {
   const GlobalIndex n = metrics.num_nodes();
   std::vector<int> part(static_cast<std::size_t>(n), 0);
   if (comm.size() == 1) return part;
   if (n < comm.size())
     throw std::runtime_error(
         fmt::format("cannot split {} mesh nodes over {} ranks", n, comm.size()));
-  if (method == "block") {
+  if (method == PartitionMethod::block) {
     for (GlobalIndex i = 0; i < n; ++i) part[i] = static_cast<int>(i * comm.size() / n);
     return part;
   }
-  if (method != "metis")
-    throw std::invalid_argument(
-        fmt::format("partition method '{}' is not one of metis, block", method));
   if (comm.root()) part = metis_partition(metrics, comm.size());
   comm.broadcast(std::span<int>(part.data(), n));
   return part;

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/comm.hpp"
@@ -14,9 +15,19 @@
 
 namespace valsalva::mesh {
 
+// How the dual nodes are split over the ranks (the scene key partition.method): METIS k-way on
+// the node graph, or contiguous blocks of global node numbers.
+enum class PartitionMethod { metis, block };
+
+// The scene names, in the order of the enum: "metis", "block".
+const std::vector<std::string>& partition_method_names();
+std::string to_string(PartitionMethod method);
+// std::invalid_argument naming the value and the accepted names for an unknown name.
+PartitionMethod parse_partition_method(std::string_view name);
+
 struct PartitionOptions {
-  int ghost_layers = 2;          // the 4th-order scheme and the IBM kernels need >= 2
-  std::string method = "metis";  // metis | block
+  int ghost_layers = 2;  // the 4th-order scheme and the IBM kernels need >= 2
+  PartitionMethod method = PartitionMethod::metis;
 };
 
 struct LocalMesh {
@@ -66,6 +77,6 @@ LocalMesh distribute(const Mesh& mesh, const DualMetrics& metrics, MPI_Comm comm
 
 // Owner rank of every dual node (same on all ranks); exposed for tests and output.
 std::vector<int> partition_nodes(const DualMetrics& metrics, const core::Comm& comm,
-                                 const std::string& method);
+                                 PartitionMethod method);
 
 }  // namespace valsalva::mesh

@@ -28,6 +28,7 @@
 #include "scene/scene_keys_boundary.hpp"
 #include "scene/scene_keys_flow.hpp"
 #include "scene/scene_keys_les.hpp"
+#include "scene/scene_keys_partition.hpp"
 #include "scene/scene_keys_structure.hpp"
 #include "scene/scene_keys_valve.hpp"
 #include "valve/valve_monitor.hpp"
@@ -185,7 +186,7 @@ void Simulation::Parts::print_summary(const scene::Scene& s, double rho, double 
       "mesh: {} nodes ({} dual nodes), {} cells; partition: {} ranks, {} ghost layers, "
       "method {}\n",
       mesh.num_nodes(), metrics.num_nodes(), mesh.num_cells(), local.comm.size(),
-      partition.ghost_layers, partition.method);
+      partition.ghost_layers, mesh::to_string(partition.method));
   const auto law = s.get<std::string>("flow.viscosity_model");
   fmt::print("flow: rho {:.6g} kg/m3, {}, scheme {}, initial state {}\n", rho,
              law == "newtonian" ? fmt::format("nu {:.6g} m2/s", viscosity)
@@ -251,10 +252,9 @@ Simulation::Simulation(const scene::Scene& scene_in, const RunRequest& request, 
   scene::check_step_count(scene, p.metrics);
   p.run_path = dir;  // prepared below, once a checkpoint to restart from has been opened
 
-  p.partition.ghost_layers = scene.get<int>("partition.ghost_layers");
-  p.partition.method = scene.get<std::string>("partition.method");
+  p.partition = scene::partition_options(scene);
   phase.next(fmt::format("partitioning the mesh ({} dual nodes, partition.method = {})",
-                         p.metrics.num_nodes(), p.partition.method));
+                         p.metrics.num_nodes(), mesh::to_string(p.partition.method)));
   p.local = mesh::distribute(p.mesh, p.metrics, comm, p.partition);
   phase.next(
       fmt::format("setting up the LES model, the analysis and the structures ({} local nodes)",

@@ -37,7 +37,7 @@ mesh::BoxSpec box_spec(const Scene& scene) {
           fmt::format("[{}, {}, {}] cells", c[0], c[1], c[2]), double(c[0]) * c[1] * c[2], 101);
       !problem.empty())
     throw scene.error("mesh.box.cells", problem);
-  spec.cell_type = scene.get<std::string>("mesh.box.cell_type");
+  spec.cell_type = mesh::parse_box_cell_type(scene.get<std::string>("mesh.box.cell_type"));
   spec.perturbation = scene.get<double>("mesh.box.perturbation");
   spec.seed = static_cast<std::uint64_t>(scene.get<std::int64_t>("mesh.box.seed"));
   for (const auto& axis : scene.get<std::vector<std::string>>("mesh.box.periodic"))

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flow/convection_scheme.hpp"
+#include "flow/initial_condition.hpp"
 #include "flow/time_scheme.hpp"
 #include "scene/scene_keys.hpp"
 #include "scene/scene_keys_rheology.hpp"
@@ -49,7 +51,7 @@ void declare_flow_keys(Schema& s) {
           "Dynamic viscosity (Newtonian); 3.6e-3 is the reference experiment's blood analogue; "
           "the 1e9-step rule of flow.density applies; not used by the momentum equation with a "
           "non-Newtonian flow.viscosity_model");
-  s.choice("flow.scheme", {"central2", "central4"})
+  s.choice("flow.scheme", flow::convection_scheme_names())
       .def("central2")
       .unit_of("-")
       .doc(
@@ -234,8 +236,7 @@ void declare_flow_keys(Schema& s) {
       .doc("hypre's own diagnostic output (0 = none)");
 
   s.section("initial", "The state at t = 0.");
-  s.choice("initial.type", {"rest", "taylor_green", "taylor_green_3d", "cyclic_sines", "womersley",
-                            "plane_poiseuille"})
+  s.choice("initial.type", flow::initial_type_names())
       .def("rest")
       .unit_of("-")
       .doc(
@@ -391,7 +392,7 @@ scene::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pa
   o.projection.density = rho;
   o.projection.viscosity = scene.get<double>("flow.viscosity") / rho;
   o.projection.rheology = read_viscosity_model(scene);
-  o.projection.scheme = scene.get<std::string>("flow.scheme");
+  o.projection.scheme = flow::parse_convection_kind(scene.get<std::string>("flow.scheme"));
   o.projection.fourth_order_operators = scene.get<bool>("flow.fourth_order_operators");
   o.projection.stiffness_viscous = scene.get<std::string>("flow.viscous_weights") == "stiffness";
   o.velocity_limit = scene.get<double>("flow.velocity_limit");
@@ -423,14 +424,16 @@ scene::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pa
                           ? scene::PoissonWeights::prism_slab
                           : scene::PoissonWeights::standard;
 
-  o.initial.type = scene.get<std::string>("initial.type");
-  if (o.initial.type == "taylor_green" || o.initial.type == "taylor_green_3d" ||
-      o.initial.type == "cyclic_sines") {
-    const std::string table =
-        o.initial.type == "cyclic_sines" ? "initial.cyclic_sines" : "initial.taylor_green";
+  using flow::InitialType;
+  o.initial.type = flow::parse_initial_type(scene.get<std::string>("initial.type"));
+  if (o.initial.type == InitialType::taylor_green ||
+      o.initial.type == InitialType::taylor_green_3d ||
+      o.initial.type == InitialType::cyclic_sines) {
+    const std::string table = o.initial.type == InitialType::cyclic_sines ? "initial.cyclic_sines"
+                                                                          : "initial.taylor_green";
     o.initial.velocity = scene.get<double>(table + ".velocity");
     o.initial.length = scene.get<double>(table + ".length");
-  } else if (o.initial.type == "womersley") {
+  } else if (o.initial.type == InitialType::womersley) {
     const std::string k = "initial.womersley.";
     auto& ic = o.initial;
     ic.radius = scene.get<double>(k + "radius");
@@ -445,7 +448,7 @@ scene::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pa
     if (!(ic.axis.norm() > 0) || !ic.axis.allFinite())
       throw scene.error(k + "axis", "the axis must be a non-zero finite vector");
     ic.pressure_gradient = scene.get<std::string>(k + "pressure") == "gradient";
-  } else if (o.initial.type == "plane_poiseuille") {
+  } else if (o.initial.type == InitialType::plane_poiseuille) {
     const std::string k = "initial.plane_poiseuille.";
     auto& ic = o.initial;
     auto vec = [&](const std::string& key) {
@@ -565,11 +568,11 @@ void check_step_count(const Scene& scene, const mesh::DualMetrics& metrics) {
 }
 
 void check_initial_state(const Scene& scene, const mesh::Mesh& mesh) {
-  const auto type = scene.get<std::string>("initial.type");
-  if (type != "taylor_green" && type != "taylor_green_3d") return;
+  const auto type = flow::parse_initial_type(scene.get<std::string>("initial.type"));
+  if (type != flow::InitialType::taylor_green && type != flow::InitialType::taylor_green_3d) return;
   const double length = scene.get<double>("initial.taylor_green.length");
   const double period = 2 * M_PI * length;
-  const int axes = type == "taylor_green" ? 2 : 3;
+  const int axes = type == flow::InitialType::taylor_green ? 2 : 3;
   for (int axis = 0; axis < axes; ++axis) {
     const char* name = axis == 0 ? "x" : axis == 1 ? "y" : "z";
     double found = 0;  // the translation along this axis, 0 if none

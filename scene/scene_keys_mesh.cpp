@@ -1,5 +1,6 @@
 // Scene keys of the fluid mesh (flow/ mesh, io/ mesh import and generators): its source, the
 // built-in box and pipe generators, and periodic patch pairs.
+#include "mesh/box_generator.hpp"
 #include "scene/scene_keys.hpp"
 
 namespace valsalva::scene {
@@ -42,7 +43,7 @@ void declare_mesh_keys(Schema& s) {
       .at_least(1)
       .unit_of("-")
       .doc("Number of hexahedral cells along x, y, z");
-  s.choice("mesh.box.cell_type", {"hexa", "tetra", "prism", "pyramid", "mixed"})
+  s.choice("mesh.box.cell_type", mesh::box_cell_type_names())
       .def("hexa")
       .unit_of("-")
       .doc(

@@ -157,8 +157,7 @@ void declare_structure_keys(Schema& s) {
           "the mean of its nodes (a body released from a deformed shape; factors whose product is "
           "1 keep its volume); the mesh as placed stays the stress-free reference");
   declare_bar_shape_keys(s, k);
-  s.choice(k + ".material",
-           {"neo_hookean", "mooney_rivlin", "hgo", "st_venant_kirchhoff", "linear_elastic"})
+  s.choice(k + ".material", structure::material_law_names())
       .def("neo_hookean")
       .unit_of("-")
       .doc("Constitutive law (structure/material.hpp)");
@@ -478,18 +477,17 @@ ImmersedSetup read_immersed_setup(const Scene& scene, const mesh::Mesh& mesh) {
     st.initial = initial_positions(scene, k, st.mesh);
     if (bend.size() > 0) st.initial = st.mesh.X + rotation * bend;
     const auto where = scene.location(k + ".parameters").str() + ": key '" + k + ".parameters'";
+    const auto law = structure::parse_material_law(scene.get<std::string>(k + ".material"));
     try {
       st.material = structure::make_material(
-          scene.get<std::string>(k + ".material"),
-          scene.get<std::map<std::string, double>>(k + ".parameters"), where);
+          law, scene.get<std::map<std::string, double>>(k + ".parameters"), where);
     } catch (const std::invalid_argument& e) {
       throw SceneError({e.what()});
     }
     // Mooney-Rivlin's shear modulus is 2 (C10 + C01): each may be 0, not both (a solid that
     // resists no shear lets the leaflet fold through the flow).
     if (const auto p = scene.get<std::map<std::string, double>>(k + ".parameters");
-        scene.get<std::string>(k + ".material") == "mooney_rivlin" &&
-        !(p.at("C10") + p.at("C01") > 0))
+        law == structure::MaterialLaw::mooney_rivlin && !(p.at("C10") + p.at("C01") > 0))
       throw scene.error(k + ".parameters",
                         fmt::format("material 'mooney_rivlin': the shear modulus 2 (C10 + C01) = "
                                     "{:g} Pa is not positive",

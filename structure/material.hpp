@@ -9,6 +9,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "structure/tensor.hpp"
 
@@ -64,12 +66,22 @@ std::unique_ptr<Material> make_st_venant_kirchhoff(double E, double nu);
 // Small strain: P = sigma = lambda tr(eps) I + 2 mu eps, eps = sym(F) - I (not objective).
 std::unique_ptr<Material> make_linear_elastic(double E, double nu);
 
-// Builds a material from a type name and named parameters (SI), as read from a scene:
+// The constitutive laws of make_material (the scene key <structure>.material).
+enum class MaterialLaw { neo_hookean, mooney_rivlin, hgo, st_venant_kirchhoff, linear_elastic };
+
+// The scene names, in the order of the enum: "neo_hookean", "mooney_rivlin", "hgo",
+// "st_venant_kirchhoff", "linear_elastic".
+const std::vector<std::string>& material_law_names();
+std::string to_string(MaterialLaw law);
+// std::invalid_argument naming the value and the accepted names for an unknown name.
+MaterialLaw parse_material_law(std::string_view name);
+
+// Builds a material from its law and named parameters (SI), as read from a scene:
 //   neo_hookean {G, K}, mooney_rivlin {C10, C01, C11, K}, hgo {mu, K, k1, k2, kappa, gamma},
 //   st_venant_kirchhoff {E, nu}, linear_elastic {E, nu}.
-// Unknown type, unknown or missing parameter, or a non-physical value throws a message naming
-// `where` (e.g. "scene.toml:12 [solid.material]") and the offending key and value.
-std::unique_ptr<Material> make_material(const std::string& type,
+// An unknown or missing parameter, or a non-physical value throws a message naming `where`
+// (e.g. "scene.toml:12 [solid.material]") and the offending key and value.
+std::unique_ptr<Material> make_material(MaterialLaw law,
                                         const std::map<std::string, double>& params,
                                         const std::string& where);
 

@@ -1,5 +1,7 @@
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -47,39 +49,59 @@ class ParamReader {
 
 }  // namespace
 
-std::unique_ptr<Material> make_material(const std::string& type,
-                                        const std::map<std::string, double>& p,
+const std::vector<std::string>& material_law_names() {
+  static const std::vector<std::string> names{"neo_hookean", "mooney_rivlin", "hgo",
+                                              "st_venant_kirchhoff", "linear_elastic"};
+  return names;
+}
+
+// structure/ stands on Eigen and fmt only, so not on core/enum_names.hpp.
+std::string to_string(MaterialLaw law) {
+  return material_law_names().at(static_cast<std::size_t>(law));
+}
+
+MaterialLaw parse_material_law(std::string_view name) {
+  const auto& names = material_law_names();
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end())
+    throw std::invalid_argument(
+        fmt::format("unknown material type '{}' (expected {})", name, fmt::join(names, ", ")));
+  return static_cast<MaterialLaw>(it - names.begin());
+}
+
+std::unique_ptr<Material> make_material(MaterialLaw law, const std::map<std::string, double>& p,
                                         const std::string& where) {
-  if (type == "neo_hookean") {
-    ParamReader r(type, p, where, {"G", "K"});
-    return make_neo_hookean(r.get("G", 0, true), r.get("K", 0, true));
+  const std::string type = to_string(law);
+  switch (law) {
+    case MaterialLaw::neo_hookean: {
+      ParamReader r(type, p, where, {"G", "K"});
+      return make_neo_hookean(r.get("G", 0, true), r.get("K", 0, true));
+    }
+    case MaterialLaw::mooney_rivlin: {
+      ParamReader r(type, p, where, {"C10", "C01", "C11", "K"});
+      return make_mooney_rivlin(r.get("C10", 0, false), r.get("C01", 0, false),
+                                r.get("C11", -INFINITY, false), r.get("K", 0, true));
+    }
+    case MaterialLaw::hgo: {
+      ParamReader r(type, p, where, {"mu", "K", "k1", "k2", "kappa", "gamma"});
+      HgoParameters h;
+      h.mu = r.get("mu", 0, true);
+      h.K = r.get("K", 0, true);
+      h.k1 = r.get("k1", 0, false);
+      h.k2 = r.get("k2", 0, true);
+      h.kappa = r.get("kappa", 0, false, 1.0 / 3.0 + 1e-15);
+      h.gamma = r.get("gamma", -M_PI, false, M_PI);
+      return make_hgo(h);
+    }
+    case MaterialLaw::st_venant_kirchhoff:
+    case MaterialLaw::linear_elastic: {
+      ParamReader r(type, p, where, {"E", "nu"});
+      const double E = r.get("E", 0, true), nu = r.get("nu", -1, true, 0.5);
+      return law == MaterialLaw::linear_elastic ? make_linear_elastic(E, nu)
+                                                : make_st_venant_kirchhoff(E, nu);
+    }
   }
-  if (type == "mooney_rivlin") {
-    ParamReader r(type, p, where, {"C10", "C01", "C11", "K"});
-    return make_mooney_rivlin(r.get("C10", 0, false), r.get("C01", 0, false),
-                              r.get("C11", -INFINITY, false), r.get("K", 0, true));
-  }
-  if (type == "hgo") {
-    ParamReader r(type, p, where, {"mu", "K", "k1", "k2", "kappa", "gamma"});
-    HgoParameters h;
-    h.mu = r.get("mu", 0, true);
-    h.K = r.get("K", 0, true);
-    h.k1 = r.get("k1", 0, false);
-    h.k2 = r.get("k2", 0, true);
-    h.kappa = r.get("kappa", 0, false, 1.0 / 3.0 + 1e-15);
-    h.gamma = r.get("gamma", -M_PI, false, M_PI);
-    return make_hgo(h);
-  }
-  if (type == "st_venant_kirchhoff" || type == "linear_elastic") {
-    ParamReader r(type, p, where, {"E", "nu"});
-    const double E = r.get("E", 0, true), nu = r.get("nu", -1, true, 0.5);
-    return type == "linear_elastic" ? make_linear_elastic(E, nu) : make_st_venant_kirchhoff(E, nu);
-  }
-  throw std::invalid_argument(
-      fmt::format("{}: unknown material type '{}' (expected neo_hookean, mooney_rivlin, hgo, "
-                  "st_venant_kirchhoff, "
-                  "linear_elastic)",
-                  where, type));
+  throw std::logic_error("structure::make_material: unknown material law");
 }
 
 }  // namespace valsalva::structure

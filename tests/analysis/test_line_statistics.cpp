@@ -30,7 +30,7 @@ constexpr int bins = 4, cycles = 4;
 
 mesh::Mesh box() {
   mesh::BoxSpec spec;
-  spec.cell_type = "tetra";
+  spec.cell_type = mesh::BoxCellType::tetra;
   spec.cells = {5, 4, 3};
   return mesh::generate_box(spec);
 }

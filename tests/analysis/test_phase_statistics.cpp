@@ -26,7 +26,7 @@ constexpr int bins = 4, cycles = 8;
 
 mesh::Mesh box() {
   mesh::BoxSpec spec;
-  spec.cell_type = "tetra";
+  spec.cell_type = mesh::BoxCellType::tetra;
   spec.cells = {6, 4, 3};
   return mesh::generate_box(spec);
 }
@@ -74,7 +74,7 @@ void run_cycles(const mesh::LocalMesh& local, analysis::PhaseStatistics& stats, 
 TEST_CASE("phase statistics of a synthetic periodic signal") {
   const auto mesh = box();
   const auto metrics = mesh::compute_dual_metrics(mesh);
-  auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
   analysis::PhaseStatistics stats(local, {period, bins, 0.2, rho, "phase"},
                                   analysis::all_owned_nodes(local));
   CHECK(stats.bin_of(0.2) == 0);
@@ -125,7 +125,7 @@ TEST_CASE("phase statistics of a synthetic periodic signal") {
 TEST_CASE("phase statistics: large offset, Welford against the naive sum of squares") {
   const auto mesh = box();
   const auto metrics = mesh::compute_dual_metrics(mesh);
-  auto local = mesh::distribute(mesh, metrics, MPI_COMM_SELF, {2, "metis"});
+  auto local = mesh::distribute(mesh, metrics, MPI_COMM_SELF, {2, mesh::PartitionMethod::metis});
   analysis::PhaseStatistics stats(local, {0.0, 1, 0.0, rho, "mean"}, {0});
   const double offset = 1e8, sigma = 1e-3;
   double sum = 0, sum2 = 0;
@@ -158,7 +158,7 @@ TEST_CASE("phase statistics: checkpoint round trip and output") {
       fs::path("test_output") / "phase_statistics" / ("np" + std::to_string(core::Comm().size()));
   const auto mesh = box();
   const auto metrics = mesh::compute_dual_metrics(mesh);
-  auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
   const analysis::PhaseStatisticsOptions options{period, bins, 0.2, rho, "plane"};
   // A plane subset: nodes near y = 0.5.
   const auto plane = analysis::nodes_near_plane(local, {0, 0.5, 0}, {0, 1, 0}, 1e-9);
@@ -172,7 +172,7 @@ TEST_CASE("phase statistics: checkpoint round trip and output") {
   const auto path = writer.write(state, 1, 1e-3, arrays);
 
   for (MPI_Comm comm : {MPI_COMM_WORLD, MPI_COMM_SELF}) {
-    auto other = mesh::distribute(mesh, metrics, comm, {2, "metis"});
+    auto other = mesh::distribute(mesh, metrics, comm, {2, mesh::PartitionMethod::metis});
     const auto other_plane = analysis::nodes_near_plane(other, {0, 0.5, 0}, {0, 1, 0}, 1e-9);
     analysis::PhaseStatistics back(other, options, other_plane);
     back.restore(io::CheckpointReader(other, io::mesh_hash(mesh), path));

@@ -35,7 +35,7 @@ struct Setup {
 
 Setup setup(const std::string& type) {
   mesh::BoxSpec spec;
-  spec.cell_type = type;
+  spec.cell_type = mesh::parse_box_cell_type(type);
   spec.cells = {6, 6, 6};
   spec.perturbation = 0.1;
   Setup s{mesh::generate_box(spec), {}};

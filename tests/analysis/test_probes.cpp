@@ -20,7 +20,7 @@ namespace {
 
 mesh::Mesh box(const std::string& type) {
   mesh::BoxSpec spec;
-  spec.cell_type = type;
+  spec.cell_type = mesh::parse_box_cell_type(type);
   spec.cells = {5, 4, 4};
   spec.length = Eigen::Vector3d(1.0, 0.8, 0.6);
   spec.origin = Eigen::Vector3d(-0.2, 0.1, 0.3);
@@ -76,7 +76,7 @@ TEST_CASE("probes: same bits at the world size and at one rank; outside probe na
   std::vector<analysis::ProbePoint> points = {
       {"inlet", {0.0, 0.3, 0.5}}, {"centre", {0.3, 0.5, 0.6}}, {"near_wall", {0.7, 0.84, 0.8}}};
   auto sample_with = [&](MPI_Comm comm) {
-    auto local = mesh::distribute(mesh, metrics, comm, {2, "metis"});
+    auto local = mesh::distribute(mesh, metrics, comm, {2, mesh::PartitionMethod::metis});
     flow::FlowState state;
     state.velocity.resize(local.num_local());
     state.pressure.resize(local.num_local());
@@ -95,7 +95,7 @@ TEST_CASE("probes: same bits at the world size and at one rank; outside probe na
   for (std::size_t p = 0; p < points.size(); ++p)
     CHECK(world[4 * p + 1] == doctest::Approx(linear(points[p].position)).epsilon(1e-12));
 
-  auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
   CHECK_THROWS_WITH(analysis::Probes(mesh, metrics, local, {{"lost", {0.3, 2.5, 0.6}}}),
                     doctest::Contains("probe 'lost' at (0.3, 2.5, 0.6) m is outside the mesh"));
 

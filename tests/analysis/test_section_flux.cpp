@@ -133,7 +133,7 @@ TEST_CASE("a section across a periodic direction cuts the domain once") {
   // pair join nodes whose stored positions are a period apart; taken at face value they would
   // count as cut by every plane between them, with the opposite sign (the flux was ~0).
   mesh::BoxSpec spec;
-  spec.cell_type = "tetra";
+  spec.cell_type = mesh::BoxCellType::tetra;
   spec.cells = {5, 4, 3};
   spec.perturbation = 0.1;
   spec.periodic = {true, true, true};

@@ -25,7 +25,8 @@ void write_statistics(int n, const fs::path& dir) {
   spec.cells = {n, n, n};
   const auto mesh = mesh::generate_box(spec);
   const auto metrics = mesh::compute_dual_metrics(mesh);
-  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_SELF, {1, "metis"});
+  const auto local =
+      mesh::distribute(mesh, metrics, MPI_COMM_SELF, {1, mesh::PartitionMethod::metis});
   const auto nodes = analysis::all_owned_nodes(local);
   analysis::PhaseStatistics stats(local, {0.0, 1, 0.0, 1000.0, "stats"}, nodes);
   for (double u : {1.0, 3.0}) {

@@ -29,7 +29,8 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(out);
   const auto mesh = mesh::generate_box({});
   const auto metrics = mesh::compute_dual_metrics(mesh);
-  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_SELF, {2, "metis"});
+  const auto local =
+      mesh::distribute(mesh, metrics, MPI_COMM_SELF, {2, mesh::PartitionMethod::metis});
   auto mean = [](const Eigen::Vector3d& x) {
     return Eigen::Vector3d(0.2 + 0.5 * x.x(), 0.4 + 0.1 * x.y(), 0.3 * x.x());
   };

@@ -29,7 +29,7 @@ inline std::vector<MeshKind> order_mesh_kinds() {
 
 inline mesh::BoxSpec periodic_box(const std::string& type, int n, double perturbation = 0.0) {
   mesh::BoxSpec spec;
-  spec.cell_type = type;
+  spec.cell_type = mesh::parse_box_cell_type(type);
   spec.cells = {n, n, n};
   spec.perturbation = perturbation;
   spec.periodic = {true, true, true};
@@ -56,7 +56,8 @@ inline std::vector<NamedMesh> energy_meshes(bool with_prisms) {
 // The box `spec` distributed over `comm` with 2 ghost layers (the mesh is not kept).
 inline mesh::LocalMesh local_box(const mesh::BoxSpec& spec, MPI_Comm comm = MPI_COMM_WORLD) {
   const auto mesh = mesh::generate_box(spec);
-  return mesh::distribute(mesh, mesh::compute_dual_metrics(mesh), comm, {2, "metis"});
+  return mesh::distribute(mesh, mesh::compute_dual_metrics(mesh), comm,
+                          {2, mesh::PartitionMethod::metis});
 }
 
 // Owned values of `component`-wide nodal data, summed over ranks into dual-node order.

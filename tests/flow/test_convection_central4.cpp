@@ -59,7 +59,8 @@ Built build(const test::MeshKind& kind, int n, int ghost_layers = 2) {
   Built m;
   m.mesh = mesh::generate_box(test::periodic_box(kind.type, n, kind.perturbation));
   m.metrics = mesh::compute_dual_metrics(m.mesh);
-  m.local = mesh::distribute(m.mesh, m.metrics, MPI_COMM_WORLD, {ghost_layers, "metis"});
+  m.local = mesh::distribute(m.mesh, m.metrics, MPI_COMM_WORLD,
+                             {ghost_layers, mesh::PartitionMethod::metis});
   return m;
 }
 
@@ -89,7 +90,7 @@ TEST_CASE("convection schemes: observed orders on a smooth periodic field") {
     std::vector<Errors> c2, c4, cd;
     for (int n : {8, 16, 32}) {
       const Built m = build(kind, n);
-      auto central2 = flow::make_convection_scheme("central2", m.local);
+      auto central2 = flow::make_convection_scheme(flow::ConvectionKind::central2, m.local);
       flow::ConvectionCentral4 central4(m.local), deconv(m.local, Form::deconvolution);
       c2.push_back(measure(m.local, *central2, n));
       c4.push_back(measure(m.local, central4, n));
@@ -138,7 +139,8 @@ TEST_CASE("central4: np = N reproduces one rank; fewer than 2 ghost layers are r
   // Serial reference on every rank.
   const auto mesh = mesh::generate_box(test::periodic_box(kind.type, 8, kind.perturbation));
   const auto metrics = mesh::compute_dual_metrics(mesh);
-  const auto serial = mesh::distribute(mesh, metrics, MPI_COMM_SELF, {2, "metis"});
+  const auto serial =
+      mesh::distribute(mesh, metrics, MPI_COMM_SELF, {2, mesh::PartitionMethod::metis});
   flow::ConvectionCentral4 serial_scheme(serial);
   VectorField serial_conv;
   measure(serial, serial_scheme, 8, &serial_conv);
@@ -153,7 +155,7 @@ TEST_CASE("central4: np = N reproduces one rank; fewer than 2 ghost layers are r
     const Built thin = build(kind, 8, 1);
     CHECK_THROWS_WITH_AS(flow::ConvectionCentral4(thin.local),
                          doctest::Contains("at least 2 ghost layers"), std::invalid_argument);
-    CHECK_THROWS_WITH_AS(flow::make_convection_scheme("central6", thin.local),
+    CHECK_THROWS_WITH_AS(flow::parse_convection_kind("central6"),
                          doctest::Contains("'central6' is not one of central2, central4"),
                          std::invalid_argument);
   }

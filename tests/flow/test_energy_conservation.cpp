@@ -55,9 +55,10 @@ double relative_energy_rate(const mesh::LocalMesh& m, const flow::VectorField& u
 
 Measure measure(const mesh::Mesh& mesh, const std::string& scheme) {
   const auto metrics = mesh::compute_dual_metrics(mesh);
-  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  const auto local =
+      mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
   flow::ProjectionOptions options;
-  options.scheme = scheme;
+  options.scheme = flow::parse_convection_kind(scheme);
   options.fourth_order_operators = scheme == "central4";
   options.poisson.tolerance = 1e-12;
   options.poisson.max_iterations = 1000;
@@ -76,7 +77,7 @@ Measure measure(const mesh::Mesh& mesh, const std::string& scheme) {
   const flow::EdgeField flux = solver.face_flux();
 
   Measure r;
-  auto convection = flow::make_convection_scheme(scheme, local);
+  auto convection = flow::make_convection_scheme(options.scheme, local);
   flow::VectorField c_skew, c_div;
   convection->apply(u, flux, c_skew);
   convection->apply(u, c_div);

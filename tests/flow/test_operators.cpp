@@ -90,7 +90,7 @@ TEST_CASE("operators are exact for linear fields") {
   for (std::string type : {"tetra", "hexa", "mixed"}) {
     CAPTURE(type);
     mesh::BoxSpec spec;
-    spec.cell_type = type;
+    spec.cell_type = mesh::parse_box_cell_type(type);
     spec.cells = {5, 4, 6};
     spec.length = Eigen::Vector3d(1.0, 0.8, 1.2);
     spec.perturbation = 0.2;
@@ -221,13 +221,14 @@ TEST_CASE("viscous with the P1 stiffness weights and no correction is exact for 
   // Laplacian at every node of a perturbed tetrahedral mesh, boundary nodes included (their
   // boundary-face flux grad v . A closes the dual volume).
   mesh::BoxSpec spec;
-  spec.cell_type = "tetra";
+  spec.cell_type = mesh::BoxCellType::tetra;
   spec.cells = {5, 4, 6};
   spec.length = Eigen::Vector3d(1.0, 0.8, 0.3);  // flat cells, as in the DFG slab
   spec.perturbation = 0.2;
   const auto box = mesh::generate_box(spec);
   const auto metrics = mesh::compute_dual_metrics(box);
-  const auto mesh = mesh::distribute(box, metrics, MPI_COMM_WORLD, {2, "metis"});
+  const auto mesh =
+      mesh::distribute(box, metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
   const auto p1 = flow::poisson_weights(box, metrics, mesh);
   Eigen::Matrix3d A;
   A << 0.3, -1.2, 0.5, 2.0, -0.4, 0.9, -0.6, 1.1, 0.1;
@@ -255,7 +256,8 @@ TEST_CASE("viscous with the slab stiffness weights of prisms is exact for linear
   auto pipe = mesh::generate_periodic_pipe_mesh(spec);
   pipe.periodic.clear();  // zmin / zmax as plain boundaries: a linear field is not periodic
   const auto metrics = mesh::compute_dual_metrics(pipe);
-  const auto mesh = mesh::distribute(pipe, metrics, MPI_COMM_WORLD, {2, "metis"});
+  const auto mesh =
+      mesh::distribute(pipe, metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
   Eigen::Matrix3d A;
   A << 0.3, -1.2, 0.5, 2.0, -0.4, 0.9, -0.6, 1.1, 0.1;
   VectorField v(mesh.num_local()), visc;

@@ -80,7 +80,7 @@ Built build(const test::MeshKind& kind, int n, MPI_Comm comm = MPI_COMM_WORLD) {
   Built m;
   m.mesh = mesh::generate_box(test::periodic_box(kind.type, n, kind.perturbation));
   m.metrics = mesh::compute_dual_metrics(m.mesh);
-  m.local = mesh::distribute(m.mesh, m.metrics, comm, {2, "metis"});
+  m.local = mesh::distribute(m.mesh, m.metrics, comm, {2, mesh::PartitionMethod::metis});
   return m;
 }
 
@@ -211,11 +211,13 @@ TEST_CASE("4th-order operators: refused with one ghost layer and with an LES mod
   int size = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   if (size > 1) {
-    const auto thin = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {1, "metis"});
+    const auto thin =
+        mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {1, mesh::PartitionMethod::metis});
     CHECK_THROWS_WITH_AS(flow::Order4Operators(thin, flow::laplacian_weights(thin)),
                          doctest::Contains("at least 2 ghost layers"), std::invalid_argument);
   }
-  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  const auto local =
+      mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
   flow::ProjectionOptions options;
   options.fourth_order_operators = true;
   options.subgrid_viscosity = [](int, const TensorField&, ScalarField&) {};

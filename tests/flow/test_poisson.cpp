@@ -39,7 +39,7 @@ std::unique_ptr<Box> local_box(const mesh::BoxSpec& spec, MPI_Comm comm) {
   auto box = std::make_unique<Box>();
   box->mesh = mesh::generate_box(spec);
   box->metrics = mesh::compute_dual_metrics(box->mesh);
-  box->local = mesh::distribute(box->mesh, box->metrics, comm, {2, "metis"});
+  box->local = mesh::distribute(box->mesh, box->metrics, comm, {2, mesh::PartitionMethod::metis});
   box->weights = flow::poisson_weights(box->mesh, box->metrics, box->local);
   return box;
 }

@@ -74,7 +74,8 @@ Fields random_fields(const mesh::LocalMesh& local) {
 TEST_CASE("the nodal pressure gradient is the adjoint of the projection's divergence") {
   for (const auto& c : test::energy_meshes(false)) {
     const auto metrics = mesh::compute_dual_metrics(c.mesh);
-    const auto local = mesh::distribute(c.mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+    const auto local =
+        mesh::distribute(c.mesh, metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
     const auto f = random_fields(local);
     flow::VectorField g;
     flow::ScalarField d;
@@ -98,7 +99,8 @@ TEST_CASE("the nodal pressure gradient is the adjoint of the projection's diverg
 TEST_CASE("the approximate projection is a contraction: D G is bounded by the Poisson matrix") {
   for (const auto& c : test::energy_meshes(false)) {
     const auto metrics = mesh::compute_dual_metrics(c.mesh);
-    const auto local = mesh::distribute(c.mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+    const auto local =
+        mesh::distribute(c.mesh, metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
     const auto weights = flow::poisson_weights(c.mesh, metrics, local);
     flow::PoissonOptions options;
     options.tolerance = 1e-12;
@@ -127,10 +129,11 @@ TEST_CASE("the approximate projection is a contraction: D G is bounded by the Po
 TEST_CASE("an inviscid random divergence-free field on perturbed tetrahedra never gains energy") {
   const auto mesh = mesh::generate_box(test::periodic_box("tetra", 6, 0.2));
   const auto metrics = mesh::compute_dual_metrics(mesh);
-  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  const auto local =
+      mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
   for (const std::string scheme : {"central2", "central4"}) {
     flow::ProjectionOptions options;
-    options.scheme = scheme;
+    options.scheme = flow::parse_convection_kind(scheme);
     options.fourth_order_operators = scheme == "central4";
     options.poisson.tolerance = 1e-13;
     options.poisson.max_iterations = 2000;

@@ -62,10 +62,10 @@ Fields taylor_green(MPI_Comm comm, bool order4 = false) {
   o.projection.viscosity = 0.01;
   o.projection.poisson.tolerance = 1e-13;
   if (order4) {
-    o.projection.scheme = "central4";
+    o.projection.scheme = flow::ConvectionKind::central4;
     o.projection.fourth_order_operators = true;
   }
-  o.initial = {"taylor_green", 1.0, 1.0};
+  o.initial = {flow::InitialType::taylor_green, 1.0, 1.0};
   o.time.end = 1.0;
   o.time.max_steps = 6;
   o.output.print = false;

@@ -49,7 +49,7 @@ struct VortexBox {
     spec.length = Eigen::Vector3d(0.01, 0.01, 0.0025);
     const auto box = mesh::generate_box(spec);
     const auto metrics = mesh::compute_dual_metrics(box);
-    mesh = mesh::distribute(box, metrics, MPI_COMM_WORLD, {2, "metis"});
+    mesh = mesh::distribute(box, metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
     const double k = 2 * std::numbers::pi / 0.01;
     for (const auto& x : mesh.position) {
       initial.velocity.emplace_back(U * std::sin(k * x.x()) * std::cos(k * x.y()),

@@ -163,7 +163,7 @@ TEST_CASE("total momentum: the edge fluxes cancel, only the boundary term remain
   for (std::string type : {"tetra", "hexa", "mixed"}) {
     CAPTURE(type);
     mesh::BoxSpec spec;
-    spec.cell_type = type;
+    spec.cell_type = mesh::parse_box_cell_type(type);
     spec.cells = {6, 5, 7};
     spec.length = Eigen::Vector3d(1.0, 0.8, 1.2);
     spec.perturbation = 0.2;
@@ -200,7 +200,8 @@ TEST_CASE("ProjectionRK4 subgrid hook: stage gradients in, nu + nu_sgs in the st
       Eigen::Vector3d(2 * std::numbers::pi, 2 * std::numbers::pi, 3 * std::numbers::pi / 8);
   const auto box = mesh::generate_box(spec);
   const auto metrics = mesh::compute_dual_metrics(box);
-  const auto mesh = mesh::distribute(box, metrics, MPI_COMM_WORLD, {2, "metis"});
+  const auto mesh =
+      mesh::distribute(box, metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
   const double nu0 = 0.01, c = 0.02, dt = 0.05;
   flow::FlowState initial;
   for (const auto& x : mesh.position) {

@@ -28,7 +28,7 @@ struct PoiseuilleChannel {
 
   PoiseuilleChannel(const std::string& type, double perturbation, int n) {
     mesh::BoxSpec spec;
-    spec.cell_type = type;
+    spec.cell_type = mesh::parse_box_cell_type(type);
     spec.cells = {n, n, n};
     spec.length = Eigen::Vector3d(2.0, height, 0.5);
     spec.perturbation = perturbation;

@@ -60,7 +60,7 @@ struct IbBox {
     box.periodic = {true, true, true};
     mesh = mesh::generate_box(box);
     metrics = mesh::compute_dual_metrics(mesh);
-    local = mesh::distribute(mesh, metrics, s.comm, {4, "metis"});
+    local = mesh::distribute(mesh, metrics, s.comm, {4, mesh::PartitionMethod::metis});
     const Eigen::Vector3d lo = Eigen::Vector3d::Constant(0.5 - s.side / 2);
     solid =
         structure::structured_block(structure::HexOrder::q2, {s.elements, s.elements, s.elements},

@@ -29,7 +29,7 @@ const Vec kLength(1.0, 0.8, 0.6);
 mesh::Mesh box(int n, bool periodic_z = false) {
   mesh::BoxSpec spec;
   spec.periodic = {false, false, periodic_z};
-  spec.cell_type = "tetra";
+  spec.cell_type = mesh::BoxCellType::tetra;
   spec.cells = {n, n * 4 / 5, n * 3 / 5};
   spec.length = kLength;
   spec.perturbation = 0.2;
@@ -85,7 +85,8 @@ double global_sum(const core::Comm& comm, core::CompensatedSum s) {
 // All identities for the three kernels. With a z-periodic mesh the torque (ill-defined across
 // periods) is skipped and the linear field is taken independent of z.
 void check_identities(const Level& level, const std::vector<Vec>& x, bool periodic_z) {
-  auto local = mesh::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {5, "metis"});
+  auto local = mesh::distribute(level.mesh, level.metrics, MPI_COMM_WORLD,
+                                {5, mesh::PartitionMethod::metis});
   const auto& comm = local.comm;
   const auto nm = x.size();
 
@@ -173,7 +174,8 @@ void check_identities(const Level& level, const std::vector<Vec>& x, bool period
 
     // The same on one rank (each rank builds the undistributed mesh): results agree to
     // round-off, node by node (matched through the replicated dual-node index).
-    auto serial = mesh::distribute(level.mesh, level.metrics, MPI_COMM_SELF, {5, "metis"});
+    auto serial = mesh::distribute(level.mesh, level.metrics, MPI_COMM_SELF,
+                                   {5, mesh::PartitionMethod::metis});
     ibm::DiracTransfer one(serial, {{type, 4.0}});
     one.locate(x);
     std::vector<Vec> density1(serial.num_local()), field1(serial.num_local()), at1(nm);
@@ -221,7 +223,8 @@ TEST_CASE("periodic images: supports wrap across a periodic direction") {
 TEST_CASE("locating again after the markers move gives the supports of a fresh transfer") {
   const int n = 10;
   const Level level(n);
-  auto local = mesh::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {5, "metis"});
+  auto local = mesh::distribute(level.mesh, level.metrics, MPI_COMM_WORLD,
+                                {5, mesh::PartitionMethod::metis});
   auto x = markers(kLength.x() / n);
   ibm::DiracTransfer moving(local);
   moving.locate(x);
@@ -244,7 +247,8 @@ TEST_CASE("errors name the marker: outside the mesh, too few ghost layers, ill-c
   const int n = 10;
   const double cell = kLength.x() / n;
   const Level level(n);
-  auto local = mesh::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {5, "metis"});
+  auto local = mesh::distribute(level.mesh, level.metrics, MPI_COMM_WORLD,
+                                {5, mesh::PartitionMethod::metis});
   ibm::DiracTransfer transfer(local);
   std::vector<Vec> x = markers(cell);
   x.emplace_back(5.0, 0.1, 0.1);
@@ -275,7 +279,8 @@ TEST_CASE("errors name the marker: outside the mesh, too few ghost layers, ill-c
 
   // One ghost layer cannot hold a 4h support across a partition boundary.
   if (local.comm.size() > 1) {
-    auto thin = mesh::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {1, "metis"});
+    auto thin = mesh::distribute(level.mesh, level.metrics, MPI_COMM_WORLD,
+                                 {1, mesh::PartitionMethod::metis});
     ibm::DiracTransfer short_halo(thin);
     CHECK_THROWS_WITH_AS(short_halo.locate(markers(cell)),
                          doctest::Contains("reaches the outermost ghost layer (1)"),
@@ -291,7 +296,8 @@ TEST_CASE("interpolation converges at second order on perturbed tetrahedra") {
   std::vector<double> error;
   for (int n : {8, 16, 32}) {
     const Level level(n);
-    auto local = mesh::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {5, "metis"});
+    auto local = mesh::distribute(level.mesh, level.metrics, MPI_COMM_WORLD,
+                                  {5, mesh::PartitionMethod::metis});
     ibm::DiracTransfer transfer(local);
     transfer.locate(x);
     std::vector<Vec> field(local.num_local()), at(x.size());
@@ -320,7 +326,8 @@ TEST_CASE("interpolation converges at second order on perturbed tetrahedra") {
 // rebuilt, those of a locate at the new ones; at 1, 2 and 3 ranks.
 TEST_CASE("relocate: all supports kept within reuse_distance h, all rebuilt beyond") {
   const Level level(12);
-  auto local = mesh::distribute(level.mesh, level.metrics, MPI_COMM_WORLD, {5, "metis"});
+  auto local = mesh::distribute(level.mesh, level.metrics, MPI_COMM_WORLD,
+                                {5, mesh::PartitionMethod::metis});
   const double cell = kLength.x() / 12, reuse = 0.1;
   const auto x = markers(cell);
   const auto nm = x.size();

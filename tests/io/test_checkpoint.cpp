@@ -42,7 +42,7 @@ fs::path scratch(const std::string& name) {
 
 mesh::Mesh box(int n) {
   mesh::BoxSpec spec;
-  spec.cell_type = "mixed";
+  spec.cell_type = mesh::BoxCellType::mixed;
   spec.cells = {n, 4, 3};
   spec.perturbation = 0.1;
   return mesh::generate_box(spec);
@@ -82,7 +82,7 @@ TEST_CASE("checkpoint round trip at the world size and at one rank, bit for bit"
   const auto mesh = box(8);
   const auto metrics = mesh::compute_dual_metrics(mesh);
   const auto hash = io::mesh_hash(mesh);
-  auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
   flow::FlowState state;
   fill(local, state);
 
@@ -127,7 +127,7 @@ TEST_CASE("checkpoint round trip at the world size and at one rank, bit for bit"
   }
   // One rank (each rank alone on its own communicator), another partition: same bits.
   {
-    auto single = mesh::distribute(mesh, metrics, MPI_COMM_SELF, {2, "metis"});
+    auto single = mesh::distribute(mesh, metrics, MPI_COMM_SELF, {2, mesh::PartitionMethod::metis});
     io::CheckpointReader reader(single, hash, *latest);
     flow::FlowState back;
     reader.read_state(back);
@@ -140,7 +140,7 @@ TEST_CASE("checkpoint errors name the file and the mismatch") {
   const fs::path dir = scratch("errors");
   const auto mesh = box(8);
   const auto metrics = mesh::compute_dual_metrics(mesh);
-  auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+  auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
   flow::FlowState state;
   fill(local, state);
   io::CheckpointWriter writer(local, io::mesh_hash(mesh), dir);
@@ -149,7 +149,8 @@ TEST_CASE("checkpoint errors name the file and the mismatch") {
   // Another mesh: different node count.
   const auto other = box(9);
   const auto other_metrics = mesh::compute_dual_metrics(other);
-  auto other_local = mesh::distribute(other, other_metrics, MPI_COMM_WORLD, {2, "metis"});
+  auto other_local =
+      mesh::distribute(other, other_metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
   CHECK_THROWS_WITH(io::CheckpointReader(other_local, io::mesh_hash(other), path),
                     doctest::Contains("was written for another mesh"));
   // Same node count, moved nodes: the hash differs.

@@ -29,7 +29,7 @@ LesRun run(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics, const mesh:
   flow::ProjectionOptions o;
   o.density = 1;
   o.viscosity = 1.0 / 1600;
-  o.scheme = "central4";
+  o.scheme = flow::ConvectionKind::central4;
   // Rank agreement to 1e-10 needs a projection converged far below it (as in test_run_loop).
   o.poisson.tolerance = 1e-13;
   o.subgrid_viscosity = [&](int stage, const flow::TensorField& g, flow::ScalarField& nu) {

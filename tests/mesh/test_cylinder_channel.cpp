@@ -45,7 +45,7 @@ TEST_CASE("prism split: conforming tetrahedra of the same volume, quad faces cut
   mesh::BoxSpec spec;
   spec.cells = {4, 3, 5};
   spec.length = Eigen::Vector3d(1.0, 0.7, 1.3);
-  spec.cell_type = "prism";
+  spec.cell_type = mesh::BoxCellType::prism;
   spec.perturbation = 0.2;
   const auto prisms = mesh::generate_box(spec);
   const auto tets = mesh::split_prisms_to_tetrahedra(prisms);

@@ -52,7 +52,7 @@ TEST_CASE("dual metrics on box meshes of every cell type") {
     for (double perturbation : {0.0, 0.2}) {
       for (bool periodic : {false, true}) {
         mesh::BoxSpec spec;
-        spec.cell_type = type;
+        spec.cell_type = mesh::parse_box_cell_type(type);
         spec.cells = {8, 5, 4};
         spec.length = Eigen::Vector3d(1.0, 0.7, 0.5);
         spec.perturbation = perturbation;

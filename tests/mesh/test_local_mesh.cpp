@@ -16,7 +16,7 @@ namespace {
 
 mesh::Mesh test_mesh(const std::string& type, bool periodic) {
   mesh::BoxSpec spec;
-  spec.cell_type = type;
+  spec.cell_type = mesh::parse_box_cell_type(type);
   spec.cells = {8, 6, 5};
   spec.length = Eigen::Vector3d(1.0, 0.6, 0.5);
   spec.perturbation = type == "tetra" ? 0.2 : 0.0;
@@ -33,7 +33,8 @@ TEST_CASE("distributed dual metrics and halo") {
       CAPTURE(periodic);
       const auto mesh = test_mesh(type, periodic);
       const auto metrics = mesh::compute_dual_metrics(mesh);
-      auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+      auto local =
+          mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
       const auto& comm = local.comm;
 
       // Ownership covers every node exactly once.

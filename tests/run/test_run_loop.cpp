@@ -44,7 +44,7 @@ scene::RunOptions tgv_options(double end) {
   o.projection.density = 1.0;
   o.projection.viscosity = 0.01;
   o.projection.poisson.tolerance = 1e-13;  // np agreement to 1e-10 needs a tight projection
-  o.initial = {"taylor_green", 1.0, 1.0};
+  o.initial = {flow::InitialType::taylor_green, 1.0, 1.0};
   o.time.end = end;
   o.output.print = false;
   return o;
@@ -402,7 +402,7 @@ TEST_CASE("the 3D Taylor-Green initial state: closed-form pressure and a consist
   const auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD);
   scene::RunOptions o;
   o.projection.viscosity = 1.0 / 1600;
-  o.initial = {"taylor_green_3d", 1.0, 1.0};
+  o.initial = {flow::InitialType::taylor_green_3d, 1.0, 1.0};
   o.time.end = o.time.dt = 0.01;
   o.output.print = false;
   run::RunLoop loop(mesh, metrics, local, o);
@@ -469,7 +469,7 @@ periodic_damping = true
   const auto o = scene::flow_run_options(scene, "dir");
   CHECK(o.forcing.type == flow::ForcingSpec::Type::kolmogorov);
   CHECK(o.forcing.across == Eigen::Vector3d::UnitY());  // the default
-  CHECK(o.initial.type == "cyclic_sines");
+  CHECK(o.initial.type == flow::InitialType::cyclic_sines);
   CHECK(o.initial.length == 0.5);
   CHECK(o.time.stability_fraction == 0.8);
   CHECK(o.projection.periodic_pressure_damping);
@@ -478,7 +478,7 @@ periodic_damping = true
   // away from it the nodal values are F sin(2 pi y) to that mean (|mean| << F).
   mesh::BoxSpec box;
   box.cells = {6, 6, 6};
-  box.cell_type = "tetra";
+  box.cell_type = mesh::BoxCellType::tetra;
   box.perturbation = 0.2;
   box.periodic = {true, true, true};
   const auto mesh = mesh::generate_box(box);
@@ -534,7 +534,7 @@ TEST_CASE("set_initial_velocity replaces the initial condition; time.steady_tole
   options.time.dt = 0.1;
   options.time.steady_tolerance = 1e-9;  // m/s^2
   auto at_rest = options;
-  at_rest.initial.type = "rest";  // p = 0
+  at_rest.initial.type = flow::InitialType::rest;  // p = 0
   run::RunLoop loop(s.mesh, s.metrics, s.local, at_rest);
   // The Taylor-Green velocity at rest pressure: the first step moves the fluid.
   flow::VectorField vortex_velocity(s.local.num_local());
@@ -575,7 +575,7 @@ direction = )" + direction + "\n",
                               "p.toml");
   };
   auto o = scene::flow_run_options(scene_with("[2.0, 0.0, 0.0]"), "dir");
-  CHECK(o.initial.type == "plane_poiseuille");
+  CHECK(o.initial.type == flow::InitialType::plane_poiseuille);
   CHECK(o.initial.velocity == 0.5);
   CHECK(o.initial.across == Eigen::Vector3d::UnitY());  // the default
   o.output.print = false;

@@ -5,7 +5,13 @@
 
 #include <filesystem>
 
+#include "flow/convection_scheme.hpp"
+#include "flow/initial_condition.hpp"
+#include "flow/projection_rk4.hpp"
+#include "mesh/box_generator.hpp"
+#include "mesh/local_mesh.hpp"
 #include "scene/scene.hpp"
+#include "structure/material.hpp"
 
 namespace fs = std::filesystem;
 using namespace valsalva;
@@ -267,4 +273,32 @@ TEST_CASE("overrides (run --set KEY=VALUE) replace or add keys and are checked l
   CHECK(error_with("mesh..box=3").find("expected KEY=VALUE") != std::string::npos);
   CHECK(error_with("mesh.source.x=3").find("'mesh.source' is a value") != std::string::npos);
   CHECK(error_with("time.end=").find("not TOML") != std::string::npos);
+}
+
+// The options whose scene value is a name are enums in the solver: every value the scene accepts
+// parses to an enum that prints back as the same name, and the scene's default is the option
+// struct's default.
+template <class Enum, class Parse, class Print>
+void check_round_trip(const scene::Scene& s, const std::string& key,
+                      const std::vector<std::string>& names, Parse parse, Print print,
+                      Enum default_value) {
+  CAPTURE(key);
+  CHECK(parse(s.get<std::string>(key)) == default_value);
+  for (const auto& name : names) CHECK(print(parse(name)) == name);
+  CHECK_THROWS_AS(parse("no_such_" + key), std::invalid_argument);
+}
+
+TEST_CASE("named options: scene names <-> enums") {
+  const auto s = scene::parse_scene("[mesh]\nsource = \"box\"\n", "b.toml");
+  auto print = [](auto value) { return to_string(value); };
+  check_round_trip(s, "flow.scheme", flow::convection_scheme_names(), flow::parse_convection_kind,
+                   print, flow::ProjectionOptions{}.scheme);
+  check_round_trip(s, "initial.type", flow::initial_type_names(), flow::parse_initial_type, print,
+                   flow::InitialCondition{}.type);
+  check_round_trip(s, "partition.method", mesh::partition_method_names(),
+                   mesh::parse_partition_method, print, mesh::PartitionOptions{}.method);
+  check_round_trip(s, "mesh.box.cell_type", mesh::box_cell_type_names(), mesh::parse_box_cell_type,
+                   print, mesh::BoxSpec{}.cell_type);
+  for (const auto& name : structure::material_law_names())
+    CHECK(to_string(structure::parse_material_law(name)) == name);
 }

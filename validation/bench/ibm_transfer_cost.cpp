@@ -93,7 +93,7 @@ void marker_clouds(const Args& args, bool root) {
   auto local = valsalva::mesh::distribute(
       mesh, metrics, MPI_COMM_WORLD,
       {v::leakage_ghost_layers(*std::max_element(args.widths.begin(), args.widths.end())),
-       "metis"});
+       valsalva::mesh::PartitionMethod::metis});
   if (root)
     fmt::print(
         "1. marker clouds in the leakage channel, h = {:g} m ({} fluid nodes); CPU us per marker "
@@ -152,8 +152,9 @@ void coupled_step(const Args& args, bool root) {
       auto& z = markers[static_cast<std::size_t>(a)].z();
       z -= s.depth() * std::floor(z / s.depth());
     }
-    auto local = valsalva::mesh::distribute(sim.mesh(), sim.metrics(), comm.get(),
-                                            {v::leakage_ghost_layers(s.kernel_width), "metis"});
+    auto local = valsalva::mesh::distribute(
+        sim.mesh(), sim.metrics(), comm.get(),
+        {v::leakage_ghost_layers(s.kernel_width), valsalva::mesh::PartitionMethod::metis});
     tc = time_transfer(local, ib.options().transfer, markers, repeat);
     Eigen::Matrix3Xd f(3, m);
     const double t = cpu_seconds();

@@ -91,7 +91,8 @@ int main(int argc, char** argv) {
     const auto metrics = valsalva::mesh::compute_dual_metrics(mesh);
     const double t_metrics = since(t0);
     t0 = std::chrono::steady_clock::now();
-    const auto local = valsalva::mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, "metis"});
+    const auto local = valsalva::mesh::distribute(mesh, metrics, MPI_COMM_WORLD,
+                                                  {2, valsalva::mesh::PartitionMethod::metis});
     const double t_partition = since(t0);
     const double rss_max = valsalva::core::Comm(MPI_COMM_WORLD).max(peak_rss_mb());
     if (rank == 0) {

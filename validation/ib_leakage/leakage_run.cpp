@@ -48,8 +48,9 @@ class ForceSplit {
  public:
   ForceSplit(const LeakageSetup& s, const run::Simulation& sim, const ibm::TransferOptions& o)
       : s_(s),
-        local_(mesh::distribute(sim.mesh(), sim.metrics(), sim.local().comm.get(),
-                                {leakage_ghost_layers(s.kernel_width), "metis"})),
+        local_(
+            mesh::distribute(sim.mesh(), sim.metrics(), sim.local().comm.get(),
+                             {leakage_ghost_layers(s.kernel_width), mesh::PartitionMethod::metis})),
         transfer_(local_, o) {
     double v[2] = {0, 0};
     for (int j = 0; j < local_.num_owned; ++j) {

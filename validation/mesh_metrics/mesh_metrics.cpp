@@ -27,7 +27,7 @@ struct Identities {
 
 Identities check_identities(const mesh::Mesh& mesh, MPI_Comm comm) {
   const auto metrics = mesh::compute_dual_metrics(mesh);
-  const auto local = mesh::distribute(mesh, metrics, comm, {2, "metis"});
+  const auto local = mesh::distribute(mesh, metrics, comm, {2, mesh::PartitionMethod::metis});
   const auto id = mesh::measure_metric_identities(local, mesh::mesh_volume(mesh));
   return {id.volume_error, id.closure_error, id.gradient_error, metrics.num_nodes()};
 }
@@ -42,14 +42,14 @@ void run(const Context& ctx, Report& report) {
   for (std::string type : {"hexa", "tetra", "prism", "pyramid", "mixed"}) {
     mesh::BoxSpec spec;
     spec.cells = {n + 2, n, n - 1};
-    spec.cell_type = type;
+    spec.cell_type = mesh::parse_box_cell_type(type);
     meshes.push_back({type, mesh::generate_box(spec)});
     spec.periodic = {false, true, true};
     meshes.push_back({type + "_periodic_yz", mesh::generate_box(spec)});
   }
   mesh::BoxSpec perturbed;
   perturbed.cells = {n, n, n};
-  perturbed.cell_type = "tetra";
+  perturbed.cell_type = mesh::BoxCellType::tetra;
   perturbed.perturbation = 0.2;
   meshes.push_back({"tetra_perturbed_20pct", mesh::generate_box(perturbed)});
   perturbed.periodic = {true, true, true};

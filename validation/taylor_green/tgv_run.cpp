@@ -33,7 +33,7 @@ TgvMesh build_mesh(const TgvSpec& spec, MPI_Comm comm) {
   const double two_pi = 2 * std::numbers::pi;
   const double h = two_pi / spec.n;
   mesh::BoxSpec box;
-  box.cell_type = spec.cell_type;
+  box.cell_type = mesh::parse_box_cell_type(spec.cell_type);
   box.perturbation = spec.perturbation;
   box.cells = {spec.n, spec.n, spec.nz};
   box.length = Eigen::Vector3d(two_pi, two_pi, spec.nz * h);
@@ -41,7 +41,7 @@ TgvMesh build_mesh(const TgvSpec& spec, MPI_Comm comm) {
   TgvMesh m;
   m.mesh = mesh::generate_box(box);
   m.metrics = mesh::compute_dual_metrics(m.mesh);
-  m.local = mesh::distribute(m.mesh, m.metrics, comm, {2, "metis"});
+  m.local = mesh::distribute(m.mesh, m.metrics, comm, {2, mesh::PartitionMethod::metis});
   return m;
 }
 
@@ -176,7 +176,7 @@ TgvTermErrors taylor_green_term_errors(const TgvSpec& spec, MPI_Comm comm) {
     conv_exact[i] = -grad_p_exact[i];
     visc_exact[i] = -2 * exact.nu * u[i];
   }
-  flow::make_convection_scheme(spec.scheme, local)->apply(u, conv);
+  flow::make_convection_scheme(flow::parse_convection_kind(spec.scheme), local)->apply(u, conv);
   flow::gradient(local, u, grad_u);
   const auto poisson_weights = flow::poisson_weights(m.mesh, m.metrics, local);
   if (spec.fourth_order_operators) {
