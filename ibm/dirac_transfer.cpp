@@ -37,7 +37,7 @@ DiracTransfer::DiracTransfer(mesh::LocalMesh& mesh, const TransferOptions& optio
     throw std::invalid_argument(fmt::format("ibm: growth factor {} must be > 1, max growth {} >= 0",
                                             options.growth_factor, options.max_growth));
   // Buckets about one mesh size wide: a 4h support box visits ~125 buckets of ~1 node each.
-  grid_ = structure::BucketGrid(mesh.position, median(mesh.h));
+  grid_ = core::BucketGrid(mesh.position, median(mesh.h));
   for (double h : mesh.h) h_max_ = std::max(h_max_, h);
   int outer = 0;
   for (int layer : mesh.ghost_layer) outer = std::max(outer, layer);

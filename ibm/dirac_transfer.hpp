@@ -27,9 +27,9 @@
 #include <span>
 #include <vector>
 
+#include "core/bucket_grid.hpp"
 #include "ibm/kernels.hpp"
 #include "mesh/local_mesh.hpp"
-#include "structure/bucket_grid.hpp"
 
 namespace valsalva::ibm {
 
@@ -123,7 +123,7 @@ class DiracTransfer {
 
   mesh::LocalMesh* mesh_;
   TransferOptions options_;
-  structure::BucketGrid grid_;
+  core::BucketGrid grid_;
   double h_max_ = 0.0;
   int outer_layer_ = 0;                   // outermost ghost layer of the distribution (0: none)
   std::vector<Eigen::Vector3d> periods_;  // independent periodic shifts seen on local edges

@@ -7,7 +7,8 @@
 #include <limits>
 #include <map>
 #include <stdexcept>
-#include <unordered_map>
+
+#include "core/bucket_grid.hpp"
 
 namespace valsalva::mesh {
 
@@ -32,16 +33,6 @@ double bounding_box_diagonal(const Mesh& mesh) {
   }
   return mesh.nodes.empty() ? 1.0 : (hi - lo).norm();
 }
-
-// Bucket grid over the master nodes so that matching is O(n).
-struct PointLocator {
-  double cell;
-  std::unordered_map<std::int64_t, std::vector<GlobalIndex>> buckets;
-  static std::int64_t key(const Eigen::Vector3d& x, double cell) {
-    auto q = [&](double v) { return static_cast<std::int64_t>(std::floor(v / cell)) & 0x1FFFFF; };
-    return (q(x[0]) << 42) | (q(x[1]) << 21) | q(x[2]);
-  }
-};
 
 }  // namespace
 
@@ -98,26 +89,17 @@ PeriodicMap match_periodic_nodes(const Mesh& mesh, double relative_tolerance) {
                       mesh.source, link.master, link.slave, master < 0 ? link.master : link.slave));
     const auto master_nodes = patch_nodes(mesh, master);
     const auto slave_nodes = patch_nodes(mesh, slave);
-    // Bucket size: well above the tolerance, so a match is in the point's bucket or a neighbour.
-    const double cell = std::max(tol * 16.0, 1e-300);
-    PointLocator locator{cell, {}};
-    for (GlobalIndex m : master_nodes)
-      locator.buckets[PointLocator::key(mesh.nodes[m], cell)].push_back(m);
+    // Nearest master node within the tolerance (the spatial index makes matching O(n)); the
+    // lower node id on a tie. Buckets well above the tolerance (the grid widens them further on
+    // a patch much larger than that).
+    std::vector<Eigen::Vector3d> master_points(master_nodes.size());
+    for (std::size_t k = 0; k < master_nodes.size(); ++k)
+      master_points[k] = mesh.nodes[master_nodes[k]];
+    const core::BucketGrid grid(master_points, std::max(tol * 16.0, 1e-300));
     for (GlobalIndex s : slave_nodes) {
       const Eigen::Vector3d target = mesh.nodes[s] - link.translation;
-      GlobalIndex found = -1;
-      for (int dx = -1; dx <= 1 && found < 0; ++dx)
-        for (int dy = -1; dy <= 1 && found < 0; ++dy)
-          for (int dz = -1; dz <= 1 && found < 0; ++dz) {
-            const Eigen::Vector3d probe = target + cell * Eigen::Vector3d(dx, dy, dz);
-            auto it = locator.buckets.find(PointLocator::key(probe, cell));
-            if (it == locator.buckets.end()) continue;
-            for (GlobalIndex m : it->second)
-              if ((mesh.nodes[m] - target).norm() <= tol) {
-                found = m;
-                break;
-              }
-          }
+      const auto nearest = grid.nearest(target, tol, [](int) { return true; });
+      const GlobalIndex found = nearest.index < 0 ? -1 : master_nodes[nearest.index];
       if (found < 0)
         throw std::runtime_error(fmt::format(
             "{}: unmatched periodic node {} at ({:.9g}, {:.9g}, {:.9g}) on patch '{}': no node of "

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
+#include <utility>
 
 namespace valsalva::mesh {
 
@@ -89,38 +92,24 @@ PointLocator::PointLocator(const mesh::Mesh& mesh) : mesh_(&mesh) {
   lo_ = Eigen::Vector3d::Constant(INFINITY);
   hi_ = -lo_;
   for (const auto& x : mesh.nodes) lo_ = lo_.cwiseMin(x), hi_ = hi_.cwiseMax(x);
-  const Eigen::Vector3d extent = (hi_ - lo_).cwiseMax(1e-300);
-  // About one cell per bin.
-  const double cells = std::max<double>(1.0, static_cast<double>(mesh.num_cells()));
-  const double h = std::cbrt(extent.prod() / cells);
-  for (int d = 0; d < 3; ++d)
-    bins_[d] = std::clamp(static_cast<int>(std::ceil(extent[d] / h)), 1, 512);
-  bin_size_ = extent.cwiseQuotient(Eigen::Vector3d(bins_[0], bins_[1], bins_[2]));
-
-  // Two passes (count, fill) build the CSR bin -> cells, cells in ascending id.
-  const std::int64_t nbins = std::int64_t(bins_[0]) * bins_[1] * bins_[2];
-  bin_offsets_.assign(nbins + 1, 0);
-  auto for_bins_of_cell = [&](mesh::GlobalIndex c, auto&& action) {
+  // Group the cells by the binary exponent of their largest half-extent (ascending ids within a
+  // group); each group's buckets are as wide as its largest cell.
+  std::map<int, SizeGroup> by_size;
+  for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
     Eigen::Vector3d a = Eigen::Vector3d::Constant(INFINITY), b = -a;
     for (auto v : mesh.cell(c)) a = a.cwiseMin(mesh.nodes[v]), b = b.cwiseMax(mesh.nodes[v]);
-    const Eigen::Vector3d pad = 1e-6 * (b - a);
-    std::array<int, 3> i0, i1;
-    for (int d = 0; d < 3; ++d) {
-      i0[d] = std::clamp(int(std::floor((a[d] - pad[d] - lo_[d]) / bin_size_[d])), 0, bins_[d] - 1);
-      i1[d] = std::clamp(int(std::floor((b[d] + pad[d] - lo_[d]) / bin_size_[d])), 0, bins_[d] - 1);
-    }
-    for (int k = i0[2]; k <= i1[2]; ++k)
-      for (int j = i0[1]; j <= i1[1]; ++j)
-        for (int i = i0[0]; i <= i1[0]; ++i)
-          action((std::int64_t(k) * bins_[1] + j) * bins_[0] + i);
-  };
-  for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c)
-    for_bins_of_cell(c, [&](std::int64_t b) { ++bin_offsets_[b + 1]; });
-  for (std::int64_t b = 0; b < nbins; ++b) bin_offsets_[b + 1] += bin_offsets_[b];
-  bin_cells_.resize(bin_offsets_.back());
-  std::vector<std::int64_t> fill(bin_offsets_.begin(), bin_offsets_.end() - 1);
-  for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c)
-    for_bins_of_cell(c, [&](std::int64_t b) { bin_cells_[fill[b]++] = c; });
+    const double half = 0.5 * (b - a).maxCoeff();
+    SizeGroup& group = by_size[half > 0 ? std::ilogb(half) : std::numeric_limits<int>::min()];
+    group.reach = std::max(group.reach, half);
+    group.centres.push_back(0.5 * (a + b));
+    group.cells.push_back(c);
+  }
+  groups_.reserve(by_size.size());  // no reallocation once a grid views its group's centres
+  for (auto& [exponent, group] : by_size) {
+    groups_.push_back(std::move(group));
+    SizeGroup& g = groups_.back();
+    g.grid = core::BucketGrid(g.centres, std::max(2 * g.reach, 1e-300));
+  }
 }
 
 std::optional<PointLocation> PointLocator::try_cell(mesh::GlobalIndex c, const Eigen::Vector3d& x,
@@ -169,16 +158,22 @@ std::optional<PointLocation> PointLocator::try_cell(mesh::GlobalIndex c, const E
 
 std::optional<PointLocation> PointLocator::locate(const Eigen::Vector3d& x,
                                                   double tolerance) const {
-  std::array<int, 3> idx;
   for (int d = 0; d < 3; ++d) {
     const double margin = tolerance * (hi_[d] - lo_[d]) + 1e-300;
     if (x[d] < lo_[d] - margin || x[d] > hi_[d] + margin || !std::isfinite(x[d]))
       return std::nullopt;
-    idx[d] = std::clamp(int(std::floor((x[d] - lo_[d]) / bin_size_[d])), 0, bins_[d] - 1);
   }
-  const std::int64_t b = (std::int64_t(idx[2]) * bins_[1] + idx[1]) * bins_[0] + idx[0];
-  for (std::int64_t i = bin_offsets_[b]; i < bin_offsets_[b + 1]; ++i)
-    if (auto loc = try_cell(bin_cells_[i], x, tolerance)) return loc;
+  // A cell whose box, padded by tolerance x its size (try_cell), holds x has its box centre
+  // within (1 + 2 tolerance) x its half-extent of x in every coordinate (1e-12: rounding).
+  std::vector<mesh::GlobalIndex> candidates;
+  std::vector<int> found;
+  for (const SizeGroup& g : groups_) {
+    g.grid.in_box(x, g.reach * (1 + 2 * std::max(tolerance, 0.0) + 1e-12) + 1e-300, found);
+    for (int k : found) candidates.push_back(g.cells[k]);
+  }
+  std::sort(candidates.begin(), candidates.end());
+  for (mesh::GlobalIndex c : candidates)
+    if (auto loc = try_cell(c, x, tolerance)) return loc;
   return std::nullopt;
 }
 

@@ -5,8 +5,12 @@
 // (G. Bedrosian, "Shape functions and integration formulas for three-dimensional finite element
 // analysis", IJNME 35, 1992). Non-affine cells are inverted by Newton's method on the reference
 // coordinates (Zienkiewicz & Taylor, The Finite Element Method, vol. 1, ch. 9).
-// Candidate cells come from a uniform bin grid of cell bounding boxes; a point on a face shared
-// by two cells goes to the lower cell id, the same on every rank.
+// Candidate cells come from the tree's spatial index (core::BucketGrid) over the centres of the
+// cells' bounding boxes: cells are grouped by size (powers of two of their largest half-extent)
+// and each group's grid is queried with a box of that group's largest half-extent, so a graded
+// mesh costs O(groups) buckets per point, not the small cells under the largest one. Candidates
+// are tried in ascending id: a point on a face shared by two cells goes to the lower cell id, the
+// same on every rank.
 #pragma once
 
 #include <Eigen/Dense>
@@ -15,6 +19,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/bucket_grid.hpp"
 #include "mesh/mesh.hpp"
 
 namespace valsalva::mesh {
@@ -46,6 +51,11 @@ int shape_functions(mesh::CellType type, const Eigen::Vector3d& xi, std::array<d
 class PointLocator {
  public:
   explicit PointLocator(const mesh::Mesh& mesh);
+  // The grids view their groups' centres: moving keeps them valid, copying would not.
+  PointLocator(const PointLocator&) = delete;
+  PointLocator& operator=(const PointLocator&) = delete;
+  PointLocator(PointLocator&&) = default;
+  PointLocator& operator=(PointLocator&&) = default;
 
   // The containing cell (lowest id if several), or nullopt when the point is outside the mesh.
   // `tolerance` is relative to the cell's reference size (points that far outside still count).
@@ -56,11 +66,16 @@ class PointLocator {
  private:
   std::optional<PointLocation> try_cell(mesh::GlobalIndex c, const Eigen::Vector3d& x,
                                         double tolerance) const;
+  // Cells whose largest bounding-box half-extent lies in [2^e, 2^(e+1)), for one e.
+  struct SizeGroup {
+    double reach = 0;                      // largest half-extent of the group
+    std::vector<Eigen::Vector3d> centres;  // bounding-box centres
+    std::vector<mesh::GlobalIndex> cells;  // ascending ids
+    core::BucketGrid grid;                 // over `centres`
+  };
   const mesh::Mesh* mesh_;
-  Eigen::Vector3d lo_, hi_, bin_size_;
-  std::array<int, 3> bins_{1, 1, 1};
-  std::vector<std::int64_t> bin_offsets_;
-  std::vector<mesh::GlobalIndex> bin_cells_;
+  Eigen::Vector3d lo_, hi_;
+  std::vector<SizeGroup> groups_;
 };
 
 }  // namespace valsalva::mesh

@@ -7,7 +7,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "structure/bucket_grid.hpp"
+#include "core/bucket_grid.hpp"
 #include "structure/contact_kernel.hpp"
 #include "structure/loads.hpp"
 
@@ -252,7 +252,7 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
       hi[m].array() += search + clearance + 0.25 * r;
       rmax = std::max(rmax, r);
     }
-    const BucketGrid grid(centres, std::max(2 * rmax, 1e-300));
+    const core::BucketGrid grid(centres, std::max(2 * rmax, 1e-300));
     std::vector<int> candidates;
     for (const FaceRef& fr : S) {
       const FaceShape<NF>& fs = tables.shape[fr.face];

@@ -19,7 +19,7 @@
 // elements, E / h, times a factor; Wriggers, Computational Contact Mechanics, 2nd ed. 2006), E the
 // material's small-strain Young's modulus and h the mean face size of the pair;
 // at a contact pressure p the penetration is p / eps = (p / E) h / penalty_factor.
-// Spatial search: a structure::BucketGrid over the current face centres of the master surface.
+// Spatial search: a core::BucketGrid over the current face centres of the master surface.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,6 +1,6 @@
 // Base kernels (properties, not magic numbers: Peskin 2002 and Roma et al. 1999 list the sums
-// each must satisfy), the RKPM correction on random node clouds, and the bucket grid against
-// brute force.
+// each must satisfy) and the RKPM correction on random node clouds (the bucket grid, core's spatial
+// index: tests/core/test_bucket_grid.cpp).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -8,7 +8,6 @@
 
 #include "ibm/kernels.hpp"
 #include "ibm/rkpm.hpp"
-#include "structure/bucket_grid.hpp"
 
 using namespace valsalva;
 using ibm::KernelType;
@@ -107,33 +106,4 @@ TEST_CASE("RKPM correction restores partition of unity and zero first moment") {
   const auto r = ibm::rkpm_correct(y, psi, v, 2 * h, 1e-6, phi);
   CHECK_FALSE(r.ok);
   CHECK(r.rcond < 1e-12);
-}
-
-TEST_CASE("bucket grid finds the same nodes as brute force") {
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<Eigen::Vector3d> points(3000);
-  for (auto& p : points) p = Eigen::Vector3d(u(rng), 0.5 * u(rng), 0.3 * u(rng));
-  const structure::BucketGrid grid(points, 0.05);
-  std::vector<int> found;
-  for (int t = 0; t < 200; ++t) {
-    const Eigen::Vector3d x(1.2 * u(rng) - 0.1, 0.6 * u(rng) - 0.05, 0.4 * u(rng) - 0.05);
-    const double radius = 0.02 + 0.1 * u(rng);
-    grid.in_box(x, radius, found);
-    std::vector<int> expected;
-    for (int n = 0; n < static_cast<int>(points.size()); ++n)
-      if ((points[n] - x).cwiseAbs().maxCoeff() <= radius) expected.push_back(n);
-    std::sort(found.begin(), found.end());
-    CHECK(found == expected);
-
-    auto even = [](int n) { return n % 2 == 0; };
-    const auto near = grid.nearest(x, 0.3, even);
-    int best = -1;
-    double best_d = 1e300;
-    for (int n = 0; n < static_cast<int>(points.size()); n += 2)
-      if ((points[n] - x).norm() < best_d) best_d = (points[n] - x).norm(), best = n;
-    CHECK(near.index == (best_d <= 0.3 ? best : -1));
-  }
-  CHECK(grid.nearest(Eigen::Vector3d(5, 5, 5), 1.0, [](int) { return true; }).index == -1);
-  CHECK_THROWS_AS(structure::BucketGrid(points, 0.0), std::invalid_argument);
 }

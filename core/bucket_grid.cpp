@@ -1,15 +1,16 @@
-#include "structure/bucket_grid.hpp"
+#include "core/bucket_grid.hpp"
 
 #include <fmt/format.h>
 
 #include <stdexcept>
 
-namespace valsalva::structure {
+namespace valsalva::core {
 
 BucketGrid::BucketGrid(std::span<const Eigen::Vector3d> points, double cell_size)
     : points_(points), cell_(cell_size) {
-  if (!(cell_size > 0))
-    throw std::invalid_argument(fmt::format("BucketGrid: cell size {} must be > 0", cell_size));
+  if (!(cell_size > 0) || !std::isfinite(cell_size))
+    throw std::invalid_argument(
+        fmt::format("BucketGrid: cell size {} must be finite and > 0", cell_size));
   if (points.empty()) return;
   lower_ = points[0];
   Eigen::Vector3d upper = points[0];
@@ -17,8 +18,10 @@ BucketGrid::BucketGrid(std::span<const Eigen::Vector3d> points, double cell_size
     lower_ = lower_.cwiseMin(p);
     upper = upper.cwiseMax(p);
   }
-  for (int d = 0; d < 3; ++d)
-    dims_[d] = std::max(1, static_cast<int>(std::floor((upper[d] - lower_[d]) / cell_)) + 1);
+  const double max_buckets = std::max(64.0 * static_cast<double>(points.size()), 4096.0);
+  auto count = [&](int d) { return std::floor((upper[d] - lower_[d]) / cell_) + 1; };
+  while (count(0) * count(1) * count(2) > max_buckets) cell_ *= 2;
+  for (int d = 0; d < 3; ++d) dims_[d] = std::max(1, static_cast<int>(count(d)));
   const std::size_t buckets = static_cast<std::size_t>(dims_[0]) * dims_[1] * dims_[2];
   start_.assign(buckets + 1, 0);
   std::vector<int> bucket(points.size());
@@ -64,4 +67,4 @@ void BucketGrid::in_box(const Eigen::Vector3d& centre, double radius, std::vecto
       }
 }
 
-}  // namespace valsalva::structure
+}  // namespace valsalva::core

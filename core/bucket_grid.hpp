@@ -1,8 +1,13 @@
-// Point location over a fixed point cloud: a uniform bucket grid with cells about one mesh size
-// wide. Finding the points in a box visits only the buckets the box overlaps; the nearest point
-// is found by growing rings of buckets. Used by the immersed boundary (a rank's fluid nodes, which
-// do not move: built once) and by contact search (face centres, rebuilt per evaluation). It lives
-// in structure/ because that library depends on nothing but Eigen and fmt.
+// The spatial index of the tree: a uniform bucket grid over a fixed point cloud, with buckets
+// about one mesh size wide. Finding the points in a box visits only the buckets the box overlaps;
+// the nearest point is found by growing rings of buckets. Users: the immersed boundary (a rank's
+// fluid nodes near a marker; the nodes do not move, built once), contact search (master face
+// centres, rebuilt per evaluation), periodic node matching (master patch nodes) and the point
+// locator (cell box centres, one grid per cell size class).
+// The grid holds a view of the points: they must outlive it and not move.
+// A requested bucket size far below the point spacing (a matching tolerance, say) is widened
+// until the grid has at most max(64 n, 4096) buckets, so memory stays O(n) whatever the size asked
+// (a safety net: at mesh-size buckets it does not act).
 #pragma once
 
 #include <Eigen/Dense>
@@ -13,15 +18,17 @@
 #include <span>
 #include <vector>
 
-namespace valsalva::structure {
+namespace valsalva::core {
 
 class BucketGrid {
  public:
   BucketGrid() = default;
-  // `cell_size` > 0: side of a bucket (the typical mesh size is a good choice).
+  // `cell_size` > 0: side of a bucket (the typical mesh size is a good choice); widened (doubled)
+  // while the grid would have more than max(64 n, 4096) buckets.
   BucketGrid(std::span<const Eigen::Vector3d> points, double cell_size);
 
-  // Indices of the points with |x_j - centre|_inf <= radius, appended to `out` (cleared first).
+  // Indices of the points with |x_j - centre|_inf <= radius, appended to `out` (cleared first),
+  // in bucket order (not sorted).
   void in_box(const Eigen::Vector3d& centre, double radius, std::vector<int>& out) const;
 
   struct Nearest {
@@ -34,6 +41,7 @@ class BucketGrid {
   Nearest nearest(const Eigen::Vector3d& x, double max_distance, Accept accept) const;
 
   std::size_t size() const { return points_.size(); }
+  double cell_size() const { return cell_; }  // after any widening
 
  private:
   std::array<int, 3> cell_of(const Eigen::Vector3d& x) const;  // clamped to the grid
@@ -81,4 +89,4 @@ BucketGrid::Nearest BucketGrid::nearest(const Eigen::Vector3d& x, double max_dis
   return best;
 }
 
-}  // namespace valsalva::structure
+}  // namespace valsalva::core
