@@ -6,6 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "core/enum_names.hpp"
 #include "les/sgs_kernels.hpp"
 
 namespace valsalva::les {
@@ -18,19 +19,9 @@ double wale_constant_from_smagorinsky(double c_s) {
   return std::sqrt(10.6) * c_s;
 }
 
-const char* name(SgsKind kind) {
-  switch (kind) {
-    case SgsKind::sigma:
-      return "sigma";
-    case SgsKind::wale:
-      return "wale";
-    case SgsKind::smagorinsky:
-      return "smagorinsky";
-    case SgsKind::none:
-      return "none";
-  }
-  return "?";
-}
+constexpr core::EnumNames<SgsKind, 4> kKinds{{"none", "sigma", "wale", "smagorinsky"},
+                                             "subgrid model"};
+VALSALVA_ENUM_NAMES(SgsKind, kKinds, sgs_kind_names, to_string, parse_sgs_kind)
 
 double default_constant(SgsKind kind) {
   switch (kind) {
@@ -46,24 +37,15 @@ double default_constant(SgsKind kind) {
   return 0.0;
 }
 
-SgsModel make_sgs_model(std::string_view model_name, std::optional<double> constant) {
+SgsModel make_sgs_model(SgsKind kind, std::optional<double> constant) {
   SgsModel m;
-  if (model_name == "sigma")
-    m.kind = SgsKind::sigma;
-  else if (model_name == "wale")
-    m.kind = SgsKind::wale;
-  else if (model_name == "smagorinsky")
-    m.kind = SgsKind::smagorinsky;
-  else if (model_name == "none")
-    m.kind = SgsKind::none;
-  else
-    throw std::invalid_argument(fmt::format(
-        "unknown subgrid model '{}'; accepted: sigma, wale, smagorinsky, none", model_name));
+  m.kind = kind;
   m.constant = default_constant(m.kind);
   if (constant && m.kind != SgsKind::none) {
     if (!(std::isfinite(*constant) && *constant > 0.0))
-      throw std::invalid_argument(fmt::format(
-          "subgrid model '{}': constant must be finite and > 0, got {}", model_name, *constant));
+      throw std::invalid_argument(
+          fmt::format("subgrid model '{}': constant must be finite and > 0, got {}",
+                      to_string(kind), *constant));
     m.constant = *constant;
   }
   return m;
@@ -104,7 +86,7 @@ void check_sizes(const SgsModel& model, std::size_t grads, std::size_t delta, st
   if (grads != delta || grads != nu)
     throw std::invalid_argument(
         fmt::format("compute_nu_sgs ({}): sizes differ: {} gradients, {} filter widths, {} outputs",
-                    name(model.kind), grads, delta, nu));
+                    to_string(model.kind), grads, delta, nu));
 }
 }  // namespace
 
@@ -121,7 +103,7 @@ void compute_nu_sgs(const SgsModel& model, std::span<const double> grad_flat,
   if (grad_flat.size() % 9 != 0)
     throw std::invalid_argument(
         fmt::format("compute_nu_sgs ({}): flat gradient array of {} values is not 9 per node",
-                    name(model.kind), grad_flat.size()));
+                    to_string(model.kind), grad_flat.size()));
   const std::size_t n = grad_flat.size() / 9;
   check_sizes(model, n, delta.size(), nu_sgs.size());
   apply(

@@ -7,10 +7,18 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace valsalva::les {
 
-enum class SgsKind { sigma, wale, smagorinsky, none };
+// In the order of les.model's accepted names.
+enum class SgsKind { none, sigma, wale, smagorinsky };
+
+// "none", "sigma", "wale", "smagorinsky"; parse throws std::invalid_argument naming the accepted
+// values.
+const std::vector<std::string>& sgs_kind_names();
+std::string to_string(SgsKind kind);
+SgsKind parse_sgs_kind(std::string_view name);
 
 // Default constants, with their sources:
 // - sigma: C_sigma = 1.35, Nicoud et al., Phys. Fluids 23, 085106 (2011), Sec. III (calibrated on
@@ -35,12 +43,11 @@ struct SgsModel {
   double constant = 0.0;  // C_sigma, C_w or C_s; unused for none
 };
 
-const char* name(SgsKind kind);
 double default_constant(SgsKind kind);
 
-// "sigma", "wale", "smagorinsky" or "none"; an unknown name throws std::invalid_argument naming
-// the accepted values. A given constant must be finite and > 0 (ignored for "none").
-SgsModel make_sgs_model(std::string_view model_name, std::optional<double> constant = {});
+// The model with the given constant, or its default without one. A given constant must be finite
+// and > 0 (std::invalid_argument; ignored for none).
+SgsModel make_sgs_model(SgsKind kind, std::optional<double> constant = {});
 
 // Filter width Delta = cube root of the (dual) volume, per node.
 void filter_width(std::span<const double> volume, std::span<double> delta);

@@ -5,30 +5,24 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/enum_names.hpp"
+
 namespace valsalva::les {
 
-SgsUpdate parse_sgs_update(std::string_view name) {
-  if (name == "stage") return SgsUpdate::stage;
-  if (name == "step") return SgsUpdate::step;
-  throw std::invalid_argument(
-      fmt::format("unknown subgrid update '{}'; accepted: stage, step", name));
-}
+constexpr core::EnumNames<SgsUpdate, 2> kUpdates{{"stage", "step"}, "subgrid update"};
+VALSALVA_ENUM_NAMES(SgsUpdate, kUpdates, sgs_update_names, to_string, parse_sgs_update)
 
-const char* name(SgsUpdate update) {
-  return update == SgsUpdate::stage ? "stage" : "step";
-}
-
-SubgridViscosity::SubgridViscosity(std::string_view model_name, std::optional<double> constant,
+SubgridViscosity::SubgridViscosity(SgsKind kind, std::optional<double> constant,
                                    std::vector<double> filter_width, SgsUpdate update)
-    : model_(make_sgs_model(model_name,
-                            constant && *constant > 0.0 ? constant : std::optional<double>{})),
+    : model_(
+          make_sgs_model(kind, constant && *constant > 0.0 ? constant : std::optional<double>{})),
       delta_(std::move(filter_width)),
       update_(update) {
   for (std::size_t i = 0; i < delta_.size(); ++i)
     if (!(std::isfinite(delta_[i]) && delta_[i] > 0.0))
       throw std::invalid_argument(fmt::format(
           "subgrid viscosity ({}): filter width of node {} is {}, expected a finite value > 0",
-          name(model_.kind), i, delta_[i]));
+          to_string(model_.kind), i, delta_[i]));
 }
 
 void SubgridViscosity::operator()(std::span<const Eigen::Matrix3d> grad,

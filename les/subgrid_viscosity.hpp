@@ -1,4 +1,4 @@
-// The subgrid viscosity the flow solver asks for at every RK stage: a model chosen by name and
+// The subgrid viscosity the flow solver asks for at every RK stage: a model (SgsKind) and its
 // constant (les/sgs_model.hpp) bound to the nodal filter widths of one mesh partition
 // (Delta = cube root of the dual volume, handed in as a plain vector so that les/ never sees
 // flow/ types). The flow solver wraps it in its callback; nothing here allocates per call.
@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -22,17 +23,17 @@ namespace valsalva::les {
 
 enum class SgsUpdate { stage, step };
 
-// "stage" or "step"; anything else throws std::invalid_argument naming the accepted values.
+// "stage" or "step"; parse throws std::invalid_argument naming the accepted values.
+const std::vector<std::string>& sgs_update_names();
+std::string to_string(SgsUpdate update);
 SgsUpdate parse_sgs_update(std::string_view name);
-const char* name(SgsUpdate update);
 
 class SubgridViscosity {
  public:
-  // `model_name`: sigma | wale | smagorinsky | none; `constant`: empty or <= 0 = the model's
-  // default (les/sgs_model.hpp). `filter_width`: Delta [m] per node, > 0 and finite
-  // (std::invalid_argument naming the first bad node).
-  SubgridViscosity(std::string_view model_name, std::optional<double> constant,
-                   std::vector<double> filter_width, SgsUpdate update = SgsUpdate::stage);
+  // `constant`: empty or <= 0 = the model's default (les/sgs_model.hpp). `filter_width`: Delta [m]
+  // per node, > 0 and finite (std::invalid_argument naming the first bad node).
+  SubgridViscosity(SgsKind kind, std::optional<double> constant, std::vector<double> filter_width,
+                   SgsUpdate update = SgsUpdate::stage);
 
   // nu_sgs[i] [m^2/s] from the velocity gradient at node i (g_ij = du_i/dx_j); one gradient and
   // one output per filter width (std::invalid_argument otherwise).

@@ -193,7 +193,7 @@ void Simulation::Parts::print_summary(const scene::Scene& s, double rho, double 
                                 : fmt::format("viscosity model {}", law),
              s.get<std::string>("flow.scheme"), s.get<std::string>("initial.type"));
   if (les.subgrid_viscosity)
-    fmt::print("les: model {}, constant {:.4g}\n", les.model, les.constant);
+    fmt::print("les: model {}, constant {:.4g}\n", les::to_string(les.model), les.constant);
   if (immersed) {
     const auto& ib = immersed->structure();
     const auto& o = ib.options();

@@ -18,7 +18,7 @@ namespace valsalva::scene {
 
 void declare_les_keys(Schema& s) {
   s.section("les", "Large Eddy Simulation: the subgrid-scale eddy viscosity added to nu.");
-  s.choice("les.model", {"none", "sigma", "wale", "smagorinsky"})
+  s.choice("les.model", les::sgs_kind_names())
       .def("none")
       .unit_of("-")
       .doc(
@@ -33,7 +33,7 @@ void declare_les_keys(Schema& s) {
           "Model constant; 0 takes the default: sigma 1.35 (Nicoud et al., Phys. Fluids 23, "
           "085106, 2011), wale 0.5 (Nicoud & Ducros, Flow Turbul. Combust. 62, 1999: "
           "C_w^2 = 10.6 C_s^2), smagorinsky 0.17 (Lilly 1967 with C_K = 1.5)");
-  s.choice("les.update", {"step", "stage"})
+  s.choice("les.update", les::sgs_update_names())
       .def("step")
       .unit_of("-")
       .doc(
@@ -122,8 +122,8 @@ void LesSetup::resume(const flow::ScalarField& nu_sgs) const {
 LesSetup les_setup(const Scene& scene, const mesh::LocalMesh& local) {
   check_les_scene(scene);
   LesSetup out;
-  out.model = scene.get<std::string>("les.model");
-  if (out.model == "none") return out;
+  out.model = les::parse_sgs_kind(scene.get<std::string>("les.model"));
+  if (out.model == les::SgsKind::none) return out;
   const bool fraction = wants_field(scene, "sgs_energy_fraction");
   const double c = scene.get<double>("les.constant");
   try {

@@ -9,15 +9,16 @@
 #include "analysis/phase_statistics.hpp"
 #include "flow/operators.hpp"
 #include "io/field_set.hpp"
+#include "les/sgs_model.hpp"
 #include "mesh/local_mesh.hpp"
 #include "scene/scene.hpp"
 
 namespace valsalva::scene {
 
 struct LesSetup {
-  std::string model = "none";
+  les::SgsKind model = les::SgsKind::none;
   double constant = 0;  // the constant in use (the model's default when les.constant = 0)
-  // For flow::ProjectionOptions::subgrid_viscosity; empty for les.model = "none".
+  // For flow::ProjectionOptions::subgrid_viscosity; empty for SgsKind::none.
   std::function<void(int, const flow::TensorField&, flow::ScalarField&)> subgrid_viscosity;
   // Appends nu_sgs / nu (or nu_sgs when nu = 0) of the last RK stage to `set` (zero before the
   // first stage), and sgs_energy_fraction / pope_sgs_fraction when output.fields asks for them

@@ -4,13 +4,16 @@
 # valsalva_write_case_registry() generates the list registry.cpp includes.
 
 # valsalva_validation_case(NAME SOURCES file... [QUICK_NP 1 2] [QUICK_TIMEOUT s] [FULL_TIMEOUT s]
+#                          [MULTI_RANK_SET KEY=VALUE...]
 #                          [KNOWN_FAILURE "what fails, measured, and the issue"])
+# MULTI_RANK_SET: case options (--set) of the quick entries on more than one rank, for a case
+# whose rank agreement one part of its quick level shows as well as the whole.
 # KNOWN_FAILURE: the quick version misses one of its targets today; its entry is labelled
 # known-failure instead of quick, so that `make test` (which leaves that label out) stays a gate
 # while `ctest -L known-failure` shows the failure. The reason is printed at configure time.
 function(valsalva_validation_case name)
-  cmake_parse_arguments(CASE "" "QUICK_TIMEOUT;FULL_TIMEOUT;KNOWN_FAILURE" "SOURCES;QUICK_NP"
-    ${ARGN})
+  cmake_parse_arguments(CASE "" "QUICK_TIMEOUT;FULL_TIMEOUT;KNOWN_FAILURE"
+    "SOURCES;QUICK_NP;MULTI_RANK_SET" ${ARGN})
   if(NOT CASE_SOURCES)
     message(FATAL_ERROR "valsalva_validation_case(${name}): no SOURCES")
   endif()
@@ -32,6 +35,7 @@ function(valsalva_validation_case name)
   set_property(GLOBAL PROPERTY VALSALVA_CASE_${name}_QUICK_TIMEOUT ${CASE_QUICK_TIMEOUT})
   set_property(GLOBAL PROPERTY VALSALVA_CASE_${name}_FULL_TIMEOUT ${CASE_FULL_TIMEOUT})
   set_property(GLOBAL PROPERTY VALSALVA_CASE_${name}_KNOWN_FAILURE "${CASE_KNOWN_FAILURE}")
+  set_property(GLOBAL PROPERTY VALSALVA_CASE_${name}_MULTI_RANK_SET "${CASE_MULTI_RANK_SET}")
   if(CASE_KNOWN_FAILURE)
     message(STATUS "validation case ${name}: known failure: ${CASE_KNOWN_FAILURE}")
   endif()

@@ -269,7 +269,7 @@ TEST_CASE(
   const double rho = VortexBox::rho, U = VortexBox::U;
   std::vector<double> delta;
   for (int i = 0; i < mesh.num_local(); ++i) delta.push_back(std::cbrt(mesh.volume[i]));
-  const les::SubgridViscosity smagorinsky("smagorinsky", std::nullopt, delta);
+  const les::SubgridViscosity smagorinsky(les::SgsKind::smagorinsky, std::nullopt, delta);
   const auto cy = cho_kensey();
   flow::ProjectionOptions base;
   base.density = rho;

@@ -25,7 +25,7 @@ struct LesRun {
 
 LesRun run(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics, const mesh::LocalMesh& local,
            les::SgsUpdate update) {
-  const les::SubgridViscosity sgs("sigma", {}, local.h, update);
+  const les::SubgridViscosity sgs(les::SgsKind::sigma, {}, local.h, update);
   flow::ProjectionOptions o;
   o.density = 1;
   o.viscosity = 1.0 / 1600;
@@ -62,7 +62,7 @@ TEST_CASE("LES (TGV Re 1600, central4, sigma) agrees with the serial run to 1e-1
         test::gather_by_dual_node(serial, test::flatten(b.velocity), 3, n));
     const double dnu = test::max_abs_difference(test::gather_by_dual_node(local, a.nu_sgs, 1, n),
                                                 test::gather_by_dual_node(serial, b.nu_sgs, 1, n));
-    MESSAGE("update " << std::string(les::name(update)) << ", np " << local.comm.size()
+    MESSAGE("update " << les::to_string(update) << ", np " << local.comm.size()
                       << " vs serial: max |du| " << du << " (V0 = 1), max |d nu_sgs| / nu "
                       << dnu * 1600 << ", max nu_sgs / nu " << a.max_nu_sgs * 1600);
     // The model must be active for the comparison to mean anything (measured max nu_sgs / nu 21

@@ -182,24 +182,24 @@ TEST_CASE("model constants follow their sources") {
 }
 
 TEST_CASE("model factory") {
-  CHECK(make_sgs_model("sigma").kind == SgsKind::sigma);
-  CHECK(make_sgs_model("sigma").constant == 1.35);
-  CHECK(make_sgs_model("sigma", 1.5).constant == 1.5);
-  CHECK(make_sgs_model("wale").constant == 0.5);
-  CHECK(make_sgs_model("smagorinsky").constant == 0.17);
-  CHECK(make_sgs_model("none").kind == SgsKind::none);
+  CHECK(make_sgs_model(SgsKind::sigma).kind == SgsKind::sigma);
+  CHECK(make_sgs_model(SgsKind::sigma).constant == 1.35);
+  CHECK(make_sgs_model(SgsKind::sigma, 1.5).constant == 1.5);
+  CHECK(make_sgs_model(SgsKind::wale).constant == 0.5);
+  CHECK(make_sgs_model(SgsKind::smagorinsky).constant == 0.17);
+  CHECK(make_sgs_model(SgsKind::none).kind == SgsKind::none);
   for (const char* n : {"sigma", "wale", "smagorinsky", "none"})
-    CHECK(std::string(name(make_sgs_model(n).kind)) == n);
+    CHECK(to_string(parse_sgs_kind(n)) == n);
   std::string msg;
   try {
-    make_sgs_model("Sigma");
+    parse_sgs_kind("Sigma");
   } catch (const std::invalid_argument& e) {
     msg = e.what();
   }
   CHECK(msg.find("'Sigma'") != std::string::npos);
-  CHECK(msg.find("sigma, wale, smagorinsky, none") != std::string::npos);
-  CHECK_THROWS_AS(make_sgs_model("wale", -0.5), std::invalid_argument);
-  CHECK_THROWS_AS(make_sgs_model("wale", std::nan("")), std::invalid_argument);
+  CHECK(msg.find("none, sigma, wale, smagorinsky") != std::string::npos);
+  CHECK_THROWS_AS(make_sgs_model(SgsKind::wale, -0.5), std::invalid_argument);
+  CHECK_THROWS_AS(make_sgs_model(SgsKind::wale, std::nan("")), std::invalid_argument);
 }
 
 TEST_CASE("array loop equals the kernels node by node") {
@@ -211,8 +211,8 @@ TEST_CASE("array loop equals the kernels node by node") {
   for (std::size_t i = 0; i < n; ++i) grad[i] = 100.0 * gaussian_matrix(rng), volume[i] = vol(rng);
   filter_width(volume, delta);
   CHECK(delta[17] * delta[17] * delta[17] == doctest::Approx(volume[17]).epsilon(1e-14));
-  for (const char* model_name : {"sigma", "wale", "smagorinsky", "none"}) {
-    const SgsModel model = make_sgs_model(model_name);
+  for (const SgsKind kind : {SgsKind::sigma, SgsKind::wale, SgsKind::smagorinsky, SgsKind::none}) {
+    const SgsModel model = make_sgs_model(kind);
     compute_nu_sgs(model, grad, delta, nu);
     double worst = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -233,9 +233,9 @@ TEST_CASE("array loop equals the kernels node by node") {
   }
   std::vector<double> bad_flat(9 * n - 1);
   CHECK_THROWS_AS(
-      compute_nu_sgs(make_sgs_model("wale"), std::span<const double>(bad_flat), delta, nu),
+      compute_nu_sgs(make_sgs_model(SgsKind::wale), std::span<const double>(bad_flat), delta, nu),
       std::invalid_argument);
   std::vector<double> short_out(n - 1);
-  CHECK_THROWS_AS(compute_nu_sgs(make_sgs_model("sigma"), grad, delta, short_out),
+  CHECK_THROWS_AS(compute_nu_sgs(make_sgs_model(SgsKind::sigma), grad, delta, short_out),
                   std::invalid_argument);
 }

@@ -118,7 +118,7 @@ void run_one(const Context& ctx, Run& run) {
     flow::TensorField g;
     flow::gradient(local, sim.state().velocity, g);
     flow::ScalarField nu_sgs(local.num_local(), 0.0);
-    les::SubgridViscosity(s.les, std::nullopt, local.h)(g, nu_sgs);
+    les::SubgridViscosity(les::parse_sgs_kind(s.les), std::nullopt, local.h)(g, nu_sgs);
     double worst = 0;
     for (int j = 0; j < local.num_owned; ++j) worst = std::max(worst, nu_sgs[j] / nu);
     run.first_nu = local.comm.max(worst);
