@@ -113,6 +113,7 @@ struct Simulation::Parts {
   StepObserver observer;
   VelocityModifier modifier;
   bool stop_requested = false;  // by the observer
+  bool stopped_by_signal = false;
 
   void write_fields(const std::string& stream, double time, const io::FieldSet& set);
   void write_checkpoint(const flow::FlowState& state, std::int64_t step, double dt,
@@ -420,6 +421,7 @@ RunResult Simulation::run() {
     // Collective (StopSignal::requested reduces over the ranks); the observer's request is
     // made on every rank alike.
     const bool signalled = p.stop && p.stop->requested(p.comm);
+    if (signalled) p.stopped_by_signal = true;
     return signalled || p.stop_requested;
   };
   p.loop->set_hooks(std::move(hooks));
@@ -432,6 +434,7 @@ RunResult Simulation::run() {
   result.run_path = p.run_path;
   try {
     result.summary = p.loop->run();
+    result.stopped_by_signal = p.stopped_by_signal;
   } catch (const run::RunError& e) {
     if (e.key().empty()) throw;
     throw std::runtime_error(p.scene.location(e.key()).str() + ": " + e.what());

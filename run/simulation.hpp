@@ -41,6 +41,8 @@ struct RunResult {
   std::filesystem::path run_path;         // the run directory (log.csv and the rest)
   std::filesystem::path fields_xmf;       // empty without field output
   std::filesystem::path last_checkpoint;  // empty when none was written
+  // SIGINT or SIGTERM on some rank ended the run early (summary.stopped; the same on every rank).
+  bool stopped_by_signal = false;
 };
 
 class Simulation;

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <cstdlib>
+#include <stdexcept>
 #include <system_error>
 
 #include "core/comm.hpp"
@@ -76,6 +77,13 @@ run::RunResult run_scene_file(const std::filesystem::path& scene_file,
   if (measure.modify_velocity) simulation.modify_velocity(measure.modify_velocity);
   if (measure.observer) simulation.observe(measure.observer);
   auto result = simulation.run();
+  // A level cut short (e.g. a time limit's SIGTERM) has not produced what its metrics read: the
+  // case fails instead of measuring an incomplete run.
+  if (result.stopped_by_signal)
+    throw std::runtime_error(fmt::format(
+        "{}: a stop signal ended the level's run at t = {:.6g} s (step {}), before its end; the "
+        "case's metrics would read an incomplete run",
+        scene_file.string(), simulation.state().time, result.summary.steps));
   if (measure.at_end) measure.at_end(simulation);
   if (scratch) result.run_path.clear();  // gone with the scratch folder
   return result;

@@ -38,6 +38,7 @@ struct SceneRun {
 // Loads `scene_file` with `overrides` and runs it quietly (nothing on stdout) into `run_dir`,
 // replacing what is there; an empty `run_dir` runs in a scratch folder under the system's
 // temporary directory (the same on every rank), removed afterwards. Collective over `comm`.
+// Throws std::runtime_error when a stop signal (SIGINT, SIGTERM) ended the run early.
 run::RunResult run_scene_file(const std::filesystem::path& scene_file,
                               const std::vector<std::string>& overrides,
                               const std::filesystem::path& run_dir, MPI_Comm comm,
