@@ -30,12 +30,13 @@ struct SampleOptions {
 };
 
 struct StatisticsOptions {
-  enum class Region { all, plane, box, line };
+  enum class Region { all, plane, box, line, section };
   PhaseStatisticsOptions phase;
   int every_steps = 1;
   double write_interval = 0;  // s; > 0: also write the files every this much time (from start)
   Region region = Region::all;
-  Eigen::Vector3d a{0, 0, 0}, b{0, 0, 0};  // plane: point, normal; box: lo, hi
+  Eigen::Vector3d a{0, 0, 0}, b{0, 0, 0};    // plane, section: point, normal; box: lo, hi
+  Eigen::Vector3d lo{0, 0, 0}, hi{0, 0, 0};  // section: the window the cut cells overlap
   double half_thickness = 0;
   LineSpec line;  // line: points along a segment (analysis/line_statistics.hpp)
 };

@@ -10,6 +10,7 @@
 
 #include "core/comm.hpp"
 #include "io/field_output.hpp"
+#include "mesh/plane_cut.hpp"
 
 namespace valsalva::analysis {
 
@@ -142,6 +143,21 @@ std::vector<int> nodes_in_box(const mesh::LocalMesh& local, const Eigen::Vector3
     if ((local.position[i].array() >= lo.array()).all() &&
         (local.position[i].array() <= hi.array()).all())
       v.push_back(i);
+  return v;
+}
+
+std::vector<int> nodes_of_cut_cells(const mesh::LocalMesh& local, const mesh::Mesh& mesh,
+                                    const mesh::DualMetrics& metrics, const Eigen::Vector3d& point,
+                                    const Eigen::Vector3d& normal, const Eigen::Vector3d& lo,
+                                    const Eigen::Vector3d& hi) {
+  std::vector<char> marked(metrics.mesh_node_of_dual.size(), 0);
+  for (const mesh::GlobalIndex c : mesh::cells_cut_by_plane(mesh, point, normal, lo, hi))
+    for (const mesh::GlobalIndex node : mesh.cell(c))
+      marked[static_cast<std::size_t>(metrics.dual_of_mesh_node[static_cast<std::size_t>(node)])] =
+          1;
+  std::vector<int> v;
+  for (int i = 0; i < local.num_owned; ++i)
+    if (marked[static_cast<std::size_t>(local.dual_node[i])]) v.push_back(i);
   return v;
 }
 

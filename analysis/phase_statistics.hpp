@@ -65,6 +65,13 @@ std::vector<int> all_owned_nodes(const mesh::LocalMesh& local);
 // Nodes within `half_thickness` of the plane through `point` with normal `normal`.
 std::vector<int> nodes_near_plane(const mesh::LocalMesh& local, const Eigen::Vector3d& point,
                                   const Eigen::Vector3d& normal, double half_thickness);
+// Owned nodes of the cells mesh::cells_cut_by_plane finds: every node that interpolation anywhere
+// on the plane within the box needs (a slab of nodes near the plane misses some of them wherever
+// cells are thicker than the slab, and the statistics there read as NaN).
+std::vector<int> nodes_of_cut_cells(const mesh::LocalMesh& local, const mesh::Mesh& mesh,
+                                    const mesh::DualMetrics& metrics, const Eigen::Vector3d& point,
+                                    const Eigen::Vector3d& normal, const Eigen::Vector3d& lo,
+                                    const Eigen::Vector3d& hi);
 // Nodes inside the axis-aligned box [lo, hi].
 std::vector<int> nodes_in_box(const mesh::LocalMesh& local, const Eigen::Vector3d& lo,
                               const Eigen::Vector3d& hi);

@@ -9,12 +9,15 @@ namespace valsalva::analysis {
 
 namespace {
 
-std::vector<int> covered_nodes(const mesh::LocalMesh& local, const StatisticsOptions& s) {
+std::vector<int> covered_nodes(const mesh::LocalMesh& local, const mesh::Mesh& mesh,
+                               const mesh::DualMetrics& metrics, const StatisticsOptions& s) {
   switch (s.region) {
     case StatisticsOptions::Region::plane:
       return nodes_near_plane(local, s.a, s.b.normalized(), s.half_thickness);
     case StatisticsOptions::Region::box:
       return nodes_in_box(local, s.a, s.b);
+    case StatisticsOptions::Region::section:
+      return nodes_of_cut_cells(local, mesh, metrics, s.a, s.b, s.lo, s.hi);
     case StatisticsOptions::Region::all:
     case StatisticsOptions::Region::line:
       break;
@@ -55,7 +58,7 @@ RunAnalysis::RunAnalysis(const mesh::Mesh& mesh, const mesh::DualMetrics& metric
       continue;
     }
     slot_.push_back(statistics_.size());
-    auto nodes = covered_nodes(local, s);
+    auto nodes = covered_nodes(local, mesh, metrics, s);
     const auto covered = local.comm.sum(static_cast<std::int64_t>(nodes.size()));
     if (covered == 0)
       throw std::runtime_error(

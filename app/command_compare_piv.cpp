@@ -19,6 +19,7 @@
 #include "analysis/piv_compare.hpp"
 #include "analysis/probes.hpp"
 #include "analysis/statistics_files.hpp"
+#include "app/piv_plane_options.hpp"
 #include "run/data_dir.hpp"
 
 namespace valsalva::app {
@@ -29,7 +30,7 @@ namespace fs = std::filesystem;
 
 struct Options {
   std::string stats, piv, out = "piv-compare";
-  std::vector<double> origin, ex, ey;
+  PivPlaneOptions plane;
   std::vector<std::string> lines;
   int bin = -1;
   int line_points = 60;
@@ -73,8 +74,9 @@ int run(const Options& o) {
   const auto mesh = analysis::read_statistics_mesh(mesh_file);
   const auto phase_times = analysis::read_phase_times(dir / (name + "_phases.csv"));
   const auto piv = analysis::read_piv(o.piv, o.units);
-  const analysis::PivPlane plane(Eigen::Vector3d(o.origin.data()), Eigen::Vector3d(o.ex.data()),
-                                 Eigen::Vector3d(o.ey.data()));
+  const analysis::PivPlane plane(Eigen::Vector3d(o.plane.origin.data()),
+                                 Eigen::Vector3d(o.plane.ex.data()),
+                                 Eigen::Vector3d(o.plane.ey.data()));
   std::vector<analysis::ProfileLine> lines;
   for (const auto& l : o.lines) lines.push_back(parse_line(l)), lines.back().points = o.line_points;
   const mesh::PointLocator locator(mesh);
@@ -153,18 +155,7 @@ CLI::App* add_compare_piv(CLI::App& cli, std::function<int()>& action) {
   c->add_option("piv", o->piv, "PIV file: CSV or Tecplot ASCII (m, m/s unless scaled)")
       ->required()
       ->check(CLI::ExistingFile);
-  c->add_option("--origin", o->origin, "PIV origin in the simulation frame, m (x,y,z)")
-      ->required()
-      ->expected(3)
-      ->delimiter(',');
-  c->add_option("--ex", o->ex, "PIV x axis in the simulation frame, unit vector")
-      ->required()
-      ->expected(3)
-      ->delimiter(',');
-  c->add_option("--ey", o->ey, "PIV y axis in the simulation frame, unit vector")
-      ->required()
-      ->expected(3)
-      ->delimiter(',');
+  add_piv_plane_options(c, o->plane);
   c->add_option("--line", o->lines, "Profile line NAME:x0,y0,x1,y1 in PIV-plane metres");
   c->add_option("--line-points", o->line_points, "Points per profile line");
   c->add_option("--bin", o->bin, "Statistics bin for every frame (default: nearest phase)");

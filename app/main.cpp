@@ -9,6 +9,7 @@
 
 #include "app/command_close_leaflets.hpp"
 #include "app/command_compare_piv.hpp"
+#include "app/command_export_piv.hpp"
 #include "app/command_make_valve.hpp"
 #include "app/command_plot_valve.hpp"
 #include "app/command_psd.hpp"
@@ -75,6 +76,8 @@ int main(int argc, char** argv) {
 
   std::function<int()> compare_piv;
   auto* piv = valsalva::app::add_compare_piv(cli, compare_piv);
+  std::function<int()> export_piv;
+  auto* export_piv_cmd = valsalva::app::add_export_piv(cli, export_piv);
   std::function<int()> psd;
   auto* psd_cmd = valsalva::app::add_psd(cli, psd);
   std::function<int()> plot_valve;
@@ -103,6 +106,7 @@ int main(int argc, char** argv) {
     if (*docs) code = valsalva::app::docs_scenes();
     if (*docs_val) code = valsalva::app::docs_validation();
     if (*piv) code = compare_piv();
+    if (*export_piv_cmd) code = export_piv();
     if (*psd_cmd) code = psd();
     if (*plot_valve_cmd) code = plot_valve();
     if (*close_cmd) code = close_leaflets();

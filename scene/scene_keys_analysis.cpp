@@ -12,6 +12,7 @@
 #include <set>
 
 #include "core/allocation_limit.hpp"
+#include "mesh/plane_cut.hpp"
 #include "scene/scene_keys.hpp"
 #include "scene/scene_keys_sections.hpp"
 
@@ -115,26 +116,31 @@ void declare_analysis_keys(Schema& s) {
           "(e.g. one period, to follow the convergence over cycles); 0 = at the end of the run "
           "only. Each write costs about 2-3 time steps per bin on the whole mesh "
           "(docs/analysis.md)");
-  s.choice(st + ".region", {"all", "plane", "box", "line"})
+  s.choice(st + ".region", {"all", "plane", "box", "line", "section"})
       .def("all")
       .unit_of("-")
       .doc(
-          "Nodes covered: the whole mesh, a slab around a plane, or an axis-aligned box; or "
+          "Nodes covered: the whole mesh, a slab around a plane, an axis-aligned box, or the "
+          "section of a plane within a box (the nodes of every cell the plane cuts there: what "
+          "interpolation on the plane needs, e.g. by `valsalva compare-piv` or `export-piv`); or "
           "points along a line, where u, v, w, p are interpolated from the mesh");
   s.real3(st + ".point").required().unit_of("m").doc("A point of the plane");
-  s.when(st + ".point", st + ".region", {"plane"});
+  s.when(st + ".point", st + ".region", {"plane", "section"});
   s.real3(st + ".normal").required().unit_of("-").doc("Normal of the plane");
-  s.when(st + ".normal", st + ".region", {"plane"});
+  s.when(st + ".normal", st + ".region", {"plane", "section"});
   s.real(st + ".half_thickness")
       .required()
       .above(0)
       .unit_of("m")
       .doc("Nodes within this distance of the plane are covered (about half a cell)");
   s.when(st + ".half_thickness", st + ".region", {"plane"});
-  s.real3(st + ".lo").required().unit_of("m").doc("Lower corner of the box");
-  s.when(st + ".lo", st + ".region", {"box"});
+  s.real3(st + ".lo")
+      .required()
+      .unit_of("m")
+      .doc("Lower corner of the box (section: of the window the cut cells must overlap)");
+  s.when(st + ".lo", st + ".region", {"box", "section"});
   s.real3(st + ".hi").required().unit_of("m").doc("Upper corner of the box");
-  s.when(st + ".hi", st + ".region", {"box"});
+  s.when(st + ".hi", st + ".region", {"box", "section"});
   s.real3(st + ".origin").required().unit_of("m").doc("First point of the line");
   s.when(st + ".origin", st + ".region", {"line"});
   s.real3(st + ".end").required().unit_of("m").doc("Last point of the line");
@@ -250,10 +256,11 @@ analysis::AnalysisOptions read_analysis_options(const Scene& scene, const mesh::
     s.every_steps = scene.get<int>(k + ".every_steps");
     s.write_interval = scene.get<double>(k + ".write_interval");
     const auto region = scene.get<std::string>(k + ".region");
-    s.region = region == "all"     ? analysis::StatisticsOptions::Region::all
-               : region == "plane" ? analysis::StatisticsOptions::Region::plane
-               : region == "line"  ? analysis::StatisticsOptions::Region::line
-                                   : analysis::StatisticsOptions::Region::box;
+    s.region = region == "all"       ? analysis::StatisticsOptions::Region::all
+               : region == "plane"   ? analysis::StatisticsOptions::Region::plane
+               : region == "line"    ? analysis::StatisticsOptions::Region::line
+               : region == "section" ? analysis::StatisticsOptions::Region::section
+                                     : analysis::StatisticsOptions::Region::box;
     if (s.region == analysis::StatisticsOptions::Region::plane) {
       s.a = scene_vector(scene, k + ".point");
       s.b = scene_vector(scene, k + ".normal");
@@ -284,6 +291,23 @@ analysis::AnalysisOptions read_analysis_options(const Scene& scene, const mesh::
                                       "spans {}",
                                       format_vector(s.a), format_vector(s.b), mesh_span(mesh)),
                           "a box overlapping the mesh");
+    } else if (s.region == analysis::StatisticsOptions::Region::section) {
+      s.a = scene_vector(scene, k + ".point");
+      s.b = scene_vector(scene, k + ".normal");
+      s.lo = scene_vector(scene, k + ".lo");
+      s.hi = scene_vector(scene, k + ".hi");
+      if (!(s.b.norm() > 0)) throw scene.error(k + ".normal", "the normal is zero");
+      if (!(s.lo.array() < s.hi.array()).all())
+        throw scene.error(k + ".hi",
+                          "the window's upper corner must exceed its lower corner in x, y and z");
+      if (mesh::cells_cut_by_plane(mesh, s.a, s.b, s.lo, s.hi).empty())
+        throw scene.error(
+            k + ".point",
+            fmt::format("the plane through {} (normal {}) cuts no mesh cell within the window "
+                        "{} to {}; the mesh spans {}",
+                        format_vector(s.a), format_vector(s.b), format_vector(s.lo),
+                        format_vector(s.hi), mesh_span(mesh)),
+            "a plane through the mesh inside the window");
     } else if (s.region == analysis::StatisticsOptions::Region::line) {
       s.line = {scene_vector(scene, k + ".origin"), scene_vector(scene, k + ".end"),
                 scene.get<int>(k + ".points")};

@@ -15,6 +15,8 @@
 #include "mesh/box_generator.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
+#include "mesh/plane_cut.hpp"
+#include "mesh/point_locator.hpp"
 
 using namespace valsalva;
 namespace fs = std::filesystem;
@@ -215,4 +217,64 @@ TEST_CASE("phase statistics: checkpoint round trip and output") {
     CHECK(off == mesh.num_nodes() - 28);
     CHECK(wrong == 0);
   }
+}
+
+TEST_CASE("section region: the nodes of every cell a plane cuts inside the window") {
+  // Unit box of 4^3 hexahedra (cells 0.25 wide): a plane between node layers cuts one layer of
+  // cells, a plane on a node layer the two layers it bounds; the window keeps the cells whose
+  // bounding box overlaps it.
+  mesh::BoxSpec spec;
+  spec.cells = {4, 4, 4};
+  const auto hexes = mesh::generate_box(spec);
+  const auto hex_metrics = mesh::compute_dual_metrics(hexes);
+  const auto hex_local =
+      mesh::distribute(hexes, hex_metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
+  const Eigen::Vector3d x_axis{1, 0, 0}, lo{-1, -1, -1}, hi{2, 2, 2};
+  const auto covered = [&](const Eigen::Vector3d& point, const Eigen::Vector3d& window_hi) {
+    return hex_local.comm.sum(static_cast<std::int64_t>(
+        analysis::nodes_of_cut_cells(hex_local, hexes, hex_metrics, point, x_axis, lo, window_hi)
+            .size()));
+  };
+  CHECK(mesh::cells_cut_by_plane(hexes, {0.3, 0, 0}, x_axis, lo, hi).size() == 16);
+  CHECK(covered({0.3, 0, 0}, hi) == 2 * 25);
+  CHECK(mesh::cells_cut_by_plane(hexes, {0.5, 0, 0}, x_axis, lo, hi).size() == 32);
+  CHECK(covered({0.5, 0, 0}, hi) == 3 * 25);
+  CHECK(mesh::cells_cut_by_plane(hexes, {0.3, 0, 0}, x_axis, lo, {2, 0.2, 2}).size() == 4);
+  CHECK(covered({0.3, 0, 0}, {2, 0.2, 2}) == 2 * 2 * 5);
+  CHECK(mesh::cells_cut_by_plane(hexes, {1.5, 0, 0}, x_axis, lo, hi).empty());
+
+  // A tilted plane through tetrahedra: every point of the plane inside the window lies in a
+  // cell whose nodes are all covered (what interpolation on the plane needs), which a slab of
+  // nodes within half a cell of the plane does not give.
+  const auto tets = box();  // 6 x 4 x 3 cells of the unit box, split into tetrahedra
+  const auto metrics = mesh::compute_dual_metrics(tets);
+  const Eigen::Vector3d point{0.5, 0.5, 0.5}, normal = Eigen::Vector3d(1, 0.3, 0.2).normalized();
+  const Eigen::Vector3d window_lo{0, 0.1, 0.1}, window_hi{1, 0.9, 0.9};
+  std::vector<char> marked(tets.nodes.size(), 0);
+  for (auto c : mesh::cells_cut_by_plane(tets, point, normal, window_lo, window_hi))
+    for (auto n : tets.cell(c)) marked[static_cast<std::size_t>(n)] = 1;
+  std::vector<char> slab(tets.nodes.size(), 0);
+  for (std::size_t n = 0; n < tets.nodes.size(); ++n)
+    slab[n] = std::abs((tets.nodes[n] - point).dot(normal)) <= 0.5 / 6;
+  const mesh::PointLocator locator(tets);
+  const Eigen::Vector3d e1 = normal.cross(Eigen::Vector3d::UnitZ()).normalized();
+  const Eigen::Vector3d e2 = normal.cross(e1);
+  int inside = 0, complete = 0, slab_complete = 0;
+  for (int i = 0; i <= 40; ++i)
+    for (int j = 0; j <= 40; ++j) {
+      const Eigen::Vector3d x = point + (i / 40.0 - 0.5) * 0.8 * e1 + (j / 40.0 - 0.5) * 0.8 * e2;
+      if (!((x.array() >= window_lo.array()).all() && (x.array() <= window_hi.array()).all()))
+        continue;
+      const auto at = locator.locate(x);
+      REQUIRE(at);
+      ++inside;
+      bool all = true, all_slab = true;
+      for (int k = 0; k < at->count; ++k)
+        all = all && marked[static_cast<std::size_t>(at->nodes[k])],
+        all_slab = all_slab && slab[static_cast<std::size_t>(at->nodes[k])];
+      complete += all, slab_complete += all_slab;
+    }
+  CHECK(inside > 500);
+  CHECK(complete == inside);
+  CHECK(slab_complete < inside);
 }
