@@ -2,7 +2,8 @@
 // reads the statistics written by analysis::PhaseStatistics::write (mesh, one HDF5 file per phase
 // bin, <name>_phases.csv), reads the PIV file, matches every PIV frame to the bin whose phase time
 // is nearest to the frame's phase/time value (or to --bin), and writes metrics.csv, frame_<i>.csv,
-// profile_<line>_<i>.csv and frame_<i>.png (analysis/plot_piv.py) into --out. PIV files in other
+// profile_<line>_<i>.csv and frame_<i>.png (analysis/plot_piv.py) into --out (an --out holding
+// an earlier comparison's metrics.csv is kept unless --overwrite). PIV files in other
 // units than m and m/s take --length-scale / --velocity-scale (analysis::PivUnits). Runs on rank 0.
 #include "app/command_compare_piv.hpp"
 
@@ -36,6 +37,7 @@ struct Options {
   int line_points = 60;
   analysis::PivUnits units;  // file units -> m, m/s
   bool plot = true;
+  bool overwrite = false;
 };
 
 analysis::ProfileLine parse_line(const std::string& text) {
@@ -67,6 +69,11 @@ int run(const Options& o) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank != 0) return 0;
+  if (!o.overwrite && fs::exists(fs::path(o.out) / "metrics.csv"))
+    throw std::invalid_argument(
+        fmt::format("compare-piv: '{}' holds an earlier comparison (metrics.csv); --overwrite "
+                    "replaces it",
+                    o.out));
   const fs::path stats(o.stats);
   const fs::path dir = stats.parent_path();
   const std::string name = stats.stem().string();
@@ -167,6 +174,7 @@ CLI::App* add_compare_piv(CLI::App& cli, std::function<int()>& action) {
                 "m/s per PIV velocity unit, applied on reading (0.001 for mm/s)")
       ->check(CLI::PositiveNumber);
   c->add_flag("!--no-plot", o->plot, "Do not make PNG plots");
+  c->add_flag("--overwrite", o->overwrite, "Replace the results of an earlier comparison in --out");
   action = [o] { return run(*o); };
   return c;
 }

@@ -8,7 +8,7 @@
 # - every PIV point inside the mesh is compared (points + outside = 63 x 79): the section covers
 #   every node interpolation on the plane needs (a slab of nodes 2 mm thick left 96 % masked);
 # - at least 10 frames (the bins the 0.13 s run fills) and a non-zero velocity in each.
-# Then an existing output is refused without --overwrite.
+# Then an existing output of either command is refused without --overwrite.
 set -euo pipefail
 app=$1
 d=validation-results/valve/run/statistics
@@ -41,3 +41,12 @@ if "$app" export-piv "$d/piv.xmf" "${plane[@]}" --out "$out/piv.csv" 2> "$out/re
   exit 1
 fi
 grep -q "exists; --overwrite replaces it" "$out/refused.err"
+# compare-piv keeps an earlier comparison too, and replaces it with --overwrite.
+if "$app" compare-piv "$d/piv.xmf" "$out/piv.csv" "${plane[@]}" --out "$out/compare" --no-plot \
+  > /dev/null 2> "$out/refused_compare.err"; then
+  echo "FAIL: compare-piv overwrote $out/compare without --overwrite"
+  exit 1
+fi
+grep -q "holds an earlier comparison (metrics.csv); --overwrite replaces it" "$out/refused_compare.err"
+"$app" compare-piv "$d/piv.xmf" "$out/piv.csv" "${plane[@]}" --out "$out/compare" --no-plot \
+  --overwrite > /dev/null
