@@ -11,31 +11,45 @@ namespace valsalva::flow {
 
 namespace {
 // `scale * nu_at(j)`: the kinematic viscosity of local node j (a constant nu as scale = nu and
-// nu_at = 1 keeps the Newtonian bound's rounding as it was).
+// nu_at = 1 keeps the Newtonian bound's rounding as it was). With `nodal_viscosity` the Fourier
+// number of node j uses the viscosity its row sees, the |a_jk|-weighted mean of its edge
+// viscosities (nu_j + nu_k) / 2, rather than nu_j: it then stands to the row's Gershgorin bound
+// rv_j as a constant nu does, so a node of small viscosity beside nodes of large one (the edge
+// of a jet's subgrid viscosity) cannot meet the Fourier target and break the stability limit.
 template <class Viscosity>
 StabilityRates rates(const mesh::LocalMesh& mesh, const std::vector<double>& weights,
                      Viscosity nu_at, double scale, const VectorField& u,
-                     std::vector<double>& scratch) {
+                     std::vector<double>& scratch, bool nodal_viscosity) {
   const int n = mesh.num_local();
-  // Per-node sums of |u_jk . S_jk| / 2 and a_jk nu_jk over the edges (each edge feeds both ends).
-  scratch.assign(2 * static_cast<std::size_t>(n), 0.0);
+  // Per-node sums of |u_jk . S_jk| / 2, a_jk nu_jk, |a_jk| nu_jk and |a_jk| over the edges (each
+  // edge feeds both ends).
+  scratch.assign(4 * static_cast<std::size_t>(n), 0.0);
   double* conv = scratch.data();
   double* visc = scratch.data() + n;
+  double* visc_abs = scratch.data() + 2 * n;
+  double* weight_abs = scratch.data() + 3 * n;
   for (int e = 0; e < mesh.num_owned_edges; ++e) {
     const auto [j, k] = mesh.edges[e];
     const double flux = 0.25 * std::abs((u[j] + u[k]).dot(mesh.edge_normal[e]));
     conv[j] += flux;
     conv[k] += flux;
-    const double a = weights[e] * 0.5 * (nu_at(j) + nu_at(k));
+    const double nu_jk = 0.5 * (nu_at(j) + nu_at(k));
+    const double a = weights[e] * nu_jk, w = std::abs(weights[e]);
     visc[j] += a;
     visc[k] += a;
+    visc_abs[j] += w * nu_jk;
+    visc_abs[k] += w * nu_jk;
+    weight_abs[j] += w;
+    weight_abs[k] += w;
   }
   StabilityRates r;
   for (int j = 0; j < mesh.num_owned; ++j) {
     const double rc = conv[j] / mesh.volume[j], rv = 2 * scale * visc[j] / mesh.volume[j];
     r.stability = std::max(r.stability, rc / rk4_imaginary_limit + rv / rk4_real_limit);
     r.convective = std::max(r.convective, u[j].norm() / mesh.h[j]);
-    r.viscous = std::max(r.viscous, scale * nu_at(j) / (mesh.h[j] * mesh.h[j]));
+    const double nu_row =
+        nodal_viscosity && weight_abs[j] > 0 ? visc_abs[j] / weight_abs[j] : nu_at(j);
+    r.viscous = std::max(r.viscous, scale * nu_row / (mesh.h[j] * mesh.h[j]));
   }
   r.stability = mesh.comm.max(r.stability);
   r.convective = mesh.comm.max(r.convective);
@@ -47,14 +61,14 @@ StabilityRates rates(const mesh::LocalMesh& mesh, const std::vector<double>& wei
 StabilityRates stability_rates(const mesh::LocalMesh& mesh, const std::vector<double>& weights,
                                double nu, const VectorField& u, std::vector<double>& scratch) {
   return rates(
-      mesh, weights, [](int) { return 1.0; }, nu, u, scratch);
+      mesh, weights, [](int) { return 1.0; }, nu, u, scratch, false);
 }
 
 StabilityRates stability_rates(const mesh::LocalMesh& mesh, const std::vector<double>& weights,
                                const ScalarField& nu, const VectorField& u,
                                std::vector<double>& scratch) {
   return rates(
-      mesh, weights, [&nu](int j) { return nu[j]; }, 1.0, u, scratch);
+      mesh, weights, [&nu](int j) { return nu[j]; }, 1.0, u, scratch, true);
 }
 
 double kinetic_energy(const mesh::LocalMesh& mesh, double rho, const VectorField& u) {

@@ -11,9 +11,10 @@
 // between these two points lies inside its stability region (|R(z)| <= 1 checked numerically),
 // so dt is stable when
 //   sigma = dt max_j (rc_j / 2.8284 + rv_j / 2.7853) <= 1.
-// With a nodal viscosity (non-Newtonian fluids) the viscous row of node j is bounded by
-// rv_j = (2 / V_j) sum_k a_jk (nu_j + nu_k) / 2 (the edge viscosity of flow/viscous_stress.hpp)
-// and the Fourier number is max_j nu_j dt / h_j^2: the local viscosity sets the bound.
+// With a nodal viscosity (non-Newtonian fluids, nu + nu_sgs of LES) the viscous row of node j is
+// bounded by rv_j = (2 / V_j) sum_k a_jk (nu_j + nu_k) / 2 (the edge viscosity of
+// flow/viscous_stress.hpp) and the Fourier number is max_j nubar_j dt / h_j^2 with nubar_j the
+// |a_jk|-weighted mean of node j's edge viscosities: each node's own neighbourhood sets the bound.
 #pragma once
 
 #include <string>
@@ -29,11 +30,11 @@ inline constexpr double rk4_real_limit = 2.7852935634052820;
 struct StabilityRates {
   double stability = 0;   // max_j (rc_j / 2.83 + rv_j / 2.79), 1/s: sigma = dt * stability
   double convective = 0;  // max_j |u_j| / h_j, 1/s: CFL = dt * convective
-  double viscous = 0;     // max_j nu / h_j^2, 1/s: Fourier number = dt * viscous
+  double viscous = 0;     // max_j nu(bar)_j / h_j^2, 1/s: Fourier number = dt * viscous
 };
 
 // Collective. `weights` are flow::laplacian_weights(mesh), nu the kinematic viscosity;
-// `scratch` is resized to 2 num_local() and reused (no allocation inside the time loop).
+// `scratch` is resized to 4 num_local() and reused (no allocation inside the time loop).
 StabilityRates stability_rates(const mesh::LocalMesh& mesh, const std::vector<double>& weights,
                                double nu, const VectorField& u, std::vector<double>& scratch);
 // The same with the kinematic viscosity `nu` of every local node (ghosts valid).

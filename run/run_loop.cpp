@@ -146,21 +146,46 @@ flow::ProjectionOptions& RunLoop::attach_boundary() {
 double RunLoop::choose_dt(double remaining) {
   const auto& t = options_.time;
   // A non-Newtonian fluid: its nodal viscosity of the current velocity (+ nu_sgs), or the cap of
-  // a law that has one at every node (flow/viscosity_model.hpp, viscosity_cap). LES: nu + max
-  // nu_sgs of the previous step's last stage bounds the viscous rate.
+  // a law that has one at every node (flow/viscosity_model.hpp, viscosity_cap). LES: each node's
+  // nu + nu_sgs of the previous step's last stage bounds its own viscous rate (Gershgorin on the
+  // edge viscosity of flow/viscous_stress.hpp), not the largest nu_sgs anywhere: that one lies in
+  // the coarse cells of a jet, and paired with the smallest cells (a valve frame's edges) it cut
+  // the time step of a valve run several times below what any node needs.
   const auto& rheology = options_.projection.rheology;
+  const auto& nu_sgs = solver_.subgrid_viscosity();
+  const auto with_subgrid = [&](double nu) -> const flow::ScalarField& {
+    viscosity_bound_.resize(nu_sgs.size());
+    for (std::size_t i = 0; i < nu_sgs.size(); ++i) viscosity_bound_[i] = nu + nu_sgs[i];
+    return viscosity_bound_;
+  };
+  const auto& weights = solver_.laplacian_weights();
   if (const double cap = flow::viscosity_cap(rheology); cap > 0) {
-    const double nu = cap / options_.projection.density + solver_.max_subgrid_viscosity();
-    rates_ =
-        flow::stability_rates(local_, solver_.laplacian_weights(), nu, state_.velocity, scratch_);
+    const double nu = cap / options_.projection.density;
+    rates_ = nu_sgs.empty() ? flow::stability_rates(local_, weights, nu, state_.velocity, scratch_)
+                            : flow::stability_rates(local_, weights, with_subgrid(nu),
+                                                    state_.velocity, scratch_);
   } else if (solver_.variable_viscosity()) {
-    rates_ =
-        flow::stability_rates(local_, solver_.laplacian_weights(),
-                              solver_.viscosity_field(state_.velocity), state_.velocity, scratch_);
+    rates_ = flow::stability_rates(local_, weights, solver_.viscosity_field(state_.velocity),
+                                   state_.velocity, scratch_);
   } else {
-    const double nu = options_.projection.viscosity + solver_.max_subgrid_viscosity();
-    rates_ =
-        flow::stability_rates(local_, solver_.laplacian_weights(), nu, state_.velocity, scratch_);
+    const double nu = options_.projection.viscosity;
+    rates_ = nu_sgs.empty() ? flow::stability_rates(local_, weights, nu, state_.velocity, scratch_)
+                            : flow::stability_rates(local_, weights, with_subgrid(nu),
+                                                    state_.velocity, scratch_);
+  }
+  // The immersed coupling's own bound (+inf without one). It caps the step before the check
+  // against the flow's stability limit: targets whose step the coupling cuts anyway are not
+  // refused (a valve run in diastole: CFL 0.5 and Fourier 0.2 together just above the limit,
+  // the coupling's bound 14 times below it).
+  double coupling_bound = std::numeric_limits<double>::infinity();
+  if (const auto& c = options_.coupling; c.max_dt) {
+    coupling_bound = c.max_dt(step_);
+    if (t.dt > 0 && options_.enforce_stability_limit && t.dt > coupling_bound)
+      throw RunError(fmt::format("time.dt = {:.6g} s exceeds the largest time step {:.6g} s that "
+                                 "{} admits at step {}: set time.dt <= {:.6g}, or time.dt = 0 "
+                                 "to let the run keep below it",
+                                 t.dt, coupling_bound, c.max_dt_source, step_, coupling_bound),
+                     "time.dt");
   }
   const double limit = 1.0 / rates_.stability;  // +inf at rest without viscosity
   double dt = t.dt;
@@ -189,6 +214,7 @@ double RunLoop::choose_dt(double remaining) {
           "time.dt = 0 asks for a time step from time.cfl and time.fourier, but the "
           "fluid is at rest and inviscid: set time.dt",
           "time.dt");
+    dt = std::min(dt, coupling_bound);
     if (options_.enforce_stability_limit && dt > limit * (1 + 1e-12))
       throw RunError(
           fmt::format(
@@ -200,16 +226,6 @@ double RunLoop::choose_dt(double remaining) {
               t.cfl, t.fourier, dt, limit, step_, limit * rates_.convective,
               limit * rates_.viscous),
           "time.cfl");
-  }
-  if (const auto& c = options_.coupling; c.max_dt) {
-    const double bound = c.max_dt(step_);
-    if (t.dt > 0 && options_.enforce_stability_limit && t.dt > bound)
-      throw RunError(fmt::format("time.dt = {:.6g} s exceeds the largest time step {:.6g} s that "
-                                 "{} admits at step {}: set time.dt <= {:.6g}, or time.dt = 0 "
-                                 "to let the run keep below it",
-                                 t.dt, bound, c.max_dt_source, step_, bound),
-                     "time.dt");
-    dt = std::min(dt, bound);
   }
   // Land on the next event (end, output time) without a sliver of a step: the last two steps
   // before it share the remaining time when it is less than two steps.

@@ -176,6 +176,7 @@ class RunLoop {
   std::string forcing_log_row() const;
   flow::ScalarField q_;
   std::vector<double> scratch_, fluxes_;
+  flow::ScalarField viscosity_bound_;  // nu + nu_sgs per node for the time-step bound
   flow::StabilityRates rates_;
 };
 

@@ -99,7 +99,12 @@ ValveMonitor::ValveMonitor(const mesh::LocalMesh& local, const ibm::ImmersedStru
 }
 
 void ValveMonitor::sample(const flow::FlowState& state, std::int64_t step) {
-  if (step % options_.every_steps != 0) return;
+  // Every every_steps, and on each cycle boundary the run lands on (time.end = k periods, output
+  // times): without it a run whose last step is not a multiple of every_steps never closes its
+  // last cycle, and valve_cycles.csv stays empty.
+  const double cycles = (state.time - options_.start_time) / options_.period;
+  const bool on_boundary = step > 0 && std::abs(cycles - std::round(cycles)) < 1e-9;
+  if (step % options_.every_steps != 0 && !on_boundary) return;
   // Collective parts first, on every rank; the leaflets are replicated.
   const auto fluxes = flow::patch_fluxes(*local_, state.velocity);
   const double inflow = -fluxes[inlet_], outflow = fluxes[outlet_];

@@ -1,13 +1,14 @@
 // The indices of a valve during a flow run ([valve] of a scene, scene/scene_keys_valve.hpp), from
 // the flow state and the immersed leaflets (one structure with node sets leaflet1..3):
-//   valve.csv         every valve.every_steps: step, time, cycle, the flow through the inlet and
-//                     outlet patches (m^3/s, into the domain at the inlet and out of it at the
-//                     outlet: forward positive), the TPG (mmHg; mean pressure of the upstream
-//                     region minus the downstream one), the geometric orifice area (m^2,
-//                     structure/orifice_area.hpp) with its raster error and the opening ratio,
-//                     the three leaflet tips (free-edge midpoints: x, y, z and distance from the
-//                     axis), the largest nodal von Mises stress (Pa), its node and position, the
-//                     smallest signed gap between contact surfaces (m) and the contact area (m^2)
+//   valve.csv         every valve.every_steps and at each cycle end the run lands on: step,
+//                     time, cycle, the flow through the inlet and outlet patches (m^3/s, into the
+//                     domain at the inlet and out of it at the outlet: forward positive), the TPG
+//                     (mmHg; mean pressure of the upstream region minus the downstream one), the
+//                     geometric orifice area (m^2, structure/orifice_area.hpp) with its raster
+//                     error and the opening ratio, the three leaflet tips (free-edge midpoints: x,
+//                     y, z and distance from the axis), the largest nodal von Mises stress (Pa),
+//                     its node and position, the smallest signed gap between contact surfaces (m)
+//                     and the contact area (m^2)
 //   valve_cycles.csv  one row per completed cycle (analysis/valve_cycles.hpp), with the valve's
 //                     flow taken at the inlet
 // The open cycle's samples are saved in checkpoints, so a restarted run completes it; a restart

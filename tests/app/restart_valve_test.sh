@@ -5,6 +5,7 @@
 # step 20 are in every series). valve.csv, valve_cycles.csv and structures.csv must equal the
 # uninterrupted run's byte for byte (each cut back to the checkpoint and continued; a cycle
 # completed after the checkpoint is written once), then --overwrite accepts the run directory.
+# Last, a run ending on a cycle boundary off valve.every_steps must close that cycle.
 # Usage: restart_valve_test.sh APP SOURCE_DIR
 set -euo pipefail
 app=$1 src=$2
@@ -40,3 +41,18 @@ grep -q "restart: 1 rows of valve_cycles.csv after the checkpoint removed" rest.
 # --overwrite replaces the run directory (valve.csv and valve_cycles.csv are valsalva's).
 "$app" run scene.toml --out full --overwrite --quiet > overwrite.out
 cmp part/valve_cycles.csv full/valve_cycles.csv
+# A run that ends on a cycle boundary closes its last cycle although its last step is not one of
+# valve.every_steps: two 2 ms cycles, a row every 7 steps, output times on the cycle ends.
+sed -e 's/^every_steps = 1$/every_steps = 7/' -e 's/^end = 1.0$/end = 0.004/' \
+  -e '/^max_steps = 40$/d' -e 's/^interval = 1.0$/interval = 0.002/' scene.toml > cycles.toml
+grep -q "^every_steps = 7$" cycles.toml && grep -q "^end = 0.004$" cycles.toml
+"$app" run cycles.toml --out cycles --quiet > cycles.out
+/usr/bin/python3 - cycles/valve.csv cycles/valve_cycles.csv <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+cycles = list(csv.DictReader(open(sys.argv[2])))
+last = rows[-1]
+print(f"valve.csv: last row step {last['step']} t {last['time']}; valve_cycles.csv: {len(cycles)} cycles")
+assert float(last["time"]) == 0.004 and int(last["step"]) % 7 != 0, "no row at the run's end"
+assert len(cycles) == 2 and float(cycles[-1]["end"]) == 0.004, "the last cycle was not closed"
+PY
