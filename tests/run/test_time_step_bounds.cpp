@@ -1,7 +1,7 @@
 // What bounds an adaptive time step (run::RunLoop::choose_dt).
 // 1. An LES run on a mesh of unequal cells: each node's own nu + nu_sgs bounds its viscous rate,
 // so a large subgrid viscosity in coarse cells does not pair with the smallest cells elsewhere.
-// Periodic box whose x spacing varies 3:1 (x -> x + 0.5 L/(2 pi) sin(2 pi x/L)), a prescribed
+// Periodic box whose x spacing varies 9:1 (x -> x + 0.8 sin x on [0, 2 pi]), a prescribed
 // nu_sgs = 100 nu where the cells are coarse and 0 where they are fine, the fluid nearly at rest so
 // that the Fourier target sets dt.
 // 2. A coupling's bound (an immersed structure) caps the step before the check against the flow's
