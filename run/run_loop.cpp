@@ -159,16 +159,12 @@ double RunLoop::choose_dt(double remaining) {
     return viscosity_bound_;
   };
   const auto& weights = solver_.laplacian_weights();
-  if (const double cap = flow::viscosity_cap(rheology); cap > 0) {
-    const double nu = cap / options_.projection.density;
-    rates_ = nu_sgs.empty() ? flow::stability_rates(local_, weights, nu, state_.velocity, scratch_)
-                            : flow::stability_rates(local_, weights, with_subgrid(nu),
-                                                    state_.velocity, scratch_);
-  } else if (solver_.variable_viscosity()) {
+  const double cap = flow::viscosity_cap(rheology);
+  if (cap <= 0 && solver_.variable_viscosity()) {
     rates_ = flow::stability_rates(local_, weights, solver_.viscosity_field(state_.velocity),
                                    state_.velocity, scratch_);
   } else {
-    const double nu = options_.projection.viscosity;
+    const double nu = cap > 0 ? cap / options_.projection.density : options_.projection.viscosity;
     rates_ = nu_sgs.empty() ? flow::stability_rates(local_, weights, nu, state_.velocity, scratch_)
                             : flow::stability_rates(local_, weights, with_subgrid(nu),
                                                     state_.velocity, scratch_);
