@@ -181,6 +181,14 @@ void ProjectionRK4::set_pressure_increment(const ScalarField& dp) {
   dp_ = dp;
 }
 
+void ProjectionRK4::set_undamped_nodes(const std::vector<char>& nodes) {
+  if (!nodes.empty() && nodes.size() != static_cast<std::size_t>(mesh_.num_local()))
+    throw std::invalid_argument(
+        "flow::ProjectionRK4::set_undamped_nodes: " + std::to_string(nodes.size()) +
+        " values for " + std::to_string(mesh_.num_local()) + " local nodes");
+  undamped_ = nodes;
+}
+
 void ProjectionRK4::set_subgrid_viscosity(const ScalarField& nu_sgs) {
   if (!options_.subgrid_viscosity)
     throw std::invalid_argument(
@@ -207,8 +215,24 @@ void ProjectionRK4::predicted_flux(const VectorField& w, double dt, const Scalar
     // instead, the damping pumps energy into the flow on tetrahedral meshes and a DFG cylinder
     // run blew up in 15 steps at any dt. grad_p_ holds grad p^n (step()).
     const double rho = options_.density;
-    add_central_flux(mesh_, dt / rho, grad_p_, flux);
-    add_compact_gradient(mesh_, poisson_weights_, -dt / rho, p, flux);
+    if (undamped_.empty()) {
+      add_central_flux(mesh_, dt / rho, grad_p_, flux);
+      add_compact_gradient(mesh_, poisson_weights_, -dt / rho, p, flux);
+      return;
+    }
+    if (cells_) {
+      add_central_flux(mesh_, dt / rho, grad_p_, flux);
+      add_compact_gradient(mesh_, poisson_weights_, -dt / rho, p, flux);
+      cells_->remove(undamped_, dt / rho, grad_p_, p, flux);
+      return;
+    }
+    damping_flux_.assign(flux.size(), 0.0);
+    add_central_flux(mesh_, dt / rho, grad_p_, damping_flux_);
+    add_compact_gradient(mesh_, poisson_weights_, -dt / rho, p, damping_flux_);
+    for (std::size_t e = 0; e < flux.size(); ++e) {
+      const auto [j, k] = mesh_.edges[e];
+      if (!undamped_[j] && !undamped_[k]) flux[e] += damping_flux_[e];
+    }
   }
 }
 

@@ -50,6 +50,7 @@
 
 #include "flow/boundary_conditions.hpp"
 #include "flow/convection_scheme.hpp"
+#include "flow/damping_cells.hpp"
 #include "flow/lumped_outlets.hpp"
 #include "flow/operators.hpp"
 #include "flow/operators_order4.hpp"
@@ -195,6 +196,18 @@ class ProjectionRK4 {
   // Installs (or, with an empty function, removes) the body-force hook; without one no force
   // array is allocated or touched.
   void set_body_force(BodyForce force) { body_force_ = std::move(force); }
+  // Nodes (local, owned + ghosts, the same value on every rank that holds them) on whose edges
+  // step() adds no pressure damping term: the kernel support of immersed markers. Across the
+  // pressure jump an immersed force holds, the damping term dt/rho (avg(grad p) - grad p|_face)
+  // is large and it is a face flux through the structure: a leak proportional to dt
+  // (docs/valve.md, "The pressure damping and the immersed jump"). Empty = damping everywhere.
+  // Throws when `nodes` is neither empty nor one value per local node. On all-tetrahedral
+  // meshes with P1 Poisson weights give the damping's element shares (set_damping_cells): the
+  // term is then left out of every tetrahedron with an undamped node. Without them it is left
+  // out of every edge with an undamped node, which is stable only where all Poisson weights are
+  // non-negative (the two-point weights of other meshes; damping_cells.hpp).
+  void set_undamped_nodes(const std::vector<char>& nodes);
+  void set_damping_cells(std::shared_ptr<const DampingCells> cells) { cells_ = std::move(cells); }
 
   // The lumped outlets of the boundary conditions (null without any): their states for the
   // log and checkpoints; a new run calls start(), a restart restore().
@@ -245,7 +258,10 @@ class ProjectionRK4 {
   // nu_eff_ = nu(gamma_dot(grad_u_)) (or the constant nu) + nu_sgs_ at every local node.
   void total_viscosity();
   BodyForce body_force_;
-  VectorField force_;  // body-force density of the current stage (only with a hook)
+  std::vector<char> undamped_;  // set_undamped_nodes
+  std::shared_ptr<const DampingCells> cells_;
+  EdgeField damping_flux_;  // predicted_flux's damping term when some nodes are undamped
+  VectorField force_;       // body-force density of the current stage (only with a hook)
   std::unique_ptr<LumpedOutlets> lumped_;
 };
 

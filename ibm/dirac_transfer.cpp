@@ -292,6 +292,15 @@ void DiracTransfer::spread(std::span<const double> marker_force, int components,
   mesh_->halo.exchange(density, components, mesh::HaloMode::insert);
 }
 
+void DiracTransfer::support_reach(std::span<double> reach) {
+  check_sizes("support_reach", static_cast<std::size_t>(num_markers_), reach.size(), 1);
+  std::fill(reach.begin(), reach.end(), 0.0);
+  for (const auto& s : supports_)
+    for (int k = s.begin; k < s.end; ++k) reach[weights_[k].node] += std::abs(weights_[k].phi);
+  mesh_->halo.exchange(reach, 1, mesh::HaloMode::add);
+  mesh_->halo.exchange(reach, 1, mesh::HaloMode::insert);
+}
+
 void DiracTransfer::interpolate(std::span<double> field, int components,
                                 std::span<double> marker_values) {
   check_sizes("interpolate", marker_values.size(), field.size(), components);

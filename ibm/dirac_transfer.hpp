@@ -100,6 +100,10 @@ class DiracTransfer {
   // local node, overwritten): complete on owned nodes, ghosts refreshed by a halo insert.
   void spread(std::span<const double> marker_force, int components, std::span<double> density);
   void spread(std::span<const Eigen::Vector3d> marker_force, std::span<Eigen::Vector3d> density);
+  // Collective. `reach` (one per local node, overwritten) = sum of |phi| over the supports that
+  // hold the node: > 0 exactly on the nodes some marker's kernel reaches, complete on owned
+  // nodes and halo-inserted into ghosts.
+  void support_reach(std::span<double> reach);
 
   // Collective. Refreshes the ghosts of `field` (halo insert), then writes the interpolated
   // values at every marker into `marker_values` (replicated on every rank).

@@ -210,6 +210,15 @@ void ImmersedStructure::current_force_density(flow::VectorField& density) {
   spread(density);
 }
 
+void ImmersedStructure::support_nodes(std::vector<char>& nodes) {
+  locate(x_);
+  const int n = mesh_.num_local();
+  std::vector<double> reach(static_cast<std::size_t>(n));
+  transfer_.support_reach(reach);
+  nodes.assign(static_cast<std::size_t>(n), 0);
+  for (int j = 0; j < n; ++j) nodes[j] = reach[j] > 0;
+}
+
 void ImmersedStructure::assemble_stiffness(const Eigen::Matrix3Xd& x) {
   stiffness_.resize(bodies_.size());
   for (int b = 0; b < num_bodies(); ++b)

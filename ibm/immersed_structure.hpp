@@ -141,6 +141,9 @@ class ImmersedStructure {
   // overwritten), with the forces evaluated there: for output between steps (the next step
   // locates its own stages again). Collective.
   void current_force_density(flow::VectorField& density);
+  // 1 on every local node (owned + ghosts) in the kernel support of a coupled marker at its
+  // current position, else 0, the same on every rank that holds the node. Collective.
+  void support_nodes(std::vector<char>& nodes);
 
   // Largest stable time step of the explicit coupling at the current positions, from the
   // largest eigenvalue of the kernel-mapped stiffness (ib_stability.hpp). Collective.

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -38,12 +39,29 @@ std::vector<double> RunLoop::chosen_poisson_weights(const mesh::Mesh& mesh,
   }
 }
 
+void RunLoop::install_damping_cells(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics) {
+  // The coupling leaves the pressure damping out near its markers: by whole tetrahedra where
+  // the Poisson weights are P1 (some negative), by edges where they are two-point weights
+  // (non-negative); the slab weights may be negative and have no element split here.
+  if (options_.poisson_weights == scene::PoissonWeights::prism_slab)
+    throw RunError(
+        "poisson.weights = prism_slab with immersed structures: the pressure damping cannot be "
+        "left out near the markers on slab weights; set immersed.pressure_damping_in_support = "
+        "true or use the standard weights",
+        "poisson.weights");
+  const bool tetrahedra = std::all_of(mesh.cell_types.begin(), mesh.cell_types.end(),
+                                      [](auto t) { return t == mesh::CellType::tetra; });
+  if (tetrahedra)
+    solver_.set_damping_cells(std::make_shared<flow::DampingCells>(mesh, metrics, local_));
+}
+
 RunLoop::RunLoop(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
                  const mesh::LocalMesh& local, scene::RunOptions options, io::FieldSink sink)
     : local_(local),
       options_(std::move(options)),
       sink_(std::move(sink)),
       solver_(local, attach_boundary(), chosen_poisson_weights(mesh, metrics, local)) {
+  if (options_.coupling.undamped_nodes) install_damping_cells(mesh, metrics);
   const auto& ic = options_.initial;
   const int n = local.num_local();
   state_.velocity.assign(n, Eigen::Vector3d::Zero());
@@ -358,6 +376,10 @@ RunSummary RunLoop::run() {
     last_good_.pressure = state_.pressure;
     last_good_.time = state_.time;
     try {
+      if (options_.coupling.undamped_nodes) {
+        options_.coupling.undamped_nodes(undamped_);
+        solver_.set_undamped_nodes(undamped_);
+      }
       report = solver_.step(state_, dt);
       if (flow_rate_control_) {
         // The flux through the section held at its target (flow/flow_rate_control.hpp).

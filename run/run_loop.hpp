@@ -161,6 +161,7 @@ class RunLoop {
   std::shared_ptr<flow::BoundaryConditions> boundary_;
   flow::ProjectionRK4 solver_;
   flow::FlowState state_, last_good_;
+  std::vector<char> undamped_;  // options_.coupling.undamped_nodes of the current step
   std::int64_t step_ = 0;
   bool resumed_ = false;
   RunHooks hooks_;
@@ -169,6 +170,8 @@ class RunLoop {
   std::shared_ptr<flow::VectorField> prescribed_force_;       // shared with the solver's body force
   std::shared_ptr<flow::FlowRateControl> flow_rate_control_;  // forcing.type = flow_rate
   void install_forcing();
+  // With a coupling that leaves the pressure damping out near its markers.
+  void install_damping_cells(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics);
   void update_forcing_field();
   // log.csv: force_x,force_y,force_z (N/m^3) of a uniform or controlled force and the
   // controller's flow_rate_target (m^3/s); empty for other forcings.

@@ -64,6 +64,9 @@ struct StepCoupling {
   // Collective, s: the bound for the step after `step` steps, at the current state; +inf = none.
   std::function<double(std::int64_t step)> max_dt;
   std::string max_dt_source;  // what sets max_dt, for the message when time.dt exceeds it
+  // Collective: the local nodes the flow step adds no pressure damping on, at the current
+  // state (flow::ProjectionRK4::set_undamped_nodes); empty function = damping everywhere.
+  std::function<void(std::vector<char>&)> undamped_nodes;
 };
 
 // The Poisson matrix's edge weights (flow/poisson_weights.hpp): standard = P1 stiffness on

@@ -61,6 +61,17 @@ void declare_structure_keys(Schema& s) {
           "markers that moved farther are located again. 0 = every marker at every RK stage. "
           "The kernel lags its marker by less than this, which shifts interpolated velocities "
           "by at most this h |grad u|; spreading and interpolation stay adjoint");
+  s.boolean("immersed.pressure_damping_in_support")
+      .def(false)
+      .unit_of("-")
+      .doc(
+          "false: the flow step's pressure damping term (the Rhie-Chow face-flux correction "
+          "dt/rho (avg(grad p) - grad p|_face) of flow/projection_rk4.hpp) is left out on the "
+          "edges of nodes in a marker's kernel support. Across the pressure jump a loaded "
+          "structure holds, that term is a face flux through the structure proportional to dt: "
+          "a closed valve leaked, and a valve's TPG changed with the time step "
+          "(docs/valve.md, \"The pressure damping and the immersed jump\"). true: the term on "
+          "every edge, as before 2026-12-06 (for comparisons)");
   s.choice("immersed.coupling", {"per_stage", "per_step", "implicit"})
       .def("per_stage")
       .unit_of("-")
@@ -455,6 +466,7 @@ ImmersedSetup read_immersed_setup(const Scene& scene, const mesh::Mesh& mesh) {
   o.time_scheme = flow::parse_time_scheme(scene.get<std::string>("time.scheme"));
   o.box = periodic_box(scene, mesh);
   out.dt_safety = scene.get<double>("immersed.dt_safety");
+  out.damping_in_support = scene.get<bool>("immersed.pressure_damping_in_support");
   o.stability_safety = out.dt_safety;
   out.stability_check_every = scene.get<int>("immersed.stability_check_every");
   out.log_every = scene.get<int>("immersed.log_every");
