@@ -194,7 +194,7 @@ void RunAnalysis::sample_sections(const flow::FlowState& state, const flow::Edge
 
 void RunAnalysis::finish() const {
   for (std::size_t i = 0; i < options_.statistics.size(); ++i) write_statistics(i);
-  if (wall_shear_) wall_shear_->write(dir_);
+  if (wall_shear_) wall_shear_->write(*mesh_, *metrics_, dir_);
   if (local_->comm.root() && !last_sections_.empty())
     fmt::print("section fluxes at {}\n", last_sections_);
 }

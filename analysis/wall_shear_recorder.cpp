@@ -4,8 +4,12 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
+#include "analysis/wall_shear_rows.hpp"
+#include "analysis/wall_shear_summary.hpp"
+#include "analysis/wall_shear_surface.hpp"
 #include "flow/wall_force.hpp"
 
 namespace valsalva::analysis {
@@ -147,41 +151,37 @@ void WallShearRecorder::restore(const io::CheckpointReader& reader) {
   sampled_ = meta[std::size_t(patches) + 1] != 0;
 }
 
-void WallShearRecorder::write(const std::filesystem::path& run_dir) const {
-  constexpr int width = 10;  // patch, node, x, y, z, tawss, osi, tau x y z
-  std::vector<double> rows;
+void WallShearRecorder::write(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+                              const std::filesystem::path& run_dir) const {
+  std::vector<WallNodeRow> mine;
   for (std::size_t p = 0; p < options_.patches.size(); ++p) {
-    const auto tawss = stats_[p].tawss(), osi = stats_[p].osi();
+    const auto tawss = stats_[p].tawss(), osi = stats_[p].osi(), rrt = stats_[p].rrt();
+    const bool empty = tawss.empty();  // nothing accumulated: no averaging window
     for (std::size_t i = 0; i < nodes_[p].size(); ++i) {
       const int j = nodes_[p][i];
-      const auto& x = local_->position[j];
-      const Eigen::Vector3d tau = i < tau_[p].size() ? tau_[p][i] : Eigen::Vector3d::Zero();
-      rows.insert(rows.end(), {double(p), double(local_->dual_node[j]), x.x(), x.y(), x.z(),
-                               tawss.empty() ? 0.0 : tawss[i], osi.empty() ? 0.0 : osi[i], tau.x(),
-                               tau.y(), tau.z()});
+      WallNodeRow r;
+      r.patch = int(p);
+      r.node = local_->dual_node[j];
+      r.x = local_->position[j];
+      r.area = area_[p][i];
+      r.tawss = empty ? 0.0 : tawss[i];
+      r.osi = empty ? 0.0 : osi[i];
+      r.rrt = empty ? std::numeric_limits<double>::quiet_NaN() : rrt[i];
+      if (i < tau_[p].size()) r.tau = tau_[p][i];
+      mine.push_back(r);
     }
   }
-  // Surface data is small: gather it on rank 0 and sort, so the file is rank-count independent.
-  const auto& comm = local_->comm;
-  const auto all = comm.gather_to_root(rows);
-  if (!comm.root()) return;
-  const std::size_t n = all.size() / width;
-  std::vector<std::size_t> order(n);
-  for (std::size_t i = 0; i < n; ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return std::pair(all[a * width], all[a * width + 1]) <
-           std::pair(all[b * width], all[b * width + 1]);
-  });
-  const auto path = run_dir / "wall_shear.csv";
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("wall_shear: cannot write " + path.string());
-  out << "patch,node,x,y,z,tawss,osi,tau_x,tau_y,tau_z\n";
-  for (std::size_t i : order) {
-    const double* r = &all[i * width];
-    out << fmt::format("{},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e}\n",
-                       options_.patches[std::size_t(r[0])], std::int64_t(r[1]), r[2], r[3], r[4],
-                       r[5], r[6], r[7], r[8], r[9]);
-  }
+  // Surface data is small: gather it on rank 0, so the files are rank-count independent.
+  const auto rows = gather_wall_rows(local_->comm, mine);
+  if (!local_->comm.root()) return;
+  write_wall_shear_csv(run_dir / "wall_shear.csv", options_.patches, rows);
+  const double duration = stats_.empty() ? 0.0 : stats_.front().duration();
+  const double t0 = last_time_ - duration, t1 = last_time_;
+  const auto summaries = summarize_wall_shear(rows, options_.patches.size());
+  write_wall_shear_summary(run_dir / "wall_shear_summary.csv", options_.patches, summaries, t0, t1);
+  for (std::size_t p = 0; p < summaries.size(); ++p)
+    fmt::print("{}\n", wall_shear_summary_line(options_.patches[p], summaries[p], t0, t1));
+  write_wall_shear_surface(run_dir, mesh, metrics, options_.patches, rows, last_time_);
 }
 
 }  // namespace valsalva::analysis

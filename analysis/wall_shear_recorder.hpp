@@ -1,11 +1,12 @@
 // Wall shear stress of a run on its wall patches (flow/wall_shear.hpp): tau_w from the
 // residual (reaction) force of each wall node's dual volume, the area-weighted mean |tau_w| per
 // patch as a time series, TAWSS and OSI accumulated from `start_time`, saved in checkpoints and
-// written per wall node at the end.
+// written per wall node at the end (gathered on rank 0: the same files at any rank count).
 //   wall_shear_history.csv  time, <patch>_mean_wss (Pa) per patch
-//   wall_shear.csv          patch, node (dual id), x, y, z, tawss, osi, tau_x, tau_y, tau_z
-//                           (last sample), rows sorted by patch and node: the same file at
-//                           any rank count
+//   wall_shear.csv          per wall node: TAWSS, OSI, RRT, last tau_w (wall_shear_rows.hpp)
+//   wall_shear_summary.csv  per patch: area-weighted means and maxima (wall_shear_summary.hpp),
+//                           also printed, one line per patch
+//   wall_shear_surface.xmf  the patches' faces with those nodal values (wall_shear_surface.hpp)
 #pragma once
 
 #include <filesystem>
@@ -18,7 +19,9 @@
 #include "flow/projection_rk4.hpp"
 #include "flow/wall_shear.hpp"
 #include "io/checkpoint.hpp"
+#include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace valsalva::analysis {
 
@@ -39,8 +42,10 @@ class WallShearRecorder {
   // mu(gamma_dot) of the sampled velocity, in place of the constructor's dynamic_viscosity.
   void set_viscosity_model(const flow::ViscosityModel& model) { model_ = model; }
   std::vector<io::CheckpointArray> checkpoint_arrays() const;
-  void restore(const io::CheckpointReader& reader);        // collective
-  void write(const std::filesystem::path& run_dir) const;  // collective
+  void restore(const io::CheckpointReader& reader);  // collective
+  // Collective; `mesh` and `metrics` give the patches' faces (the surface file).
+  void write(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
+             const std::filesystem::path& run_dir) const;
 
   const std::vector<flow::WallShearStatistics>& statistics() const { return stats_; }
   // tau_w of the last sample per patch, in the order of each patch's wall loads.

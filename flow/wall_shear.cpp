@@ -1,6 +1,7 @@
 // Wall shear stress, TAWSS and OSI; see wall_shear.hpp.
 #include "flow/wall_shear.hpp"
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -49,6 +50,15 @@ std::vector<double> WallShearStatistics::osi() const {
   std::vector<double> out(sum_abs_.size(), 0.0);
   for (std::size_t i = 0; i < out.size(); ++i)
     if (sum_abs_[i] > 0) out[i] = 0.5 * (1 - sum_tau_[i].norm() / sum_abs_[i]);
+  return out;
+}
+
+std::vector<double> WallShearStatistics::rrt() const {
+  std::vector<double> out(sum_abs_.size(), std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const double mean = sum_tau_[i].norm();  // |int tau_w dt|
+    if (duration_ > 0 && mean > 0) out[i] = duration_ / mean;
+  }
   return out;
 }
 

@@ -5,6 +5,8 @@
 //   OSI          1/2 (1 - |int tau_w dt| / int |tau_w| dt)   (Ku, Giddens, Zarins & Glagov,
 //                Arteriosclerosis 5, 1985): 0 for a steady direction, 1/2 for a purely
 //                oscillatory stress.
+//   RRT          1 / ((1 - 2 OSI) TAWSS) = T / |int tau_w dt|, the relative residence time
+//                (Himburg et al., Am J Physiol Heart Circ Physiol 286, 2004, H1916), in 1/Pa.
 #pragma once
 
 #include <Eigen/Dense>
@@ -26,6 +28,10 @@ class WallShearStatistics {
   double duration() const { return duration_; }
   std::vector<double> tawss() const;
   std::vector<double> osi() const;  // 0 where tau_w was zero throughout
+  // From the mean vector, not from TAWSS and OSI: no cancellation in 1 - 2 OSI. NaN where it is
+  // undefined (infinite): the mean vector is zero (OSI = 1/2, or tau_w zero throughout) or
+  // nothing was accumulated; NaN is what ParaView leaves out of colour ranges and pandas reads.
+  std::vector<double> rrt() const;
 
   // Accumulators for checkpoints: per node sum tau dt (3) and sum |tau| dt (1), then duration.
   std::vector<double> state() const;

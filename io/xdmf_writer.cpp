@@ -10,7 +10,6 @@
 
 #include "core/comm.hpp"
 #include "io/hdf5_file.hpp"
-#include "mesh/mesh.hpp"
 
 namespace valsalva::io {
 
@@ -27,15 +26,20 @@ std::int64_t exclusive_prefix(const core::Comm& comm, std::int64_t value) {
 
 // XDMF topology codes and the VTK node order XDMF uses. VTK's wedge has its first triangle
 // pointing away from the second one, Gmsh's prism towards it: swap two nodes of each triangle.
+// Types 0-3 are mesh::CellType; 4 and 5 are boundary faces (surface output, e.g. wall shear).
 struct XdmfCell {
   std::int64_t code;
+  int nodes;
+  const char* name;
   std::array<int, 8> order;
 };
-constexpr std::array<XdmfCell, 4> kXdmfCells = {{
-    {6, {0, 1, 2, 3}},              // tetra
-    {7, {0, 1, 2, 3, 4}},           // pyramid
-    {8, {0, 2, 1, 3, 5, 4}},        // prism -> wedge
-    {9, {0, 1, 2, 3, 4, 5, 6, 7}},  // hexahedron
+constexpr std::array<XdmfCell, 6> kXdmfCells = {{
+    {6, 4, "tetra", {0, 1, 2, 3}},
+    {7, 5, "pyramid", {0, 1, 2, 3, 4}},
+    {8, 6, "prism", {0, 2, 1, 3, 5, 4}},  // -> wedge
+    {9, 8, "hexa", {0, 1, 2, 3, 4, 5, 6, 7}},
+    {4, 3, "triangle", {0, 1, 2}},
+    {5, 4, "quad", {0, 1, 2, 3}},
 }};
 
 std::string check_mesh(const std::string& who, std::int64_t global_nodes,
@@ -56,12 +60,14 @@ std::string check_mesh(const std::string& who, std::int64_t global_nodes,
         who, types.size() + 1, cell_nodes.size(), offsets.size());
   for (std::size_t c = 0; c < types.size(); ++c) {
     if (types[c] >= kXdmfCells.size())
-      return fmt::format("{}: cell {} has type {}; expected 0 tetra, 1 pyramid, 2 prism, 3 hexa",
-                         who, c, int(types[c]));
-    const auto type = static_cast<mesh::CellType>(types[c]);
-    if (offsets[c + 1] - offsets[c] != mesh::node_count(type))
-      return fmt::format("{}: cell {} ({}) has {} nodes, expected {}", who, c, mesh::name(type),
-                         offsets[c + 1] - offsets[c], mesh::node_count(type));
+      return fmt::format(
+          "{}: cell {} has type {}; expected 0 tetra, 1 pyramid, 2 prism, 3 hexa, 4 triangle, "
+          "5 quad",
+          who, c, int(types[c]));
+    const XdmfCell& xc = kXdmfCells[types[c]];
+    if (offsets[c + 1] - offsets[c] != xc.nodes)
+      return fmt::format("{}: cell {} ({}) has {} nodes, expected {}", who, c, xc.name,
+                         offsets[c + 1] - offsets[c], xc.nodes);
     for (std::int64_t k = offsets[c]; k < offsets[c + 1]; ++k)
       if (cell_nodes[k] < 0 || cell_nodes[k] >= global_nodes)
         return fmt::format("{}: cell {} has node {} outside [0, {})", who, c, cell_nodes[k],

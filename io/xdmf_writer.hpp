@@ -30,10 +30,14 @@ struct VectorField {
   std::span<const Eigen::Vector3d> values;
 };
 
+// Cell types of a surface grid, after the four mesh::CellType values.
+constexpr std::uint8_t kTriangleCell = 4, kQuadCell = 5;
+
 class XdmfWriter {
  public:
   // Collective. Writes <basename>_mesh.h5. Cells are the ones this rank owns: cell_types holds
-  // mesh::CellType values (0 tetra, 1 pyramid, 2 prism, 3 hexa) with nodes in Gmsh order,
+  // mesh::CellType values (0 tetra, 1 pyramid, 2 prism, 3 hexa) with nodes in Gmsh order, or
+  // surface cells (4 triangle, 5 quad) for a boundary's surface,
   // cell_offsets has cells + 1 entries into cell_nodes_global (global node ids).
   XdmfWriter(MPI_Comm comm, std::filesystem::path dir, std::string basename,
              std::int64_t global_nodes, std::span<const std::int64_t> owned_node_global_ids,

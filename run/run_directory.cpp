@@ -24,9 +24,9 @@ namespace {
 bool written_by_valsalva(const fs::directory_entry& entry) {
   static const std::regex files(
       "resolved_scene(_restart_[0-9]{9})?\\.toml|valsalva_run\\.toml|log\\.csv|probes\\.csv|"
-      "pressure_drop\\.csv|wall_shear(_history)?\\.csv|structures\\.csv|outlets\\.csv|"
+      "pressure_drop\\.csv|wall_shear(_history|_summary)?\\.csv|structures\\.csv|outlets\\.csv|"
       "sections\\.csv|valve(_cycles)?\\.csv|"
-      "taylor_green_error\\.csv|(fields(_restart_[0-9]{9})?|last_good)"
+      "taylor_green_error\\.csv|(fields(_restart_[0-9]{9})?|last_good|wall_shear_surface)"
       "(\\.xmf|\\.xmf\\.tmp|_mesh\\.h5|_[0-9]{6}\\.h5)");
   static const std::regex folders("checkpoints|statistics|samples|structures");
   const std::string name = entry.path().filename().string();

@@ -154,10 +154,22 @@ void declare_analysis_keys(Schema& s) {
           "left out (the run log counts them), a line with none inside is an error");
   s.when(st + ".points", st + ".region", {"line"});
 
-  s.section("wall_shear",
-            "Wall shear stress tau_w on wall patches (residual-force method, flow/wall_force.hpp), "
-            "its time integrals TAWSS and OSI (wall_shear.csv per wall node at the end, saved in "
-            "checkpoints) and the area-weighted mean |tau_w| per patch (wall_shear_history.csv).");
+  s.section(
+      "wall_shear",
+      "Wall shear stress tau_w on wall patches (residual-force method, flow/wall_force.hpp), "
+      "the area-weighted mean |tau_w| per patch after every sample "
+      "(wall_shear_history.csv), and from start_time its time integrals (saved in "
+      "checkpoints): TAWSS = mean |tau_w| (Pa), OSI = (1 - |mean tau_w| / TAWSS) / 2 and "
+      "RRT = 1 / ((1 - 2 OSI) TAWSS) = 1 / |mean tau_w| (1/Pa, Himburg et al. 2004). At the "
+      "end of the run: wall_shear.csv, per wall node (patch, node, x, y, z, area, tawss, osi, "
+      "rrt, tau_x, tau_y, tau_z = the last tau_w); wall_shear_summary.csv, per patch (area, "
+      "window_start, window_end of the averaging, area-weighted mean and max of TAWSS and "
+      "OSI, area-weighted mean RRT over the nodes where it is defined and the area fraction "
+      "they cover), also printed one line per patch; wall_shear_surface.xmf (+ .h5), the "
+      "patches' faces with tawss, osi, rrt, tau, patch and node for ParaView. RRT is "
+      "undefined (infinite) where the mean tau_w vector is zero (OSI = 1/2 or no shear): "
+      "written as nan, which ParaView draws in its NaN colour and leaves out of colour "
+      "ranges and pandas/numpy read as NaN. The files are the same at any rank count.");
   s.string_list("wall_shear.patches")
       .def(std::vector<std::string>{})
       .unit_of("-")

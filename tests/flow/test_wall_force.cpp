@@ -3,6 +3,8 @@
 // mu du/dy|wall * area = f H / 2 * Lx * Lz along x, and both together balance the body force.
 #include <doctest/doctest.h>
 
+#include <cmath>
+
 #include "field_test_utils.hpp"
 #include "flow/poisson_weights.hpp"
 #include "flow/wall_force.hpp"
@@ -147,4 +149,25 @@ TEST_CASE("TAWSS and OSI: steady stress gives OSI 0, a purely oscillatory one 1/
   restored.restore(oscillating.state());
   CHECK(restored.osi()[0] == oscillating.osi()[0]);
   CHECK(restored.duration() == oscillating.duration());
+}
+
+TEST_CASE("RRT = 1 / ((1 - 2 OSI) TAWSS): a mean plus a reversing oscillation; nan when zero") {
+  // tau = tau0 (m + sin wt), m = 1/2: TAWSS = tau0 (2/pi) (sqrt(1 - m^2) + m asin m),
+  // OSI = (1 - m tau0 / TAWSS) / 2, so (1 - 2 OSI) TAWSS = m tau0 (Himburg et al. 2004).
+  const double tau0 = 1.7, period = 0.8, m = 0.5;
+  const int steps = 64;
+  const double tawss = tau0 * 2 / M_PI * (std::sqrt(1 - m * m) + m * std::asin(m));
+  const double osi = 0.5 * (1 - m * tau0 / tawss);
+  flow::WallShearStatistics s, zero;
+  for (int n = 0; n < 3 * steps; ++n) {
+    const double t = (n + 1) * period / steps;
+    s.add({Eigen::Vector3d(0, 0, tau0 * (m + std::sin(2 * M_PI * t / period)))}, period / steps);
+    zero.add({Eigen::Vector3d::Zero()}, period / steps);
+  }
+  // The rectangle rule sums the sine over whole periods to round-off: the mean vector, hence
+  // RRT, is exact; TAWSS and OSI carry the rule's error at the kinks of |tau| (~1e-3).
+  CHECK(s.rrt()[0] == doctest::Approx(1 / ((1 - 2 * osi) * tawss)).epsilon(1e-12));
+  CHECK(s.rrt()[0] == doctest::Approx(1 / ((1 - 2 * s.osi()[0]) * s.tawss()[0])).epsilon(1e-12));
+  CHECK(s.tawss()[0] == doctest::Approx(tawss).epsilon(2e-3));
+  CHECK(std::isnan(zero.rrt()[0]));
 }

@@ -34,8 +34,9 @@ def vtk_orientation(directory, collection):
         points.InsertNextPoint(*p)
     mesh = model.vtkUnstructuredGrid()
     mesh.SetPoints(points)
-    vtk_type = {6: (model.VTK_TETRA, 4), 7: (model.VTK_PYRAMID, 5), 8: (model.VTK_WEDGE, 6),
-                9: (model.VTK_HEXAHEDRON, 8)}
+    # Surface cells (triangles, quads of a boundary) have no faces: only loaded.
+    vtk_type = {4: (model.VTK_TRIANGLE, 3), 5: (model.VTK_QUAD, 4), 6: (model.VTK_TETRA, 4),
+                7: (model.VTK_PYRAMID, 5), 8: (model.VTK_WEDGE, 6), 9: (model.VTK_HEXAHEDRON, 8)}
     pos = 0
     while pos < len(topo):
         kind, n = vtk_type[int(topo[pos])]

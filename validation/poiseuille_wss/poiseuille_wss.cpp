@@ -59,18 +59,19 @@ void run_level(const Context& ctx, Level& level) {
   level.nodes = sim.metrics().num_nodes();
   // Mean TAWSS over the wall nodes of the middle half, from the run's wall_shear.csv.
   if (comm.rank() == 0) {
-    // patch (a name), node, x, y, z, tawss, osi, tau_x, tau_y, tau_z: the numbers read strictly.
+    // patch (a name), node, x, y, z, area, tawss, osi, rrt, tau_x, tau_y, tau_z: the numbers
+    // read strictly.
     core::TableLines lines(dir / "wall_shear.csv", {});
     std::vector<double> z, tawss, osi;
     for (bool header = true; lines.next(); header = false) {
       const auto fields = lines.fields();
-      if (header || fields.size() != 10) {
-        if (!header) throw lines.error(1, "expected 10 columns");
+      if (header || fields.size() != 12) {
+        if (!header) throw lines.error(1, "expected 12 columns");
         continue;
       }
       z.push_back(lines.number(fields[4], "z"));
-      tawss.push_back(lines.number(fields[5], "tawss"));
-      osi.push_back(lines.number(fields[6], "osi"));
+      tawss.push_back(lines.number(fields[6], "tawss"));
+      osi.push_back(lines.number(fields[7], "osi"));
     }
     const double exact = 4 * kMu * kQ / (M_PI * std::pow(kRadius, 3));
     double sum = 0, lo = INFINITY, hi = -INFINITY;
