@@ -30,6 +30,8 @@ DampingCells::DampingCells(const mesh::Mesh& mesh, const mesh::DualMetrics& metr
     edge_of[static_cast<std::uint64_t>(j) * n + static_cast<std::uint64_t>(k)] =
         static_cast<int>(e);
   }
+  std::vector<char> on_boundary(static_cast<std::size_t>(local.num_local()), 0);
+  for (const auto& f : local.boundary) on_boundary[f.node] = 1;
   for (mesh::GlobalIndex c = 0; c < mesh.num_cells(); ++c) {
     if (mesh.cell_types[c] != mesh::CellType::tetra)
       throw std::invalid_argument(fmt::format(
@@ -45,6 +47,7 @@ DampingCells::DampingCells(const mesh::Mesh& mesh, const mesh::DualMetrics& metr
       if (local_cell) t.node[a] = it->second;
     }
     if (!local_cell) continue;
+    for (int a = 0; a < 4; ++a) t.boundary = t.boundary || on_boundary[t.node[a]];
     std::array<Eigen::Vector3d, 4> x;
     for (int a = 0; a < 4; ++a) x[a] = mesh.nodes[nodes[a]];
     Eigen::Matrix3d J;
@@ -86,7 +89,9 @@ DampingCells::DampingCells(const mesh::Mesh& mesh, const mesh::DualMetrics& metr
 void DampingCells::remove(const std::vector<char>& nodes, double c, const VectorField& grad_p,
                           const ScalarField& p, EdgeField& flux) const {
   for (const auto& t : tetras_) {
-    if (!nodes[t.node[0]] && !nodes[t.node[1]] && !nodes[t.node[2]] && !nodes[t.node[3]]) continue;
+    if (t.boundary ||
+        (!nodes[t.node[0]] && !nodes[t.node[1]] && !nodes[t.node[2]] && !nodes[t.node[3]]))
+      continue;
     for (int i = 0; i < 6; ++i) {
       const auto [a, b] = edge_pairs[i];
       int j = t.node[a], k = t.node[b];
@@ -100,7 +105,7 @@ void DampingCells::remove(const std::vector<char>& nodes, double c, const Vector
 std::vector<double> DampingCells::weight_sums(const std::vector<char>& nodes) const {
   std::vector<double> w(num_edges_, 0.0);
   for (const auto& t : tetras_) {
-    if (!nodes.empty() &&
+    if (!nodes.empty() && !t.boundary &&
         (nodes[t.node[0]] || nodes[t.node[1]] || nodes[t.node[2]] || nodes[t.node[3]]))
       continue;
     for (int i = 0; i < 6; ++i) w[t.edge[i]] += t.weight[i];

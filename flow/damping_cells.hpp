@@ -34,11 +34,14 @@ class DampingCells {
                const mesh::LocalMesh& local);
 
   // flux_e -= c [S_e^T . (g_j + g_k)/2 - w_e^T (p_k - p_j)] for every tetrahedron T with a node
-  // marked in `nodes` (one value per local node) and each of its six edges e.
+  // marked in `nodes` (one value per local node) and none on the boundary, and each of its six
+  // edges e. Tetrahedra at the boundary keep their damping: the odd-even pressure mode that
+  // walls and inlets excite grew without it where a leaflet's kernel reached the wall of a sinus
+  // (a valve run diverged at t = 0.12 s, docs/valve.md).
   void remove(const std::vector<char>& nodes, double c, const VectorField& grad_p,
               const ScalarField& p, EdgeField& flux) const;
 
-  // Sums of the shares over the local tetrahedra without a node marked in `nodes` (empty: all),
+  // Sums of the shares over the local tetrahedra that remove() keeps (empty `nodes`: all),
   // per local edge: with all, the Poisson weights and the dual faces on every edge of an owned
   // node (for tests).
   std::vector<double> weight_sums(const std::vector<char>& nodes = {}) const;
@@ -50,6 +53,7 @@ class DampingCells {
     std::array<int, 6> edge;  // local edges, in the order of edge_pairs
     std::array<double, 6> weight;
     std::array<Eigen::Vector3d, 6> face;  // oriented along the local edge (j -> k)
+    bool boundary = false;                // a node on the boundary
   };
   std::vector<Tetra> tetras_;
   std::size_t num_edges_ = 0;

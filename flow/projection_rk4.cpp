@@ -181,7 +181,15 @@ void ProjectionRK4::set_pressure_increment(const ScalarField& dp) {
   dp_ = dp;
 }
 
-void ProjectionRK4::set_undamped_nodes(const std::vector<char>& nodes) {
+void ProjectionRK4::set_undamped_nodes(const std::vector<char>& nodes, double kept) {
+  if (!(kept >= 0 && kept <= 1))
+    throw std::invalid_argument("flow::ProjectionRK4::set_undamped_nodes: kept fraction " +
+                                std::to_string(kept) + " is not in [0, 1]");
+  kept_damping_ = kept;
+  if (on_boundary_.empty()) {
+    on_boundary_.assign(static_cast<std::size_t>(mesh_.num_local()), 0);
+    for (const auto& f : mesh_.boundary) on_boundary_[f.node] = 1;
+  }
   if (!nodes.empty() && nodes.size() != static_cast<std::size_t>(mesh_.num_local()))
     throw std::invalid_argument(
         "flow::ProjectionRK4::set_undamped_nodes: " + std::to_string(nodes.size()) +
@@ -223,7 +231,7 @@ void ProjectionRK4::predicted_flux(const VectorField& w, double dt, const Scalar
     if (cells_) {
       add_central_flux(mesh_, dt / rho, grad_p_, flux);
       add_compact_gradient(mesh_, poisson_weights_, -dt / rho, p, flux);
-      cells_->remove(undamped_, dt / rho, grad_p_, p, flux);
+      cells_->remove(undamped_, (1 - kept_damping_) * dt / rho, grad_p_, p, flux);
       return;
     }
     damping_flux_.assign(flux.size(), 0.0);
@@ -231,7 +239,9 @@ void ProjectionRK4::predicted_flux(const VectorField& w, double dt, const Scalar
     add_compact_gradient(mesh_, poisson_weights_, -dt / rho, p, damping_flux_);
     for (std::size_t e = 0; e < flux.size(); ++e) {
       const auto [j, k] = mesh_.edges[e];
-      if (!undamped_[j] && !undamped_[k]) flux[e] += damping_flux_[e];
+      // Edges at the boundary keep their damping, as DampingCells' tetrahedra do.
+      const bool reduced = (undamped_[j] || undamped_[k]) && !on_boundary_[j] && !on_boundary_[k];
+      flux[e] += (reduced ? kept_damping_ : 1.0) * damping_flux_[e];
     }
   }
 }

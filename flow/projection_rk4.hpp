@@ -196,8 +196,9 @@ class ProjectionRK4 {
   // Installs (or, with an empty function, removes) the body-force hook; without one no force
   // array is allocated or touched.
   void set_body_force(BodyForce force) { body_force_ = std::move(force); }
-  // Nodes (local, owned + ghosts, the same value on every rank that holds them) on whose edges
-  // step() adds no pressure damping term: the kernel support of immersed markers. Across the
+  // Nodes (local, owned + ghosts, the same value on every rank that holds them) near which
+  // step() keeps only the fraction `kept` (0..1) of its pressure damping term: the kernel
+  // support of immersed markers. Across the
   // pressure jump an immersed force holds, the damping term dt/rho (avg(grad p) - grad p|_face)
   // is large and it is a face flux through the structure: a leak proportional to dt
   // (docs/valve.md, "The pressure damping and the immersed jump"). Empty = damping everywhere.
@@ -205,8 +206,9 @@ class ProjectionRK4 {
   // meshes with P1 Poisson weights give the damping's element shares (set_damping_cells): the
   // term is then left out of every tetrahedron with an undamped node. Without them it is left
   // out of every edge with an undamped node, which is stable only where all Poisson weights are
-  // non-negative (the two-point weights of other meshes; damping_cells.hpp).
-  void set_undamped_nodes(const std::vector<char>& nodes);
+  // non-negative (the two-point weights of other meshes; damping_cells.hpp). Tetrahedra and
+  // edges with a boundary node keep all of it.
+  void set_undamped_nodes(const std::vector<char>& nodes, double kept = 0.0);
   void set_damping_cells(std::shared_ptr<const DampingCells> cells) { cells_ = std::move(cells); }
 
   // The lumped outlets of the boundary conditions (null without any): their states for the
@@ -259,6 +261,8 @@ class ProjectionRK4 {
   void total_viscosity();
   BodyForce body_force_;
   std::vector<char> undamped_;  // set_undamped_nodes
+  double kept_damping_ = 0.0;
+  std::vector<char> on_boundary_;  // nodes with a boundary face (set_undamped_nodes)
   std::shared_ptr<const DampingCells> cells_;
   EdgeField damping_flux_;  // predicted_flux's damping term when some nodes are undamped
   VectorField force_;       // body-force density of the current stage (only with a hook)

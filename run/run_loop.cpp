@@ -47,7 +47,7 @@ void RunLoop::install_damping_cells(const mesh::Mesh& mesh, const mesh::DualMetr
     throw RunError(
         "poisson.weights = prism_slab with immersed structures: the pressure damping cannot be "
         "left out near the markers on slab weights; set immersed.pressure_damping_in_support = "
-        "true or use the standard weights",
+        "1 or use the standard weights",
         "poisson.weights");
   const bool tetrahedra = std::all_of(mesh.cell_types.begin(), mesh.cell_types.end(),
                                       [](auto t) { return t == mesh::CellType::tetra; });
@@ -378,7 +378,7 @@ RunSummary RunLoop::run() {
     try {
       if (options_.coupling.undamped_nodes) {
         options_.coupling.undamped_nodes(undamped_);
-        solver_.set_undamped_nodes(undamped_);
+        solver_.set_undamped_nodes(undamped_, options_.coupling.kept_damping);
       }
       report = solver_.step(state_, dt);
       if (flow_rate_control_) {

@@ -32,10 +32,10 @@ struct StructureSetup {
 
 struct ImmersedSetup {
   ibm::ImmersedOptions options;
-  int stability_check_every = 0;    // steps between re-evaluations of the coupling's dt bound
-  double dt_safety = 1;             // fraction of that bound used
-  int log_every = 1;                // steps between rows of structures.csv
-  bool damping_in_support = false;  // immersed.pressure_damping_in_support
+  int stability_check_every = 0;  // steps between re-evaluations of the coupling's dt bound
+  double dt_safety = 1;           // fraction of that bound used
+  int log_every = 1;              // steps between rows of structures.csv
+  double damping_in_support = 1;  // immersed.pressure_damping_in_support
   std::vector<StructureSetup> structures;
   bool empty() const { return structures.empty(); }
 };
