@@ -223,15 +223,11 @@ void ProjectionRK4::predicted_flux(const VectorField& w, double dt, const Scalar
     // instead, the damping pumps energy into the flow on tetrahedral meshes and a DFG cylinder
     // run blew up in 15 steps at any dt. grad_p_ holds grad p^n (step()).
     const double rho = options_.density;
-    if (undamped_.empty()) {
+    if (undamped_.empty() || cells_) {
       add_central_flux(mesh_, dt / rho, grad_p_, flux);
       add_compact_gradient(mesh_, poisson_weights_, -dt / rho, p, flux);
-      return;
-    }
-    if (cells_) {
-      add_central_flux(mesh_, dt / rho, grad_p_, flux);
-      add_compact_gradient(mesh_, poisson_weights_, -dt / rho, p, flux);
-      cells_->remove(undamped_, (1 - kept_damping_) * dt / rho, grad_p_, p, flux);
+      if (!undamped_.empty())
+        cells_->remove(undamped_, (1 - kept_damping_) * dt / rho, grad_p_, p, flux);
       return;
     }
     damping_flux_.assign(flux.size(), 0.0);
