@@ -32,6 +32,19 @@ std::vector<Case> cases() {
   return out;
 }
 
+// The case's mesh on this communicator with its Poisson weights and damping shares.
+struct Distributed {
+  explicit Distributed(const mesh::Mesh& mesh)
+      : metrics(mesh::compute_dual_metrics(mesh)),
+        local(mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis})),
+        weights(flow::poisson_weights(mesh, metrics, local)),
+        cells(mesh, metrics, local) {}
+  mesh::DualMetrics metrics;
+  mesh::LocalMesh local;
+  std::vector<double> weights;
+  flow::DampingCells cells;
+};
+
 // Sum over owned nodes' edges of flux_e (x_k - x_j): with flux_e = -w_e (x_k - x_j) this is
 // -x^T L x for the Laplacian of weights w (each edge of an owned node once on its rank).
 double edge_form(const mesh::LocalMesh& local, const std::vector<double>& flux,
@@ -51,11 +64,10 @@ double edge_form(const mesh::LocalMesh& local, const std::vector<double>& flux,
 TEST_CASE("damping shares add up to the P1 weights and the dual faces") {
   for (const auto& c : cases()) {
     CAPTURE(c.name);
-    const auto metrics = mesh::compute_dual_metrics(c.mesh);
-    const auto local =
-        mesh::distribute(c.mesh, metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
-    const auto weights = flow::poisson_weights(c.mesh, metrics, local);
-    const flow::DampingCells cells(c.mesh, metrics, local);
+    const Distributed d(c.mesh);
+    const auto& local = d.local;
+    const auto& weights = d.weights;
+    const auto& cells = d.cells;
     const auto w = cells.weight_sums();
     const auto s = cells.face_sums();
     double w_scale = 0, s_scale = 0, w_err = 0, s_err = 0;
@@ -79,11 +91,10 @@ TEST_CASE("damping shares add up to the P1 weights and the dual faces") {
 TEST_CASE("what is left of the damping term vanishes for linear pressure and stays bounded") {
   for (const auto& c : cases()) {
     CAPTURE(c.name);
-    const auto metrics = mesh::compute_dual_metrics(c.mesh);
-    const auto local =
-        mesh::distribute(c.mesh, metrics, MPI_COMM_WORLD, {2, mesh::PartitionMethod::metis});
-    const auto weights = flow::poisson_weights(c.mesh, metrics, local);
-    const flow::DampingCells cells(c.mesh, metrics, local);
+    const Distributed d(c.mesh);
+    const auto& local = d.local;
+    const auto& weights = d.weights;
+    const auto& cells = d.cells;
     const int n = local.num_local();
     // A mask the same on every rank: by dual node (global), a third of the nodes.
     std::vector<char> mask(static_cast<std::size_t>(n));
