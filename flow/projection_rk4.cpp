@@ -185,15 +185,15 @@ void ProjectionRK4::set_undamped_nodes(const std::vector<char>& nodes, double ke
   if (!(kept >= 0 && kept <= 1))
     throw std::invalid_argument("flow::ProjectionRK4::set_undamped_nodes: kept fraction " +
                                 std::to_string(kept) + " is not in [0, 1]");
-  kept_damping_ = kept;
-  if (on_boundary_.empty()) {
-    on_boundary_.assign(static_cast<std::size_t>(mesh_.num_local()), 0);
-    for (const auto& f : mesh_.boundary) on_boundary_[f.node] = 1;
-  }
   if (!nodes.empty() && nodes.size() != static_cast<std::size_t>(mesh_.num_local()))
     throw std::invalid_argument(
         "flow::ProjectionRK4::set_undamped_nodes: " + std::to_string(nodes.size()) +
         " values for " + std::to_string(mesh_.num_local()) + " local nodes");
+  if (on_boundary_.empty()) {
+    on_boundary_.assign(static_cast<std::size_t>(mesh_.num_local()), 0);
+    for (const auto& f : mesh_.boundary) on_boundary_[f.node] = 1;
+  }
+  kept_damping_ = kept;
   undamped_ = nodes;
 }
 

@@ -45,6 +45,16 @@ struct Distributed {
   flow::DampingCells cells;
 };
 
+// Runs f(case, local mesh, Poisson weights, damping shares) on every case's distributed mesh.
+template <class F>
+void for_each_case(F f) {
+  for (const auto& c : cases()) {
+    CAPTURE(c.name);
+    const Distributed d(c.mesh);
+    f(c, d.local, d.weights, d.cells);
+  }
+}
+
 // Sum over owned nodes' edges of flux_e (x_k - x_j): with flux_e = -w_e (x_k - x_j) this is
 // -x^T L x for the Laplacian of weights w (each edge of an owned node once on its rank).
 double edge_form(const mesh::LocalMesh& local, const std::vector<double>& flux,
@@ -62,12 +72,8 @@ double edge_form(const mesh::LocalMesh& local, const std::vector<double>& flux,
 }  // namespace
 
 TEST_CASE("damping shares add up to the P1 weights and the dual faces") {
-  for (const auto& c : cases()) {
-    CAPTURE(c.name);
-    const Distributed d(c.mesh);
-    const auto& local = d.local;
-    const auto& weights = d.weights;
-    const auto& cells = d.cells;
+  for_each_case([](const Case& c, const mesh::LocalMesh& local, const std::vector<double>& weights,
+                   const flow::DampingCells& cells) {
     const auto w = cells.weight_sums();
     const auto s = cells.face_sums();
     double w_scale = 0, s_scale = 0, w_err = 0, s_err = 0;
@@ -85,16 +91,12 @@ TEST_CASE("damping shares add up to the P1 weights and the dual faces") {
                    << local.comm.sum(negative));
     CHECK(w_err < 1e-12);
     CHECK(s_err < 1e-12);
-  }
+  });
 }
 
 TEST_CASE("what is left of the damping term vanishes for linear pressure and stays bounded") {
-  for (const auto& c : cases()) {
-    CAPTURE(c.name);
-    const Distributed d(c.mesh);
-    const auto& local = d.local;
-    const auto& weights = d.weights;
-    const auto& cells = d.cells;
+  for_each_case([](const Case& c, const mesh::LocalMesh& local, const std::vector<double>& weights,
+                   const flow::DampingCells& cells) {
     const int n = local.num_local();
     // A mask the same on every rank: by dual node (global), a third of the nodes.
     std::vector<char> mask(static_cast<std::size_t>(n));
@@ -179,5 +181,5 @@ TEST_CASE("what is left of the damping term vanishes for linear pressure and sta
                    << edge_low);
     CHECK(worst_low >= -1e-12);
     CHECK(worst_high >= -1e-12);
-  }
+  });
 }
