@@ -34,7 +34,8 @@ std::vector<WallLoad> wall_loads(const mesh::LocalMesh& mesh, const std::string&
   const auto& g = *in.velocity_gradient;
   const double mu = in.dynamic_viscosity, rho = in.density;
 
-  // Owned nodes on the patch, with the area vector of their faces on it.
+  // Owned nodes on the patch, with the area vector of their faces on it and of their faces on
+  // other patches (a rim, where the wall meets an inlet, an outlet or another wall).
   std::vector<int> slot(mesh.num_local(), -1);
   std::vector<WallLoad> loads;
   for (const auto& b : mesh.boundary)
@@ -45,6 +46,10 @@ std::vector<WallLoad> wall_loads(const mesh::LocalMesh& mesh, const std::string&
       }
       loads[slot[b.node]].area += b.area;
     }
+  std::vector<Eigen::Vector3d> other_area(loads.size(), Eigen::Vector3d::Zero());
+  for (const auto& b : mesh.boundary)
+    if (b.patch != p && b.node < mesh.num_owned && slot[b.node] >= 0)
+      other_area[slot[b.node]] += b.area;
 
   const ScalarField* mu_field = in.viscosity_field;
   if (mu_field && in.stiffness_weights)
@@ -59,9 +64,11 @@ std::vector<WallLoad> wall_loads(const mesh::LocalMesh& mesh, const std::string&
     }
     return loads;
   }
-  // Force on the wall = -T_j = V_j f_j - sum_k (conv_out - visc_in + pres_out) over all dual
-  // faces of the node. A node shared with another patch (a corner) gives its whole reaction to
-  // this patch: the split is undefined there and such nodes are rare on bodies.
+  // Force on the wall = -T_j = V_j f_j - sum_k (conv_out - visc_in + pres_out) over the interior
+  // dual faces of the node: the reaction of all its boundary faces. Where the node also has faces
+  // on other patches their pressure load p_j A_other is taken out (at an arterial pressure it
+  // dwarfs the shear and, on a rim, lies along the wall); their viscous traction, of the order of
+  // the wall shear itself, stays with this patch: the split is undefined there.
   const auto& a = *in.laplacian_weights;
   for (int e = 0; e < mesh.num_owned_edges; ++e) {
     const auto [j, k] = mesh.edges[e];
@@ -83,6 +90,7 @@ std::vector<WallLoad> wall_loads(const mesh::LocalMesh& mesh, const std::string&
     if (slot[j] >= 0) loads[slot[j]].force -= out_of_j;
     if (slot[k] >= 0) loads[slot[k]].force += out_of_j;
   }
+  for (std::size_t i = 0; i < loads.size(); ++i) loads[i].force -= pr[loads[i].node] * other_area[i];
   if (in.body_force)
     for (auto& l : loads) l.force += mesh.volume[l.node] * (*in.body_force)[l.node];
   return loads;
