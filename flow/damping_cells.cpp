@@ -86,10 +86,11 @@ DampingCells::DampingCells(const mesh::Mesh& mesh, const mesh::DualMetrics& metr
   }
 }
 
-void DampingCells::remove(const std::vector<char>& nodes, double c, const VectorField& grad_p,
-                          const ScalarField& p, EdgeField& flux) const {
+void DampingCells::remove(const std::vector<char>& nodes, double c, double c_boundary,
+                          const VectorField& grad_p, const ScalarField& p, EdgeField& flux) const {
   for (const auto& t : tetras_) {
-    if (t.boundary ||
+    const double ct = t.boundary ? c_boundary : c;
+    if (ct == 0 ||
         (!nodes[t.node[0]] && !nodes[t.node[1]] && !nodes[t.node[2]] && !nodes[t.node[3]]))
       continue;
     for (int i = 0; i < 6; ++i) {
@@ -97,18 +98,19 @@ void DampingCells::remove(const std::vector<char>& nodes, double c, const Vector
       int j = t.node[a], k = t.node[b];
       if (j > k) std::swap(j, k);
       flux[t.edge[i]] -=
-          c * (0.5 * t.face[i].dot(grad_p[j] + grad_p[k]) - t.weight[i] * (p[k] - p[j]));
+          ct * (0.5 * t.face[i].dot(grad_p[j] + grad_p[k]) - t.weight[i] * (p[k] - p[j]));
     }
   }
 }
 
-std::vector<double> DampingCells::weight_sums(const std::vector<char>& nodes) const {
+std::vector<double> DampingCells::weight_sums(const std::vector<char>& nodes,
+                                              double c_boundary) const {
   std::vector<double> w(num_edges_, 0.0);
   for (const auto& t : tetras_) {
-    if (!nodes.empty() && !t.boundary &&
-        (nodes[t.node[0]] || nodes[t.node[1]] || nodes[t.node[2]] || nodes[t.node[3]]))
-      continue;
-    for (int i = 0; i < 6; ++i) w[t.edge[i]] += t.weight[i];
+    const bool marked = !nodes.empty() && (nodes[t.node[0]] || nodes[t.node[1]] ||
+                                           nodes[t.node[2]] || nodes[t.node[3]]);
+    const double kept = marked ? 1 - (t.boundary ? c_boundary : 1.0) : 1.0;
+    for (int i = 0; i < 6; ++i) w[t.edge[i]] += kept * t.weight[i];
   }
   return w;
 }

@@ -33,18 +33,19 @@ class DampingCells {
   DampingCells(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
                const mesh::LocalMesh& local);
 
-  // flux_e -= c [S_e^T . (g_j + g_k)/2 - w_e^T (p_k - p_j)] for every tetrahedron T with a node
-  // marked in `nodes` (one value per local node) and none on the boundary, and each of its six
-  // edges e. Tetrahedra at the boundary keep their damping: the odd-even pressure mode that
-  // walls and inlets excite grew without it where a leaflet's kernel reached the wall of a sinus
-  // (a valve run diverged at t = 0.12 s, docs/valve.md).
-  void remove(const std::vector<char>& nodes, double c, const VectorField& grad_p,
-              const ScalarField& p, EdgeField& flux) const;
+  // flux_e -= c_T [S_e^T . (g_j + g_k)/2 - w_e^T (p_k - p_j)] for every tetrahedron T with a
+  // node marked in `nodes` (one value per local node) and each of its six edges e: c_T = c
+  // where T has no node on the boundary, c_boundary where it has. The boundary's tetrahedra need
+  // some of their damping: the odd-even pressure mode that walls and inlets excite grew without
+  // any where a leaflet's kernel reached the wall of a sinus (a valve run diverged at
+  // t = 0.12 s, docs/valve.md).
+  void remove(const std::vector<char>& nodes, double c, double c_boundary,
+              const VectorField& grad_p, const ScalarField& p, EdgeField& flux) const;
 
-  // Sums of the shares over the local tetrahedra that remove() keeps (empty `nodes`: all),
-  // per local edge: with all, the Poisson weights and the dual faces on every edge of an owned
-  // node (for tests).
-  std::vector<double> weight_sums(const std::vector<char>& nodes = {}) const;
+  // Sums of the weight shares w_e^T (1 - c_T) over the local tetrahedra, with c_T of remove()
+  // for c = 1 (empty `nodes`: c_T = 0 everywhere), per local edge: with all, the Poisson weights
+  // and the dual faces on every edge of an owned node (for tests).
+  std::vector<double> weight_sums(const std::vector<char>& nodes = {}, double c_boundary = 0) const;
   std::vector<Eigen::Vector3d> face_sums() const;
 
  private:

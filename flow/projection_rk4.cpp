@@ -181,10 +181,12 @@ void ProjectionRK4::set_pressure_increment(const ScalarField& dp) {
   dp_ = dp;
 }
 
-void ProjectionRK4::set_undamped_nodes(const std::vector<char>& nodes, double kept) {
-  if (!(kept >= 0 && kept <= 1))
-    throw std::invalid_argument("flow::ProjectionRK4::set_undamped_nodes: kept fraction " +
-                                std::to_string(kept) + " is not in [0, 1]");
+void ProjectionRK4::set_undamped_nodes(const std::vector<char>& nodes, double kept,
+                                       double kept_at_boundary) {
+  for (const double f : {kept, kept_at_boundary})
+    if (!(f >= 0 && f <= 1))
+      throw std::invalid_argument("flow::ProjectionRK4::set_undamped_nodes: kept fraction " +
+                                  std::to_string(f) + " is not in [0, 1]");
   if (!nodes.empty() && nodes.size() != static_cast<std::size_t>(mesh_.num_local()))
     throw std::invalid_argument(
         "flow::ProjectionRK4::set_undamped_nodes: " + std::to_string(nodes.size()) +
@@ -194,6 +196,7 @@ void ProjectionRK4::set_undamped_nodes(const std::vector<char>& nodes, double ke
     for (const auto& f : mesh_.boundary) on_boundary_[f.node] = 1;
   }
   kept_damping_ = kept;
+  kept_damping_at_boundary_ = kept_at_boundary;
   undamped_ = nodes;
 }
 
@@ -227,7 +230,8 @@ void ProjectionRK4::predicted_flux(const VectorField& w, double dt, const Scalar
       add_central_flux(mesh_, dt / rho, grad_p_, flux);
       add_compact_gradient(mesh_, poisson_weights_, -dt / rho, p, flux);
       if (!undamped_.empty())
-        cells_->remove(undamped_, (1 - kept_damping_) * dt / rho, grad_p_, p, flux);
+        cells_->remove(undamped_, (1 - kept_damping_) * dt / rho,
+                       (1 - kept_damping_at_boundary_) * dt / rho, grad_p_, p, flux);
       return;
     }
     damping_flux_.assign(flux.size(), 0.0);
@@ -235,9 +239,11 @@ void ProjectionRK4::predicted_flux(const VectorField& w, double dt, const Scalar
     add_compact_gradient(mesh_, poisson_weights_, -dt / rho, p, damping_flux_);
     for (std::size_t e = 0; e < flux.size(); ++e) {
       const auto [j, k] = mesh_.edges[e];
-      // Edges at the boundary keep their damping, as DampingCells' tetrahedra do.
-      const bool reduced = (undamped_[j] || undamped_[k]) && !on_boundary_[j] && !on_boundary_[k];
-      flux[e] += (reduced ? kept_damping_ : 1.0) * damping_flux_[e];
+      // Edges at the boundary keep their own fraction, as DampingCells' tetrahedra do.
+      const bool reduced = undamped_[j] || undamped_[k];
+      const bool boundary = on_boundary_[j] || on_boundary_[k];
+      flux[e] += (reduced ? (boundary ? kept_damping_at_boundary_ : kept_damping_) : 1.0) *
+                 damping_flux_[e];
     }
   }
 }

@@ -207,8 +207,9 @@ class ProjectionRK4 {
   // term is then left out of every tetrahedron with an undamped node. Without them it is left
   // out of every edge with an undamped node, which is stable only where all Poisson weights are
   // non-negative (the two-point weights of other meshes; damping_cells.hpp). Tetrahedra and
-  // edges with a boundary node keep all of it.
-  void set_undamped_nodes(const std::vector<char>& nodes, double kept = 0.0);
+  // edges with a boundary node keep the fraction `kept_at_boundary` instead (default: all).
+  void set_undamped_nodes(const std::vector<char>& nodes, double kept = 0.0,
+                          double kept_at_boundary = 1.0);
   void set_damping_cells(std::shared_ptr<const DampingCells> cells) { cells_ = std::move(cells); }
 
   // The lumped outlets of the boundary conditions (null without any): their states for the
@@ -261,7 +262,7 @@ class ProjectionRK4 {
   void total_viscosity();
   BodyForce body_force_;
   std::vector<char> undamped_;  // set_undamped_nodes
-  double kept_damping_ = 0.0;
+  double kept_damping_ = 0.0, kept_damping_at_boundary_ = 1.0;
   std::vector<char> on_boundary_;  // nodes with a boundary face (set_undamped_nodes)
   std::shared_ptr<const DampingCells> cells_;
   EdgeField damping_flux_;  // predicted_flux's damping term when some nodes are undamped

@@ -51,9 +51,10 @@ scene::StepCoupling ImmersedRun::coupling() {
   c.body_force = ib_->body_force();
   c.finish_step = [this](const flow::FlowState& s) { ib_->finish_step(s); };
   c.max_dt = [this](std::int64_t step) { return max_dt(step); };
-  if (setup_.damping_in_support < 1) {
+  if (setup_.damping_in_support < 1 || setup_.damping_in_support_at_boundary < 1) {
     c.undamped_nodes = [this](std::vector<char>& nodes) { ib_->support_nodes(nodes); };
     c.kept_damping = setup_.damping_in_support;
+    c.kept_damping_at_boundary = setup_.damping_in_support_at_boundary;
   }
   c.max_dt_source = fmt::format(
       "the explicit immersed-boundary coupling ({} x the bound 2 sqrt(2)/omega or 2/omega, "

@@ -378,7 +378,8 @@ RunSummary RunLoop::run() {
     try {
       if (options_.coupling.undamped_nodes) {
         options_.coupling.undamped_nodes(undamped_);
-        solver_.set_undamped_nodes(undamped_, options_.coupling.kept_damping);
+        solver_.set_undamped_nodes(undamped_, options_.coupling.kept_damping,
+                                   options_.coupling.kept_damping_at_boundary);
       }
       report = solver_.step(state_, dt);
       if (flow_rate_control_) {

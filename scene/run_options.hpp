@@ -67,7 +67,8 @@ struct StepCoupling {
   // Collective: the local nodes the flow step adds no pressure damping on, at the current
   // state (flow::ProjectionRK4::set_undamped_nodes); empty function = damping everywhere.
   std::function<void(std::vector<char>&)> undamped_nodes;
-  double kept_damping = 0.0;  // the fraction of the damping kept there
+  double kept_damping = 0.0;              // the fraction of the damping kept there
+  double kept_damping_at_boundary = 1.0;  // ... in its cells (edges) with a boundary node
 };
 
 // The Poisson matrix's edge weights (flow/poisson_weights.hpp): standard = P1 stiffness on

@@ -74,9 +74,21 @@ void declare_structure_keys(Schema& s) {
           "a face flux through the structure proportional to dt: under 93 mmHg the closed "
           "coarse valve leaks 16.6 mL/s with 1 (all of it, the default) and 8.3 mL/s with 0. "
           "Below 1 the term is split by whole tetrahedra, which keeps it stable on P1 weights "
-          "(flow/damping_cells.hpp); cells at walls keep it all, because the odd-even pressure "
-          "mode walls excite diverged a valve run without it there (docs/valve.md, \"The "
+          "(flow/damping_cells.hpp); cells with a node on the boundary keep "
+          "immersed.pressure_damping_in_support_at_boundary of it (docs/valve.md, \"The "
           "pressure damping and the immersed jump\")");
+  s.real("immersed.pressure_damping_in_support_at_boundary")
+      .def(1.0)
+      .at_least(0)
+      .at_most(1)
+      .unit_of("-")
+      .doc(
+          "Fraction of the pressure damping term kept in the tetrahedra (hexahedral meshes: "
+          "edges) with a node in a marker's kernel support and one on the boundary: where a "
+          "leaflet's attachment meets the root wall and the frame, its jump leaks through these "
+          "cells too. Some damping is needed there: with 0 the odd-even pressure mode walls "
+          "excite diverged valve runs where opening leaflets neared the sinus wall; 0.1 ran. "
+          "1 (the default) keeps all of it");
   s.choice("immersed.coupling", {"per_stage", "per_step", "implicit"})
       .def("per_stage")
       .unit_of("-")
@@ -472,6 +484,8 @@ ImmersedSetup read_immersed_setup(const Scene& scene, const mesh::Mesh& mesh) {
   o.box = periodic_box(scene, mesh);
   out.dt_safety = scene.get<double>("immersed.dt_safety");
   out.damping_in_support = scene.get<double>("immersed.pressure_damping_in_support");
+  out.damping_in_support_at_boundary =
+      scene.get<double>("immersed.pressure_damping_in_support_at_boundary");
   o.stability_safety = out.dt_safety;
   out.stability_check_every = scene.get<int>("immersed.stability_check_every");
   out.log_every = scene.get<int>("immersed.log_every");

@@ -36,6 +36,7 @@ struct ImmersedSetup {
   double dt_safety = 1;           // fraction of that bound used
   int log_every = 1;              // steps between rows of structures.csv
   double damping_in_support = 1;  // immersed.pressure_damping_in_support
+  double damping_in_support_at_boundary = 1;  // immersed.pressure_damping_in_support_at_boundary
   std::vector<StructureSetup> structures;
   bool empty() const { return structures.empty(); }
 };

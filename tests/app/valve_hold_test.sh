@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # valve_hold_test.sh VALSALVA SOURCE_DIR: the closed coarse valve under the diastolic load
 # (scenes/valve_quick_hold.toml: 93.35 mmHg ramped over 0.04 s), run to t = 0.1 s twice: as
-# shipped (no pressure damping in the leaflets' interior kernel cells) and with
-# immersed.pressure_damping_in_support = 1 (the default: all of the term, whose face flux
-# through the loaded leaflets is a leak proportional to dt). Over 0.07-0.10 s (after the ramp and
-# the first swings of the loaded leaflets): the jump across the leaflets within 5 % of the
-# imposed 93.35 mmHg in both, and the scene's backflow at most 0.65 of the default's (measured
-# 8.2 and 18.8 mL/s, 0.44; the 15 ms window means of either move by about 2 mL/s).
+# shipped (no pressure damping in the leaflets' interior kernel cells, a tenth of it in their
+# cells at the wall and the frame) and with both fractions 1 (the default: all of the term,
+# whose face flux through the loaded leaflets is a leak proportional to dt). Over 0.07-0.10 s
+# (after the ramp and the first swings of the loaded leaflets): the jump across the leaflets
+# within 5 % of the imposed 93.35 mmHg in both, and the scene's backflow at most 0.3 of the
+# default's (measured 2.4 and 18.8 mL/s, 0.13; the 15 ms window means of either move by about
+# 2 mL/s; without the wall cells' share, i.e. pressure_damping_in_support_at_boundary = 1, it
+# was 8.2 mL/s, 0.44, so the bound fails when either fraction stops acting).
 set -eu
 app=$1
 src=$2
@@ -15,7 +17,7 @@ valve_scene_copy "$app" "$src" valve_quick_hold.toml valve_hold_pressure.csv
 "$app" check "$dir/scenes/valve_quick_hold.toml"
 "$app" run "$dir/scenes/valve_quick_hold.toml" --quiet --out "$dir/hold" --set time.end=0.1
 "$app" run "$dir/scenes/valve_quick_hold.toml" --quiet --out "$dir/damped" --set time.end=0.1 \
-  --set immersed.pressure_damping_in_support=1
+  --set immersed.pressure_damping_in_support=1 --set immersed.pressure_damping_in_support_at_boundary=1
 # Time means (trapezoidal) over [0.07, 0.10] s of the backflow (-inlet_flow, mL/s) and the jump.
 window() {
   awk -F, 'FNR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
@@ -32,5 +34,5 @@ awk -v q="$leak" -v p="$jump" -v d="$damped_leak" -v pd="$damped_jump" 'BEGIN {
   bad = 0
   if (!(p < -0.95 * 93.35 && p > -1.05 * 93.35)) { print "jump " p " mmHg, expected -93.35 within 5 %"; bad = 1 }
   if (!(pd < -0.95 * 93.35 && pd > -1.05 * 93.35)) { print "default: jump " pd " mmHg, expected -93.35 within 5 %"; bad = 1 }
-  if (!(d > 2 && q <= 0.65 * d)) { print "backflow " q " mL/s, expected at most 0.65 of the default'"'"'s " d; bad = 1 }
+  if (!(d > 2 && q <= 0.3 * d)) { print "backflow " q " mL/s, expected at most 0.3 of the default'"'"'s " d; bad = 1 }
   exit bad }'
