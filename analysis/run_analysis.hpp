@@ -65,6 +65,11 @@ class RunAnalysis {
   void set_body_force(const flow::VectorField* force_density) {
     if (wall_shear_) wall_shear_->set_body_force(force_density);
   }
+  // The immersed structures' kernel support at a sampled state, for the wall shear stress (see
+  // WallShearRecorder::set_support_nodes).
+  void set_support_nodes(WallShearRecorder::NodeMask source) {
+    if (wall_shear_) wall_shear_->set_support_nodes(std::move(source));
+  }
 
  private:
   void write_interim(std::size_t statistics, double time);

@@ -55,6 +55,8 @@ WallShearRecorder::WallShearRecorder(const mesh::LocalMesh& local, WallShearOpti
   }
   tau_.resize(options_.patches.size());
   stats_.resize(options_.patches.size());
+  support_time_.resize(options_.patches.size());
+  for (std::size_t p = 0; p < nodes_.size(); ++p) support_time_[p].assign(nodes_[p].size(), 0.0);
   if (local.comm.root()) {
     const auto path = run_dir / "wall_shear_history.csv";
     history_.open(path, append ? std::ios::app : std::ios::trunc);
@@ -85,6 +87,8 @@ void WallShearRecorder::sample(const flow::FlowState& state) {
   }
   const double t = state.time, t0 = options_.start_time;
   const double elapsed = sampled_ ? t - std::max(last_time_, t0) : 0.0;
+  const bool accumulate = t > t0 && elapsed > 0;
+  if (accumulate && support_nodes_) support_nodes_(in_support_);
   std::vector<double> mean;
   for (std::size_t p = 0; p < options_.patches.size(); ++p) {
     tau_[p] = flow::wall_shear_stress(flow::wall_loads(*local_, options_.patches[p], in));
@@ -95,7 +99,11 @@ void WallShearRecorder::sample(const flow::FlowState& state) {
     }
     mean.push_back(local_->comm.sum(s) / local_->comm.sum(sa));
     // Rectangle rule over the interval since the previous sample (its part after start_time).
-    if (t > t0 && elapsed > 0) stats_[p].add(tau_[p], elapsed);
+    if (!accumulate) continue;
+    stats_[p].add(tau_[p], elapsed);
+    if (support_nodes_)
+      for (std::size_t i = 0; i < nodes_[p].size(); ++i)
+        if (in_support_[std::size_t(nodes_[p][i])]) support_time_[p][i] += elapsed;
   }
   last_time_ = t;
   sampled_ = true;
@@ -110,6 +118,7 @@ std::vector<io::CheckpointArray> WallShearRecorder::checkpoint_arrays() const {
   const auto patches = static_cast<std::int64_t>(options_.patches.size());
   io::CheckpointArray sums{"wall_shear_sums", local_->global_nodes * patches, wss_cols, {}, {}};
   io::CheckpointArray meta{"wall_shear_meta", patches + 2, 0, {}, {}};
+  io::CheckpointArray support{"wall_shear_support_time", local_->global_nodes * patches, 0, {}, {}};
   for (std::size_t p = 0; p < options_.patches.size(); ++p) {
     const auto s = stats_[p].state();
     const bool empty = s.size() == 1;  // nothing accumulated yet
@@ -117,6 +126,8 @@ std::vector<io::CheckpointArray> WallShearRecorder::checkpoint_arrays() const {
       sums.rows.push_back(local_->dual_node[nodes_[p][i]] * patches + std::int64_t(p));
       for (int c = 0; c < wss_cols; ++c)
         sums.data.push_back(empty ? 0.0 : s[wss_cols * i + std::size_t(c)]);
+      support.rows.push_back(sums.rows.back());
+      support.data.push_back(support_time_[p][i]);
     }
     if (local_->comm.root()) {
       meta.rows.push_back(std::int64_t(p));
@@ -127,7 +138,7 @@ std::vector<io::CheckpointArray> WallShearRecorder::checkpoint_arrays() const {
     meta.rows.insert(meta.rows.end(), {patches, patches + 1});
     meta.data.insert(meta.data.end(), {last_time_, sampled_ ? 1.0 : 0.0});
   }
-  return {sums, meta};
+  return {sums, meta, support};
 }
 
 void WallShearRecorder::restore(const io::CheckpointReader& reader) {
@@ -146,6 +157,9 @@ void WallShearRecorder::restore(const io::CheckpointReader& reader) {
     auto s = reader.read_array("wall_shear_sums", rows);
     s.push_back(meta[p]);
     if (meta[p] > 0) stats_[p].restore(s);
+    // Checkpoints written before the support time was kept: none counted before the restart.
+    if (reader.has("wall_shear_support_time"))
+      support_time_[p] = reader.read_array("wall_shear_support_time", rows);
   }
   last_time_ = meta[std::size_t(patches)];
   sampled_ = meta[std::size_t(patches) + 1] != 0;
@@ -168,6 +182,8 @@ void WallShearRecorder::write(const mesh::Mesh& mesh, const mesh::DualMetrics& m
       r.osi = empty ? 0.0 : osi[i];
       r.rrt = empty ? std::numeric_limits<double>::quiet_NaN() : rrt[i];
       if (i < tau_[p].size()) r.tau = tau_[p][i];
+      const double duration = stats_[p].duration();
+      r.support = duration > 0 ? support_time_[p][i] / duration : 0.0;
       mine.push_back(r);
     }
   }

@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,11 @@ class WallShearRecorder {
   // it belongs to the fluid's momentum balance, not to the wall (without it a uniform force F
   // adds F h/2 per unit area to tau_w, h/H of a channel's wall shear). Must outlive the recorder.
   void set_body_force(const flow::VectorField* force_density) { body_force_ = force_density; }
+  // The local nodes inside an immersed structure's kernel support at the sampled state, marked
+  // by `source` (collective): each wall node's time there is accumulated over the window (the
+  // support_fraction of wall_shear.csv and the "clear" means of the summary).
+  using NodeMask = std::function<void(std::vector<char>&)>;
+  void set_support_nodes(NodeMask source) { support_nodes_ = std::move(source); }
   // A non-Newtonian fluid (flow.viscosity_model): tau_w with the nodal viscosity
   // mu(gamma_dot) of the sampled velocity, in place of the constructor's dynamic_viscosity.
   void set_viscosity_model(const flow::ViscosityModel& model) { model_ = model; }
@@ -67,6 +73,9 @@ class WallShearRecorder {
   std::vector<std::vector<double>> area_;
   std::vector<std::vector<Eigen::Vector3d>> tau_;
   std::vector<flow::WallShearStatistics> stats_;
+  NodeMask support_nodes_;
+  std::vector<char> in_support_;                   // support_nodes_ at the sample
+  std::vector<std::vector<double>> support_time_;  // per patch and wall node, s in the window
   double last_time_ = 0;
   bool sampled_ = false;
   std::ofstream history_;

@@ -21,7 +21,7 @@ std::filesystem::path write_wall_shear_surface(const std::filesystem::path& dir,
 
   std::vector<std::int64_t> ids;
   std::vector<Eigen::Vector3d> coords, tau;
-  std::vector<double> tawss, osi, rrt, patch_index, dual;
+  std::vector<double> tawss, osi, rrt, support, patch_index, dual;
   std::vector<std::uint8_t> types;
   std::vector<std::int64_t> offsets{0}, cell_nodes;
   for (std::size_t p = 0; p < patches.size(); ++p) {
@@ -47,6 +47,7 @@ std::filesystem::path write_wall_shear_surface(const std::filesystem::path& dir,
       tawss.push_back(r.tawss);
       osi.push_back(r.osi);
       rrt.push_back(r.rrt);
+      support.push_back(r.support);
       tau.push_back(r.tau);
       patch_index.push_back(double(p));
       dual.push_back(double(d));
@@ -63,8 +64,9 @@ std::filesystem::path write_wall_shear_surface(const std::filesystem::path& dir,
   // The rows were gathered on this rank: write them alone (MPI_COMM_SELF).
   io::XdmfWriter writer(MPI_COMM_SELF, dir, "wall_shear_surface", std::int64_t(ids.size()), ids,
                         coords, types, offsets, cell_nodes);
-  const std::vector<io::ScalarField> scalars{
-      {"tawss", tawss}, {"osi", osi}, {"rrt", rrt}, {"patch", patch_index}, {"node", dual}};
+  const std::vector<io::ScalarField> scalars{{"tawss", tawss},       {"osi", osi},
+                                             {"rrt", rrt},           {"support_fraction", support},
+                                             {"patch", patch_index}, {"node", dual}};
   const std::vector<io::VectorField> vectors{{"tau", tau}};
   writer.write_step(time, scalars, vectors);
   return writer.xmf_file();

@@ -45,6 +45,8 @@ class ImmersedRun {
   // Collective: the Lagrangian output of every structure (rank 0 writes) and the force density
   // appended to `fields` (valid until the next call).
   void write(double time, io::FieldSet& fields);
+  // Collective: the local nodes inside a marker's kernel support at the current positions.
+  void support_nodes(std::vector<char>& nodes) { ib_->support_nodes(nodes); }
   // Collective (reductions of nothing: structures are replicated): a row of structures.csv.
   void after_step(double time, std::int64_t step);
 

@@ -367,6 +367,9 @@ Simulation::Simulation(const scene::Scene& scene_in, const RunRequest& request, 
   if (p.analysis && p.loop->prescribed_force())
     p.analysis->set_body_force(p.loop->prescribed_force());
   if (p.analysis) p.analysis->set_viscosity_model(run_options.projection.rheology);
+  if (p.analysis && p.immersed)
+    p.analysis->set_support_nodes(
+        [&p](std::vector<char>& nodes) { p.immersed->support_nodes(nodes); });
   if (p.checkpoint) {
     p.loop->resume(std::move(start), start_step, start_dp, start_nu_sgs, start_flux, start_lumped);
     p.loop->restore_forcing_state(start_forcing);

@@ -56,8 +56,11 @@ def check_nodes(rows):
 def check_summary(rows, summary):
     for s in summary:
         mine = [r for r in rows if r["patch"] == s["patch"]]
-        a, tawss, osi, rrt = (col(mine, k) for k in ("area", "tawss", "osi", "rrt"))
+        a, tawss, osi, rrt, support = (col(mine, k) for k in ("area", "tawss", "osi", "rrt",
+                                                               "support_fraction"))
+        assert np.all((support >= 0) & (support <= 1 + 1e-12)), "support_fraction outside [0, 1]"
         fin = np.isfinite(rrt)
+        clear = support == 0
         expect = {
             "area": a.sum(),
             "mean_tawss": (a * tawss).sum() / a.sum(),
@@ -66,6 +69,9 @@ def check_summary(rows, summary):
             "max_osi": osi.max(),
             "mean_rrt": (a[fin] * rrt[fin]).sum() / a[fin].sum() if fin.any() else math.nan,
             "rrt_area_fraction": a[fin].sum() / a.sum(),
+            "clear_area_fraction": a[clear].sum() / a.sum(),
+            "clear_mean_tawss": (a[clear] * tawss[clear]).sum() / a[clear].sum() if clear.any() else math.nan,
+            "clear_max_tawss": tawss[clear].max() if clear.any() else math.nan,
         }
         for k, v in expect.items():
             got = float(s[k])
@@ -79,7 +85,7 @@ def check_summary(rows, summary):
 def read_surface(d):
     step = os.path.join(d, "wall_shear_surface_000000.h5")
     with h5py.File(os.path.join(d, "wall_shear_surface_mesh.h5"), "r") as m, h5py.File(step, "r") as f:
-        out = {k: f[k][:] for k in ("tawss", "osi", "rrt", "tau", "patch", "node")}
+        out = {k: f[k][:] for k in ("tawss", "osi", "rrt", "support_fraction", "tau", "patch", "node")}
         out["coordinates"] = m["coordinates"][:]
         out["topology"] = m["topology"][:]
     return out
@@ -92,7 +98,7 @@ def check_surface(d, rows, names):
     keys = [(int(p), int(j)) for p, j in zip(s["patch"], s["node"])]
     assert set(keys) == set(by_key), "surface nodes differ from the wall nodes of wall_shear.csv"
     ref = [by_key[k] for k in keys]
-    for k in ("tawss", "osi", "rrt"):
+    for k in ("tawss", "osi", "rrt", "support_fraction"):
         close(s[k], col(ref, k), CSV_RTOL, f"surface {k}")
     close(s["tau"], np.c_[col(ref, "tau_x"), col(ref, "tau_y"), col(ref, "tau_z")], CSV_RTOL,
           "surface tau")
@@ -113,7 +119,7 @@ def compare(d, other, tol):
     a, b = read_csv(os.path.join(d, "wall_shear.csv")), read_csv(os.path.join(other, "wall_shear.csv"))
     assert [(r["patch"], r["node"]) for r in a] == [(r["patch"], r["node"]) for r in b]
     worst = 0.0
-    for k in ("area", "tawss", "osi", "rrt", "tau_x", "tau_y", "tau_z"):
+    for k in ("area", "tawss", "osi", "rrt", "tau_x", "tau_y", "tau_z", "support_fraction"):
         worst = max(worst, close(col(a, k), col(b, k), tol, f"wall_shear.csv {k}"))
     sa = read_csv(os.path.join(d, "wall_shear_summary.csv"))
     sb = read_csv(os.path.join(other, "wall_shear_summary.csv"))
@@ -122,7 +128,7 @@ def compare(d, other, tol):
             worst = max(worst, close(col(sa, k), col(sb, k), tol, f"summary {k}"))
     ha, hb = read_surface(d), read_surface(other)
     assert np.array_equal(ha["topology"], hb["topology"]), "surface topology differs"
-    for k in ("tawss", "osi", "rrt", "tau", "coordinates"):
+    for k in ("tawss", "osi", "rrt", "support_fraction", "tau", "coordinates"):
         worst = max(worst, close(ha[k], hb[k], tol, f"surface {k}"))
     print(f"{d} vs {other}: largest relative difference {worst:.3e} (tolerance {tol:g})")
 
