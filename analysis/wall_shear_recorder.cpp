@@ -163,6 +163,21 @@ void WallShearRecorder::restore(const io::CheckpointReader& reader) {
   }
   last_time_ = meta[std::size_t(patches)];
   sampled_ = meta[std::size_t(patches) + 1] != 0;
+  // A restart asked to average from a later start_time than the checkpoint's window began: the
+  // window starts afresh (TAWSS over cycles 5-10 from a run that averaged from cycle 1).
+  const double duration = stats_.empty() ? 0.0 : stats_.front().duration();
+  const double window_start = last_time_ - duration;
+  if (duration > 0 && options_.start_time > window_start + 1e-9 * std::max(1.0, last_time_)) {
+    for (std::size_t p = 0; p < stats_.size(); ++p) {
+      stats_[p] = flow::WallShearStatistics();
+      std::fill(support_time_[p].begin(), support_time_[p].end(), 0.0);
+    }
+    if (local_->comm.root())
+      fmt::print(
+          "wall_shear: start_time {:.6g} s is later than the checkpoint's averaging window "
+          "({:.6g}-{:.6g} s): TAWSS, OSI and RRT start afresh\n",
+          options_.start_time, window_start, last_time_);
+  }
 }
 
 void WallShearRecorder::write(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,

@@ -36,10 +36,12 @@ void flatten(const toml::table& table, const std::string& prefix,
 }
 
 bool may_change(const std::string& key) {
+  // wall_shear.start_time: a later one starts the averaging window afresh
+  // (analysis::WallShearRecorder::restore).
   static const std::regex allowed(
       "time\\.(end|max_steps)|output\\.(interval|interval_unit|checkpoint_every_steps|"
       "checkpoint_every_minutes|checkpoint_keep|checkpoint_on_signal)|run\\..*|partition\\..*|"
-      "sample\\..*");
+      "sample\\..*|wall_shear\\.start_time");
   return std::regex_match(key, allowed);
 }
 
@@ -82,8 +84,8 @@ std::string restart_scene_change(const fs::path& recorded, const scene::Scene& s
   if (changes.empty()) return {};
   std::string message = fmt::format(
       "restart: the scene differs from the run's ({}) in keys a restart must not change "
-      "(only time.end, time.max_steps, output intervals and checkpoints, run.*, partition.* and "
-      "[sample.*] sections may change):",
+      "(only time.end, time.max_steps, output intervals and checkpoints, run.*, partition.*, "
+      "[sample.*] sections and wall_shear.start_time may change):",
       recorded.string());
   for (const auto& c : changes) message += "\n  " + c;
   return message;

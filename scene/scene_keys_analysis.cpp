@@ -184,7 +184,10 @@ void declare_analysis_keys(Schema& s) {
       .def(0.0)
       .at_least(0)
       .unit_of("s")
-      .doc("TAWSS and OSI integrate from this time (e.g. after the first cycles)");
+      .doc(
+          "TAWSS and OSI integrate from this time (e.g. after the first cycles). A restart may "
+          "move it past the checkpoint's averaging window (`valsalva run --restart latest --set "
+          "wall_shear.start_time=T`): the window then starts afresh at T");
   declare_every_steps(s, "wall_shear", "the wall shear stress");
 
   const std::string pd = "pressure_drop.<name>";
