@@ -90,7 +90,8 @@ std::vector<WallLoad> wall_loads(const mesh::LocalMesh& mesh, const std::string&
     if (slot[j] >= 0) loads[slot[j]].force -= out_of_j;
     if (slot[k] >= 0) loads[slot[k]].force += out_of_j;
   }
-  for (std::size_t i = 0; i < loads.size(); ++i) loads[i].force -= pr[loads[i].node] * other_area[i];
+  for (std::size_t i = 0; i < loads.size(); ++i)
+    loads[i].force -= pr[loads[i].node] * other_area[i];
   if (in.body_force)
     for (auto& l : loads) l.force += mesh.volume[l.node] * (*in.body_force)[l.node];
   return loads;

@@ -28,8 +28,7 @@ struct PoiseuilleChannel {
   std::vector<double> weights;
   flow::WallForceInput in;
 
-  PoiseuilleChannel(const std::string& type, double perturbation, int n,
-                    bool periodic_x = true) {
+  PoiseuilleChannel(const std::string& type, double perturbation, int n, bool periodic_x = true) {
     mesh::BoxSpec spec;
     spec.cell_type = mesh::parse_box_cell_type(type);
     spec.cells = {n, n, n};
