@@ -135,13 +135,13 @@ void run_level(const Context& ctx, Level& level) {
   const auto sections = core::read_numeric_table(dir / "sections.csv", core::TableHeader::required);
   level.flux = sections.column("cut_flux").back();
   // The time-averaged wall shear of every wall node (steady over the averaging window).
-  // patch (a name), node, x, y, z, area, tawss, osi, rrt, tau_x, tau_y, tau_z: the numbers read
-  // strictly.
+  // patch (a name), node, x, y, z, area, tawss, osi, rrt, tau_x, tau_y, tau_z, support_fraction:
+  // the numbers read strictly.
   core::TableLines lines(dir / "wall_shear.csv", {});
   for (bool header = true; lines.next(); header = false) {
     const auto fields = lines.fields();
     if (header) continue;
-    if (fields.size() != 12) throw lines.error(1, "expected 12 columns");
+    if (fields.size() != 13) throw lines.error(1, "expected 13 columns");
     const double tawss = lines.number(fields[6], "tawss");
     level.wss_nodal = std::max(level.wss_nodal, std::abs(tawss / (kForce * kRadius / 2) - 1));
   }

@@ -59,14 +59,14 @@ void run_level(const Context& ctx, Level& level) {
   level.nodes = sim.metrics().num_nodes();
   // Mean TAWSS over the wall nodes of the middle half, from the run's wall_shear.csv.
   if (comm.rank() == 0) {
-    // patch (a name), node, x, y, z, area, tawss, osi, rrt, tau_x, tau_y, tau_z: the numbers
-    // read strictly.
+    // patch (a name), node, x, y, z, area, tawss, osi, rrt, tau_x, tau_y, tau_z,
+    // support_fraction: the numbers read strictly.
     core::TableLines lines(dir / "wall_shear.csv", {});
     std::vector<double> z, tawss, osi;
     for (bool header = true; lines.next(); header = false) {
       const auto fields = lines.fields();
-      if (header || fields.size() != 12) {
-        if (!header) throw lines.error(1, "expected 12 columns");
+      if (header || fields.size() != 13) {
+        if (!header) throw lines.error(1, "expected 13 columns");
         continue;
       }
       z.push_back(lines.number(fields[4], "z"));
