@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <stdexcept>
 
@@ -54,6 +55,19 @@ toml::array vec(const structure::Vec3& v) {
   return toml::array{v.x(), v.y(), v.z()};
 }
 
+const char* coaptation_name(const valve::ClosingOptions& o) {
+  if (!o.contact) return "none";
+  switch (o.coaptation) {
+    case valve::Coaptation::none:
+      return "none";
+    case valve::Coaptation::leaflets:
+      return "leaflets";
+    case valve::Coaptation::planes:
+      return "planes";
+  }
+  return "?";
+}
+
 toml::table report_table(const Options& o, const valve::ClosingResult& r) {
   const auto& n = r.newton;
   toml::table t{
@@ -79,7 +93,8 @@ toml::table report_table(const Options& o, const valve::ClosingResult& r) {
       {"max_von_mises_position_m", vec(r.max_stress_position)},
       {"max_von_mises_leaflet", r.max_stress_leaflet + 1},
       {"max_von_mises_distance_to_attachment_m", r.max_stress_to_attachment},
-      {"contact", o.closing.contact}};
+      {"contact", o.closing.contact},
+      {"coaptation", coaptation_name(o.closing)}};
   if (o.closing.contact) {
     const auto& c = n.contact;
     t.insert("contact_clearance_m", o.closing.contact_options.clearance);
@@ -201,6 +216,13 @@ CLI::App* add_close_leaflets(CLI::App& cli, std::function<int()>& action) {
   c->add_option("--shear-modulus", o->closing.shear_modulus, "Neo-Hookean G [Pa] (2.4e6)");
   c->add_option("--bulk-modulus", o->closing.bulk_modulus, "Neo-Hookean K [Pa] (1.6e6)");
   c->add_flag("!--no-contact", o->closing.contact, "Let the leaflets pass through each other");
+  const std::map<std::string, valve::Coaptation> coaptations{
+      {"leaflets", valve::Coaptation::leaflets}, {"planes", valve::Coaptation::planes}};
+  c->add_option("--coaptation", o->closing.coaptation,
+                "How the leaflets are kept apart: planes (default: each leaflet against the planes "
+                "through the axis and its commissures, where a symmetric valve's leaflets meet) or "
+                "leaflets (every pair of leaflets in contact, for valves that are not symmetric)")
+      ->transform(CLI::CheckedTransformer(coaptations, CLI::ignore_case));
   c->add_option("--penalty-factor", o->closing.contact_options.penalty_factor,
                 "Contact penalty eps = factor * E / h (default 100)");
   c->add_option("--contact-smoothing", o->closing.contact_options.smoothing,

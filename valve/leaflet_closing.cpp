@@ -56,17 +56,24 @@ double mean_thickness(const structure::SolidMesh& mesh, const std::vector<Leafle
   return sum / n;
 }
 
-// The free-edge node in the middle of the leaflet: closest in angle to the leaflet's centre
-// direction (mean in-plane direction of its attachment), then the middle one through the
-// thickness.
-int free_edge_midpoint(const structure::SolidMesh& mesh, const LeafletGroups& l,
-                       const structure::ValveBasis& b) {
+// The leaflet's centre direction in the annulus plane's axes: the mean in-plane direction of its
+// attachment nodes (unit, z = 0).
+Vec3 centre_direction(const structure::SolidMesh& mesh, const LeafletGroups& l,
+                      const structure::ValveBasis& b) {
   Vec3 c = Vec3::Zero();
   for (int n : mesh.node_set(l.attachment)) {
     Vec3 p = b.to_local(mesh.X.col(n));
     p.z() = 0;
     c += p.normalized();
   }
+  return c.normalized();
+}
+
+// The free-edge node in the middle of the leaflet: closest in angle to the leaflet's centre
+// direction, then the middle one through the thickness.
+int free_edge_midpoint(const structure::SolidMesh& mesh, const LeafletGroups& l,
+                       const structure::ValveBasis& b) {
+  const Vec3 c = centre_direction(mesh, l, b);
   const double centre = std::atan2(c.y(), c.x());
   auto angle_off = [&](int n) {
     const Vec3 p = b.to_local(mesh.X.col(n));
@@ -83,6 +90,48 @@ int free_edge_midpoint(const structure::SolidMesh& mesh, const LeafletGroups& l,
     }
   std::sort(row.begin(), row.end());
   return row[row.size() / 2].second;
+}
+
+// For every leaflet, the planes through the valve axis and the commissures it shares with its
+// neighbours (the bisectors of the centre directions of neighbouring leaflets), each with its
+// normal towards the leaflet; its aortic and ventricular faces must stay on that side. A
+// clearance c moves each plane c / 2 towards its leaflet, so neighbours stay c apart.
+std::vector<structure::RigidObstacle> commissure_planes(const structure::SolidMesh& mesh,
+                                                        const std::vector<LeafletGroups>& ls,
+                                                        const structure::ValveBasis& b,
+                                                        double clearance) {
+  std::vector<Vec3> centre;
+  for (const auto& l : ls) centre.push_back(centre_direction(mesh, l, b));
+  auto global = [&](const Vec3& v) { return Vec3(v.x() * b.e1 + v.y() * b.e2); };
+  std::vector<structure::RigidObstacle> planes;
+  for (std::size_t i = 0; i < ls.size(); ++i) {
+    const auto faces =
+        structure::contact_surface(mesh, {ls[i].aortic_face, ls[i].ventricular_face});
+    // The neighbours: the nearest centre direction on either side.
+    for (const double side : {1.0, -1.0}) {
+      std::size_t next = i;
+      double best = 4;
+      for (std::size_t j = 0; j < ls.size(); ++j) {
+        const double turn =
+            std::atan2(centre[i].cross(centre[j]).z(), centre[i].dot(centre[j])) * side;
+        if (j != i && turn > 0 && turn < best) {
+          best = turn;
+          next = j;
+        }
+      }
+      if (next == i) continue;
+      const Vec3 commissure = (centre[i] + centre[next]).normalized();
+      const Vec3 normal = (centre[i] - centre[i].dot(commissure) * commissure).normalized();
+      structure::RigidObstacle plane;
+      plane.name = fmt::format("{}-plane-{}", ls[i].name, ls[next].name);
+      plane.shape = structure::RigidObstacle::Shape::plane;
+      plane.direction = global(normal);
+      plane.point = b.origin + 0.5 * clearance * plane.direction;
+      plane.faces = faces;
+      planes.push_back(plane);
+    }
+  }
+  return planes;
 }
 
 }  // namespace
@@ -104,7 +153,8 @@ ClosingResult close_leaflets(const structure::SolidMesh& mesh, const structure::
     // Positive pressure pushes into the solid: on the aortic face, towards the ventricle side.
     problem.pressures.push_back({mesh.surface_set(l.aortic_face), options.pressure});
   }
-  if (options.contact)
+  const Coaptation coaptation = options.contact ? options.coaptation : Coaptation::none;
+  if (coaptation == Coaptation::leaflets)
     for (std::size_t a = 0; a < r.leaflets.size(); ++a)
       for (std::size_t b = a + 1; b < r.leaflets.size(); ++b) {
         const auto& la = r.leaflets[a];
@@ -114,6 +164,9 @@ ClosingResult close_leaflets(const structure::SolidMesh& mesh, const structure::
              structure::contact_surface(mesh, {la.aortic_face, la.ventricular_face}),
              structure::contact_surface(mesh, {lb.aortic_face, lb.ventricular_face})});
       }
+  if (coaptation == Coaptation::planes)
+    problem.obstacles =
+        commissure_planes(mesh, r.leaflets, basis, options.contact_options.clearance);
   problem.contact_options = options.contact_options;
   structure::NewtonOptions newton;
   newton.load_steps = options.load_steps;
@@ -121,7 +174,7 @@ ClosingResult close_leaflets(const structure::SolidMesh& mesh, const structure::
   newton.rtol = options.rtol;
   newton.max_relaxation_steps = options.max_relaxation_steps;
   newton.verbose = options.verbose;
-  if (options.contact)
+  if (coaptation != Coaptation::none)
     newton.admissible = [&](const Eigen::Matrix3Xd& x) {
       return !leaflets_cross(mesh, x, r.leaflets);
     };

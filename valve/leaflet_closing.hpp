@@ -5,6 +5,13 @@
 // The closed shape is then the stress-free reference of the FSI run. With contact on, every pair
 // of leaflets is a frictionless contact pair (their aortic and ventricular faces,
 // structure/contact.hpp), so the leaflets coapt instead of passing through each other.
+// Coaptation::planes keeps each leaflet instead on its side of the two planes through the valve
+// axis and its commissures (rigid obstacles): the symmetry planes of a tri-leaflet valve, where
+// the leaflets of a symmetric closed valve meet. Finite-element valve closing against symmetry
+// planes is the usual model of a symmetric valve (e.g. Gould et al., J. Thorac. Cardiovasc. Surg.
+// 65 (1973) 18; Labrosse et al., J. Biomech. 39 (2006) 2665, in one-leaflet models); here it
+// replaces leaflet-leaflet point-to-face contact, whose closest points switch faces where thin
+// leaflets coapt and stall Newton (docs/validation.md, valve_closure).
 #pragma once
 
 #include <Eigen/Core>
@@ -20,6 +27,13 @@
 
 namespace valsalva::valve {
 
+// How the closing keeps the leaflets apart.
+enum class Coaptation {
+  none,      // they may pass through each other
+  leaflets,  // every pair of leaflets is a contact pair
+  planes,    // each leaflet stays on its side of the planes through the axis and its commissures
+};
+
 struct ClosingOptions {
   double pressure = 12.4e3;  // [Pa] on the aortic faces, towards the ventricle (93 mmHg)
   double shear_modulus = 2.4e6, bulk_modulus = 1.6e6;  // neo-Hookean [Pa]
@@ -27,7 +41,8 @@ struct ClosingOptions {
   double damping = 1e-2;  // pseudo-transient continuation (NewtonOptions::damping)
   double rtol = 1e-6;     // relative residual (thin shells: round-off floor near 1e-7)
   int max_relaxation_steps = 400;
-  bool contact = true;
+  bool contact = true;                         // false: Coaptation::none whatever `coaptation` says
+  Coaptation coaptation = Coaptation::planes;  // the reference valve is three-fold symmetric
   structure::ContactOptions contact_options;
   bool verbose = false;
 };

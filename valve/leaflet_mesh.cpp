@@ -20,6 +20,7 @@ using structure::Vec3;
 
 namespace {
 
+constexpr double kPi = 3.14159265358979323846;
 constexpr const char* kSets[] = {"attachment", "free_edge", "aortic_face", "ventricular_face"};
 
 void sort_unique(std::vector<int>& v) {
@@ -53,7 +54,10 @@ std::array<int, 9> quad9_of_face(int f) {
 SolidMesh scalloped_leaflet(const LeafletPatch& p) {
   SolidMesh m = structure::structured_block(
       structure::HexOrder::q2, {p.n_angle, p.n_height, 1}, [&](const Vec3& s) {
-        const double q = 2 * s[0] - 1, th = p.centre_angle + 0.5 * q * p.span;
+        // q(u) = a u + (1 - a) sin(pi u / 2): q' = a at the posts (u = +-1), mean q' = 1.
+        const double u = 2 * s[0] - 1, a = p.side_element_ratio;
+        const double q = a * u + (1 - a) * std::sin(0.5 * kPi * u);
+        const double th = p.centre_angle + 0.5 * q * p.span;
         const double za = p.z_base + (p.z_free - p.side_attachment - p.z_base) * q * q;
         const double r = p.radius + (s[2] - 0.5) * p.thickness;
         const double top = p.z_free + p.free_edge_rise * (1 - q * q);
@@ -99,6 +103,7 @@ SolidMesh valve_leaflets(const ValveGeometry& g) {
     p.z_free = g.free_edge_z();
     p.side_attachment = g.commissure_attachment;
     p.free_edge_rise = g.free_edge_rise;
+    p.side_element_ratio = g.leaflet_side_element_ratio;
     p.n_angle = n_angle;
     p.n_height = n_height;
     const SolidMesh m = scalloped_leaflet(p);

@@ -26,6 +26,9 @@ struct LeafletPatch {
   double z_free = 10e-3;          // free edge [m]
   double side_attachment = 2e-3;  // [m]
   double free_edge_rise = 0;      // free edge z_free + rise (1 - q^2), q in [-1, 1] across [m]
+  // Width of the elements at the posts relative to their mean width along the arc (1: uniform):
+  // narrower ones let the closing leaflet bend from its clamped side to its neighbour.
+  double side_element_ratio = 1;
   int n_angle = 16, n_height = 8;
 };
 

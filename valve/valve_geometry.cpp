@@ -90,6 +90,11 @@ const std::vector<ValveKey>& valve_keys() {
       {"free_edge_rise", "m",
        "height of the free edge at the leaflet centre above its ends at the posts (parabolic)",
        &G::free_edge_rise},
+      {"leaflet_side_element_ratio", "1",
+       "width of the leaflet elements at the commissure posts relative to their mean width along "
+       "the arc (1: uniform; smaller: the closing leaflets bend from the posts to their "
+       "neighbours)",
+       &G::leaflet_side_element_ratio},
       {"sinus_height", "m", "height of the sino-tubular junction above the annulus plane",
        &G::sinus_height},
       {"sinus_depth", "m", "largest outward bulge of a sinus lobe (behind a leaflet centre)",
@@ -159,6 +164,8 @@ void validate(const ValveGeometry& g) {
       require(v > 0, k.name, v, "it must be positive");
   }
   require(g.free_edge_rise >= 0, "free_edge_rise", g.free_edge_rise, "it must not be negative");
+  require(g.leaflet_side_element_ratio <= 1, "leaflet_side_element_ratio",
+          g.leaflet_side_element_ratio, "it must be in (0, 1]");
   require(g.far_mesh_size == 0 || g.far_mesh_size >= g.mesh_size, "far_mesh_size", g.far_mesh_size,
           fmt::format("it must be 0 (uniform) or at least mesh_size = {:g} m", g.mesh_size));
   require(g.far_mesh_size <= g.root_radius(), "far_mesh_size", g.far_mesh_size,

@@ -45,15 +45,16 @@ namespace valsalva::valve {
 struct ValveGeometry {
   double root_diameter = 25e-3;
   double frame_thickness = 1.45e-3;
-  double ring_height = 2e-3;
-  double post_height = 15e-3;
+  double ring_height = 1e-3;
+  double post_height = 17e-3;
   double post_width_deg = 10;
   double first_commissure_deg = 90;
   double leaflet_radius = 12.5e-3;
   double leaflet_thickness = 0.15e-3;
-  double leaflet_height = 12e-3;
+  double leaflet_height = 15e-3;
   double commissure_attachment = 2e-3;
-  double free_edge_rise = 0;
+  double free_edge_rise = 5e-3;
+  double leaflet_side_element_ratio = 0.3;
   double sinus_height = 18e-3;
   double sinus_depth = 4.5e-3;
   double stj_diameter = 28e-3;

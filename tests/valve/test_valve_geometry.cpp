@@ -27,7 +27,7 @@ std::string refusal(const std::vector<std::string>& settings) {
 TEST_CASE("valve geometry: defaults and derived angles") {
   const valve::ValveGeometry g;
   CHECK_NOTHROW(valve::validate(g));
-  CHECK(valve::valve_keys().size() == 20);
+  CHECK(valve::valve_keys().size() == 21);
   const double deg = M_PI / 180;
   CHECK(g.commissure_angle(0) == doctest::Approx(90 * deg));
   CHECK(g.commissure_angle(2) == doctest::Approx(330 * deg));
@@ -65,11 +65,11 @@ TEST_CASE("valve geometry: bad values are refused naming key, value and limit") 
       {{"root_diameter=-1"}, {"root_diameter", "-1", "positive"}},
       {{"mesh_size=0"}, {"mesh_size", "0", "positive"}},
       {{"frame_thickness=0.02"}, {"frame_thickness", "0.02", "root radius"}},
-      {{"leaflet_height=0.014"}, {"leaflet_height", "0.014", "taller than the posts"}},
-      {{"mesh_size=0.013"}, {"mesh_size", "0.013", "leaflet_height"}},
+      {{"leaflet_height=0.017"}, {"leaflet_height", "0.017", "taller than the posts"}},
+      {{"mesh_size=0.016"}, {"mesh_size", "0.016", "leaflet_height"}},
       {{"leaflet_radius=0.02"}, {"leaflet_radius", "0.02", "frame's top edge"}},
       {{"leaflet_thickness=2e-3"}, {"leaflet_thickness", "0.002", "frame_thickness"}},
-      {{"commissure_attachment=0.012"}, {"commissure_attachment", "0.012", "leaflet_height"}},
+      {{"commissure_attachment=0.016"}, {"commissure_attachment", "0.016", "leaflet_height"}},
       {{"sinus_height=0.01"}, {"sinus_height", "0.01", "above the posts"}},
       {{"post_width_deg=70"}, {"post_width_deg", "70", "60 deg"}},
       {{"sinus_depth=0.02"}, {"sinus_depth", "0.02", "root radius"}},
@@ -81,6 +81,8 @@ TEST_CASE("valve geometry: bad values are refused naming key, value and limit") 
       {{"mesh_size=2e-3", "far_mesh_size=1e-3"}, {"far_mesh_size", "0.001", "at least mesh_size"}},
       {{"far_mesh_size=-1e-3"}, {"far_mesh_size", "-0.001", "at least mesh_size"}},
       {{"far_mesh_size=0.02"}, {"far_mesh_size", "0.02", "root radius"}},
+      {{"leaflet_side_element_ratio=1.5"}, {"leaflet_side_element_ratio", "1.5", "(0, 1]"}},
+      {{"leaflet_side_element_ratio=0"}, {"leaflet_side_element_ratio", "0", "positive"}},
   };
   for (const auto& c : cases) {
     const std::string msg = refusal(c.set);

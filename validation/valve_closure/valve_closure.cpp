@@ -1,8 +1,9 @@
 // Valve closure (issue 17, verification 3): the three manufactured leaflets of the reference
 // valve (valve/leaflet_mesh.hpp, the mesh `valsalva make-valve` writes) closed by 93 mmHg
-// (12.4 kPa) on their aortic faces, attachment clamped, with leaflet-leaflet contact
-// (valve/leaflet_closing.hpp: the same solve as `valsalva close-leaflets`). Metrics: the solve
-// converges to the full pressure; the smallest contact gap is above -1 % of the thickness; no
+// (12.4 kPa) on their aortic faces, attachment clamped, each leaflet in contact with the planes
+// through the axis and its commissures, where it meets its neighbours (valve/leaflet_closing.hpp:
+// the same solve and defaults as `valsalva close-leaflets`). Metrics: the solve converges to the
+// full pressure; the smallest contact gap is above -1 % of the thickness; no
 // leaflet crosses another (triangle intersection test of the mid-surfaces, not the gap); the
 // geometric orifice area of the closed valve is zero within its rasterisation error; the leaflets
 // coapt (a coapting band at least one thickness tall); the free-edge midpoints end near the axis;
@@ -49,7 +50,7 @@ void run(const Context& ctx, Report& report) {
   valve::write_leaflets_gmsh(open_msh, mesh);
   structure::ValveFrame frame;
   frame.annulus_radius = g.root_radius() - g.frame_thickness;
-  valve::ClosingOptions options;  // 12.4 kPa, the reference neo-Hookean leaflet, contact on
+  valve::ClosingOptions options;  // 12.4 kPa, the reference neo-Hookean leaflet, planes
   const valve::ClosingResult r = valve::close_leaflets(mesh, frame, options);
 
   report.add("Newton converged to full pressure (1 = yes)", r.newton.converged ? 1.0 : 0.0, 1.0,
