@@ -120,6 +120,11 @@ std::vector<structure::RigidObstacle> commissure_planes(const structure::SolidMe
         }
       }
       if (next == i) continue;
+      if ((centre[i] + centre[next]).norm() < 1e-6)
+        throw std::invalid_argument(fmt::format(
+            "close-leaflets: {} and {} face each other across the axis, so the plane between "
+            "them is not defined by their centres; use --coaptation leaflets",
+            ls[i].name, ls[next].name));
       const Vec3 commissure = (centre[i] + centre[next]).normalized();
       const Vec3 normal = (centre[i] - centre[i].dot(commissure) * commissure).normalized();
       structure::RigidObstacle plane;
