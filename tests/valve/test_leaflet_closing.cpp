@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "structure/mesh_generators.hpp"
 #include "valve/leaflet_closing.hpp"
 #include "valve/leaflet_mesh.hpp"
 #include "valve/valve_geometry.hpp"
@@ -99,4 +100,29 @@ TEST_CASE(
   MESSAGE("smallest mid-surface distance: " << c.result.pairs.min_distance);
   CHECK(c.result.pairs.min_distance > clearance + t - 0.4 * t);
   CHECK(c.result.pairs.min_distance < clearance + t + 0.5 * t);  // and they reach the planes
+}
+
+TEST_CASE("closing against the commissure planes: two leaflets facing each other are refused") {
+  // A two-leaflet valve: the plane between leaflets whose centres are 180 degrees apart is not
+  // the bisector of their centre directions (it is undefined); the message names the leaflets.
+  structure::SolidMesh mesh;
+  mesh.order = structure::HexOrder::q2;
+  for (int k = 1; k <= 2; ++k) {
+    valve::LeafletPatch p;
+    p.span = M_PI * 0.9;
+    p.centre_angle = (k - 1) * M_PI;
+    p.n_angle = 4;
+    p.n_height = 2;
+    const std::string name = "leaflet" + std::to_string(k);
+    const int first = mesh.num_nodes();
+    structure::append_body(mesh, valve::scalloped_leaflet(p), name + "_");
+    auto& all = mesh.node_sets[name];
+    for (int n = first; n < mesh.num_nodes(); ++n) all.push_back(n);
+  }
+  structure::ValveFrame frame;
+  frame.annulus_radius = 11e-3;
+  valve::ClosingOptions options;
+  CHECK_THROWS_WITH_AS(valve::close_leaflets(mesh, frame, options),
+                       doctest::Contains("leaflet1 and leaflet2 face each other"),
+                       std::invalid_argument);
 }
