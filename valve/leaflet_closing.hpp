@@ -7,11 +7,10 @@
 // structure/contact.hpp), so the leaflets coapt instead of passing through each other.
 // Coaptation::planes keeps each leaflet instead on its side of the two planes through the valve
 // axis and its commissures (rigid obstacles): the symmetry planes of a tri-leaflet valve, where
-// the leaflets of a symmetric closed valve meet. Finite-element valve closing against symmetry
-// planes is the usual model of a symmetric valve (e.g. Gould et al., J. Thorac. Cardiovasc. Surg.
-// 65 (1973) 18; Labrosse et al., J. Biomech. 39 (2006) 2665, in one-leaflet models); here it
-// replaces leaflet-leaflet point-to-face contact, whose closest points switch faces where thin
-// leaflets coapt and stall Newton (docs/validation.md, valve_closure).
+// the leaflets of a symmetric closed valve meet (the symmetry assumption of one-leaflet
+// finite-element valve models, here applied to all three leaflets at once). It replaces
+// leaflet-leaflet point-to-face contact, whose closest points switch faces where thin leaflets
+// coapt and stall Newton (docs/validation.md, valve_closure).
 #pragma once
 
 #include <Eigen/Core>
