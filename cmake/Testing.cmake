@@ -24,6 +24,33 @@ function(valsalva_add_test NAME)
       add_test(NAME ${NAME}_np${np} COMMAND $<TARGET_FILE:${NAME}>)
     endif()
     set_tests_properties(${NAME}_np${np} PROPERTIES LABELS "${labels}" TIMEOUT ${T_TIMEOUT}
-      ENVIRONMENT "${VALSALVA_MPIEXEC_ENV}" WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+      PROCESSORS ${np} ENVIRONMENT "${VALSALVA_MPIEXEC_ENV}" WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+  endforeach()
+endfunction()
+
+# valsalva_reserve_rank_slots(): for every test of the calling directory, PROCESSORS = the ranks
+# it runs on, so that `ctest -j N` counts them. Ranks from the name (the largest of its "npK",
+# e.g. cli_restart_np1_to_np2: 2), at least 2 for a test labelled "mpi". Why: Open MPI's ranks
+# busy-wait and do not know that another test shares the cores, so a 2-rank test run beside
+# another test on a 2-core machine ran 2-3 times slower than alone (validate_poiseuille_pipe_quick:
+# 95 s at 1 rank, 247 s at 2 in the same `ctest -j2`).
+function(valsalva_reserve_rank_slots)
+  get_property(tests DIRECTORY PROPERTY TESTS)
+  foreach(test IN LISTS tests)
+    string(REGEX MATCHALL "np[0-9]+" counts "${test}")
+    set(ranks 1)
+    foreach(count IN LISTS counts)
+      string(SUBSTRING "${count}" 2 -1 n)
+      if(n GREATER ranks)
+        set(ranks ${n})
+      endif()
+    endforeach()
+    get_test_property(${test} LABELS labels)
+    if("mpi" IN_LIST labels AND ranks LESS 2)
+      set(ranks 2)
+    endif()
+    if(ranks GREATER 1)
+      set_tests_properties(${test} PROPERTIES PROCESSORS ${ranks})
+    endif()
   endforeach()
 endfunction()

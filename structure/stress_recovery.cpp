@@ -1,6 +1,10 @@
 #include "structure/stress_recovery.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <span>
+#include <vector>
+
+#include "structure/hex_element.hpp"
 
 namespace valsalva::structure {
 
@@ -50,6 +54,41 @@ NodalStress nodal_stress(const SolidForces& forces, const Eigen::Matrix3Xd& x) {
         Eigen::SelfAdjointEigenSolver<Mat3>(E, Eigen::EigenvaluesOnly).eigenvalues().reverse();
   }
   out.cauchy = std::move(sig);
+  return out;
+}
+
+GaussPointStress gauss_point_stress(const SolidForces& forces, const Eigen::Matrix3Xd& x) {
+  const SolidMesh& m = forces.mesh();
+  const QuadratureRule rule = gauss_hex(default_gauss(m.order));
+  const int nen = m.nodes_per_element(), ngp = rule.size();
+  std::vector<double> N(static_cast<std::size_t>(ngp) * nen), dN(3 * N.size());
+  for (int g = 0; g < ngp; ++g)
+    hex_shape(m.order, rule.points[g], std::span(N).subspan(std::size_t(g) * nen, nen),
+              std::span(dN).subspan(std::size_t(g) * 3 * nen, 3 * nen));
+  GaussPointStress out;
+  out.points_per_element = ngp;
+  out.von_mises.resize(static_cast<long>(m.num_elements()) * ngp);
+  out.position.resize(3, out.von_mises.size());
+  for (int e = 0; e < m.num_elements(); ++e) {
+    const int* en = m.element_nodes(e);
+    for (int g = 0; g < ngp; ++g) {
+      Mat3 dX = Mat3::Zero(), dx = Mat3::Zero();
+      Vec3 at = Vec3::Zero();
+      for (int a = 0; a < nen; ++a) {
+        at += x.col(en[a]) * N[std::size_t(g) * nen + a];
+        for (int k = 0; k < 3; ++k) {
+          const double d = dN[std::size_t(g) * 3 * nen + 3 * a + k];
+          dX.col(k) += m.X.col(en[a]) * d;
+          dx.col(k) += x.col(en[a]) * d;
+        }
+      }
+      const Mat3 F = dx * dX.inverse();
+      const Mat3 s = forces.material(e).pk1(F) * F.transpose() / F.determinant();
+      const long i = static_cast<long>(e) * ngp + g;
+      out.von_mises[i] = von_mises(s);
+      out.position.col(i) = at;
+    }
+  }
   return out;
 }
 

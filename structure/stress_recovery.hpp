@@ -20,4 +20,15 @@ struct NodalStress {
 double von_mises(const Mat3& sigma);
 NodalStress nodal_stress(const SolidForces& forces, const Eigen::Matrix3Xd& x);
 
+// Von Mises stress at the Gauss points of the element's full rule (default_gauss: 3x3x3 for Q2),
+// the points the internal forces are integrated at. Unlike the nodal values above they stay
+// inside the element, where its map is regular: at a node where an element's map nearly
+// degenerates (a clamped corner of a leaflet) the nodal value is not a usable measure.
+struct GaussPointStress {
+  int points_per_element = 0;
+  Eigen::VectorXd von_mises;  // [e * points_per_element + g]
+  Eigen::Matrix3Xd position;  // current position of each point [m]
+};
+GaussPointStress gauss_point_stress(const SolidForces& forces, const Eigen::Matrix3Xd& x);
+
 }  // namespace valsalva::structure

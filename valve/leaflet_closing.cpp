@@ -202,17 +202,16 @@ ClosingResult close_leaflets(const structure::SolidMesh& mesh, const structure::
   orifice_options.list_uncovered = true;  // close-leaflets draws where the holes are
   r.orifice = structure::geometric_orifice_area({&all, 1}, valve, orifice_options);
   r.stress = structure::von_mises_summary(forces, x, 99);
-  r.max_stress_position = x.col(r.stress.max_node);
+  const int corner = mesh.element_nodes(r.stress.max_element)[0];
   for (std::size_t k = 0; k < r.leaflets.size(); ++k) {
     const auto& set = mesh.node_set(r.leaflets[k].name);
-    if (std::binary_search(set.begin(), set.end(), r.stress.max_node))
-      r.max_stress_leaflet = int(k);
+    if (std::binary_search(set.begin(), set.end(), corner)) r.max_stress_leaflet = int(k);
   }
   r.max_stress_to_attachment = std::numeric_limits<double>::infinity();
   for (const auto& l : r.leaflets)
     for (int n : mesh.node_set(l.attachment))
       r.max_stress_to_attachment =
-          std::min(r.max_stress_to_attachment, (x.col(n) - r.max_stress_position).norm());
+          std::min(r.max_stress_to_attachment, (x.col(n) - r.stress.max_position).norm());
   return r;
 }
 

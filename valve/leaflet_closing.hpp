@@ -57,10 +57,9 @@ struct ClosingResult {
   std::vector<FreeEdgeMidpoint> free_edge_midpoints;  // one per leaflet
   LeafletPairsReport pairs;                           // crossings, distance, coaptation height
   structure::OrificeArea orifice;                     // of the closed valve
-  structure::StressSummary stress;                    // von Mises over nodes
-  structure::Vec3 max_stress_position = structure::Vec3::Zero();
+  structure::StressSummary stress;                    // von Mises over Gauss points
   int max_stress_leaflet = -1;
-  double max_stress_to_attachment = 0;  // distance of that node to the attachment [m]
+  double max_stress_to_attachment = 0;  // distance of its largest value to the attachment [m]
   double thickness = 0;                 // mean leaflet thickness of the reference mesh [m]
   double seconds = 0;
 };

@@ -10,8 +10,8 @@
 #include "io/appended_series.hpp"
 #include "io/hdf5_file.hpp"
 #include "structure/contact.hpp"
+#include "structure/leaflet_indices.hpp"
 #include "structure/orifice_area.hpp"
-#include "structure/stress_recovery.hpp"
 #include "valve/leaflet_mesh.hpp"
 
 namespace valsalva::valve {
@@ -89,7 +89,7 @@ ValveMonitor::ValveMonitor(const mesh::LocalMesh& local, const ibm::ImmersedStru
       "opening_ratio";
   for (int i = 1; i <= 3; ++i) header += fmt::format(",tip{0}_x,tip{0}_y,tip{0}_z,tip{0}_r", i);
   header +=
-      ",max_von_mises,max_von_mises_node,max_von_mises_x,max_von_mises_y,max_von_mises_z,"
+      ",max_von_mises,max_von_mises_element,max_von_mises_x,max_von_mises_y,max_von_mises_z,"
       "min_gap,contact_area";
   open(csv_, "valve.csv", header);
   open(cycles_csv_, "valve_cycles.csv",
@@ -127,9 +127,7 @@ void ValveMonitor::sample(const flow::FlowState& state, std::int64_t step) {
   orifice_options.rings = options_.orifice_rings;
   const auto orifice = structure::geometric_orifice_area(parts, frame, orifice_options);
   const auto basis = structure::valve_basis(frame);
-  const auto stress = structure::nodal_stress(body.solid_forces(), x);
-  int worst = 0;
-  stress.von_mises.maxCoeff(&worst);
+  const auto stress = structure::von_mises_summary(body.solid_forces(), x, 99);
   const auto contact = body.contact_summary(x);
 
   std::string row = fmt::format("{},{:.17g},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.3e},{:.9e}", step,
@@ -140,16 +138,15 @@ void ValveMonitor::sample(const flow::FlowState& state, std::int64_t step) {
     row += fmt::format(",{:.9e},{:.9e},{:.9e},{:.9e}", p.x(), p.y(), p.z(),
                        std::hypot(local.x(), local.y()));
   }
-  const Eigen::Vector3d at = x.col(worst);
+  const Eigen::Vector3d& at = stress.max_position;
   row += fmt::format(
-      ",{:.9e},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e}", stress.von_mises[worst], worst, at.x(),
+      ",{:.9e},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e}", stress.max, stress.max_element, at.x(),
       at.y(), at.z(),
       body.has_contact() && std::isfinite(contact.min_gap) ? contact.min_gap : std::nan(""),
       contact.area);
   csv_ << row << '\n' << std::flush;
 
-  const auto done =
-      cycles_.add({state.time, inflow, tpg, orifice.opening_ratio, stress.von_mises[worst]});
+  const auto done = cycles_.add({state.time, inflow, tpg, orifice.opening_ratio, stress.max});
   if (done)
     cycles_csv_ << fmt::format(
                        "{},{:.9g},{:.9g},{},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},"

@@ -267,9 +267,22 @@ TEST_CASE("von Mises summary: maximum and percentile") {
   F << 1.1, 0.05, 0, 0, 0.95, 0.02, 0, 0, 1.0;
   const Mat3 sigma = mat->pk1(F) * F.transpose() / F.determinant();
   const StressSummary h = von_mises_summary(forces, F * m.X, 90);
-  CHECK(h.nodes == m.num_nodes());
+  CHECK(h.samples == 27 * m.num_elements());  // Gauss points of the 3x3x3 rule
+  CHECK(h.max_element >= 0);
+  CHECK(h.max_element < m.num_elements());
   CHECK(h.max == doctest::Approx(von_mises(sigma)).epsilon(1e-10));
   CHECK(h.at_percentile == doctest::Approx(von_mises(sigma)).epsilon(1e-10));
+
+  // The Gauss points move with the body: under x = F X each sits at F times its reference place.
+  const GaussPointStress ref = gauss_point_stress(forces, m.X),
+                         moved = gauss_point_stress(forces, F * m.X);
+  CHECK((moved.position - F * ref.position).cwiseAbs().maxCoeff() < 1e-14);
+  // The 3x3x3 points are symmetric about the element centre, which an affine element maps to the
+  // mean of its 8 corners.
+  const Vec3 centre = ref.position.leftCols(27).rowwise().mean();
+  Vec3 corners = Vec3::Zero();
+  for (int c = 0; c < 8; ++c) corners += m.X.col(m.element_nodes(0)[c]) / 8;
+  CHECK((centre - corners).norm() < 1e-14);
 }
 
 TEST_CASE("valve indices: bad input is refused with a clear message") {
