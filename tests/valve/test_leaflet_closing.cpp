@@ -85,6 +85,16 @@ TEST_CASE(
   CHECK(r.pairs.crossings == 0);
   CHECK(r.pairs.coaptation_height > 10 * t);
   CHECK(r.orifice.area < 3e-6);
+  // The largest von Mises stress over the Gauss points stays near the bulk of the distribution
+  // (8.0 MPa against a 99th percentile of 7.3 MPa measured; 9.2 / 6.2 at 1 mm): a factor 3 above
+  // it would be the clamped-corner singularity the nodal values showed (100 times and more). It
+  // lies at the attachment, within one element, where the reference study found the peak; the
+  // percentile is above the membrane stress p R / t (about 1 MPa).
+  MESSAGE("von Mises over Gauss points: max " << r.stress.max << " Pa, 99th percentile "
+                                              << r.stress.at_percentile << " Pa");
+  CHECK(r.stress.max < 3 * r.stress.at_percentile);
+  CHECK(r.stress.at_percentile > 1e6);
+  CHECK(r.max_stress_to_attachment < c.geometry.mesh_size);
 }
 
 TEST_CASE(
