@@ -91,16 +91,26 @@ void WallShearRecorder::sample(const flow::FlowState& state) {
   if (accumulate && support_nodes_) support_nodes_(in_support_);
   std::vector<double> mean;
   for (std::size_t p = 0; p < options_.patches.size(); ++p) {
-    tau_[p] = flow::wall_shear_stress(flow::wall_loads(*local_, options_.patches[p], in));
+    std::vector<Eigen::Vector3d> previous =
+        flow::wall_shear_stress(flow::wall_loads(*local_, options_.patches[p], in));
+    tau_[p].swap(previous);
     double sa = 0, s = 0;
     for (std::size_t i = 0; i < tau_[p].size(); ++i) {
       s += area_[p][i] * tau_[p][i].norm();
       sa += area_[p][i];
     }
     mean.push_back(local_->comm.sum(s) / local_->comm.sum(sa));
-    // Rectangle rule over the interval since the previous sample (its part after start_time).
+    // Trapezoidal rule over the interval since the previous sample, its part after start_time
+    // (the start value interpolated linearly to start_time). Without the previous sample (a
+    // restart from a checkpoint written before it was kept) the interval takes the end value.
     if (!accumulate) continue;
-    stats_[p].add(tau_[p], elapsed);
+    if (previous.size() != tau_[p].size()) previous = tau_[p];
+    if (last_time_ < t0) {
+      const double f = (t0 - last_time_) / (t - last_time_);
+      for (std::size_t i = 0; i < previous.size(); ++i)
+        previous[i] += f * (tau_[p][i] - previous[i]);
+    }
+    stats_[p].add(previous, tau_[p], elapsed);
     if (support_nodes_)
       for (std::size_t i = 0; i < nodes_[p].size(); ++i)
         if (in_support_[std::size_t(nodes_[p][i])]) support_time_[p][i] += elapsed;
@@ -119,6 +129,7 @@ std::vector<io::CheckpointArray> WallShearRecorder::checkpoint_arrays() const {
   io::CheckpointArray sums{"wall_shear_sums", local_->global_nodes * patches, wss_cols, {}, {}};
   io::CheckpointArray meta{"wall_shear_meta", patches + 2, 0, {}, {}};
   io::CheckpointArray support{"wall_shear_support_time", local_->global_nodes * patches, 0, {}, {}};
+  io::CheckpointArray last{"wall_shear_last_tau", local_->global_nodes * patches, 3, {}, {}};
   for (std::size_t p = 0; p < options_.patches.size(); ++p) {
     const auto s = stats_[p].state();
     const bool empty = s.size() == 1;  // nothing accumulated yet
@@ -128,6 +139,9 @@ std::vector<io::CheckpointArray> WallShearRecorder::checkpoint_arrays() const {
         sums.data.push_back(empty ? 0.0 : s[wss_cols * i + std::size_t(c)]);
       support.rows.push_back(sums.rows.back());
       support.data.push_back(support_time_[p][i]);
+      const Eigen::Vector3d tau = i < tau_[p].size() ? tau_[p][i] : Eigen::Vector3d::Zero();
+      last.rows.push_back(sums.rows.back());
+      last.data.insert(last.data.end(), tau.data(), tau.data() + 3);
     }
     if (local_->comm.root()) {
       meta.rows.push_back(std::int64_t(p));
@@ -138,7 +152,7 @@ std::vector<io::CheckpointArray> WallShearRecorder::checkpoint_arrays() const {
     meta.rows.insert(meta.rows.end(), {patches, patches + 1});
     meta.data.insert(meta.data.end(), {last_time_, sampled_ ? 1.0 : 0.0});
   }
-  return {sums, meta, support};
+  return {sums, meta, support, last};
 }
 
 void WallShearRecorder::restore(const io::CheckpointReader& reader) {
@@ -160,6 +174,13 @@ void WallShearRecorder::restore(const io::CheckpointReader& reader) {
     // Checkpoints written before the support time was kept: none counted before the restart.
     if (reader.has("wall_shear_support_time"))
       support_time_[p] = reader.read_array("wall_shear_support_time", rows);
+    // The last sample's tau_w, the start of the next interval (checkpoints since 2026-12-06).
+    tau_[p].clear();
+    if (reader.has("wall_shear_last_tau") && meta[std::size_t(patches) + 1] != 0) {
+      const auto v = reader.read_array("wall_shear_last_tau", rows);
+      for (std::size_t i = 0; i + 2 < v.size(); i += 3)
+        tau_[p].emplace_back(v[i], v[i + 1], v[i + 2]);
+    }
   }
   last_time_ = meta[std::size_t(patches)];
   sampled_ = meta[std::size_t(patches) + 1] != 0;

@@ -22,19 +22,21 @@ std::vector<Eigen::Vector3d> wall_shear_stress(const std::vector<WallLoad>& load
   return tau;
 }
 
-void WallShearStatistics::add(const std::vector<Eigen::Vector3d>& tau, double dt) {
+void WallShearStatistics::add(const std::vector<Eigen::Vector3d>& start,
+                              const std::vector<Eigen::Vector3d>& end, double dt) {
   if (sum_tau_.empty() && duration_ == 0) {
-    sum_tau_.assign(tau.size(), Eigen::Vector3d::Zero());
-    sum_abs_.assign(tau.size(), 0.0);
+    sum_tau_.assign(end.size(), Eigen::Vector3d::Zero());
+    sum_abs_.assign(end.size(), 0.0);
   }
-  if (tau.size() != sum_tau_.size())
-    throw std::invalid_argument("flow::WallShearStatistics::add: " + std::to_string(tau.size()) +
+  if (start.size() != sum_tau_.size() || end.size() != sum_tau_.size())
+    throw std::invalid_argument("flow::WallShearStatistics::add: " + std::to_string(start.size()) +
+                                " and " + std::to_string(end.size()) +
                                 " wall nodes, the statistics hold " +
                                 std::to_string(sum_tau_.size()));
   if (!(dt > 0)) throw std::invalid_argument("flow::WallShearStatistics::add: dt must be > 0");
-  for (std::size_t i = 0; i < tau.size(); ++i) {
-    sum_tau_[i] += dt * tau[i];
-    sum_abs_[i] += dt * tau[i].norm();
+  for (std::size_t i = 0; i < end.size(); ++i) {
+    sum_tau_[i] += dt / 2 * (start[i] + end[i]);
+    sum_abs_[i] += dt / 2 * (start[i].norm() + end[i].norm());
   }
   duration_ += dt;
 }

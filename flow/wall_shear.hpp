@@ -20,11 +20,15 @@ namespace valsalva::flow {
 std::vector<Eigen::Vector3d> wall_shear_stress(const std::vector<WallLoad>& loads);
 
 // Time integrals of tau_w and |tau_w| at a fixed set of wall nodes (the nodes of the loads given
-// to the first add()); rectangle rule with the step's dt, which integrates a periodic signal
-// sampled uniformly over whole periods exactly for its mean.
+// to the first add()), by the trapezoidal rule over the intervals between samples: 2nd order on
+// steps of any length (the rectangle rule it replaced was 1st order on varying steps: -0.38 % in
+// the mean RRT of womersley_rheology), and exact for the mean of a periodic signal sampled
+// uniformly over whole periods.
 class WallShearStatistics {
  public:
-  void add(const std::vector<Eigen::Vector3d>& tau, double dt);
+  // One interval of length dt, tau_w at its start and at its end.
+  void add(const std::vector<Eigen::Vector3d>& start, const std::vector<Eigen::Vector3d>& end,
+           double dt);
   double duration() const { return duration_; }
   std::vector<double> tawss() const;
   std::vector<double> osi() const;  // 0 where tau_w was zero throughout
