@@ -99,6 +99,10 @@ CornerFold corner_fold(const CornerFoldInput& in, int steps) {
     area += (b.x() - a.x()) * (ga + gb) / 2;
   }
   f.uncovered_area = 2 * area;
+  for (auto it = path.rbegin(); it != path.rend(); ++it)
+    f.mid_surface.emplace_back(-(*it)[0], (*it)[1] - corner);
+  for (std::size_t i = 1; i < path.size(); ++i)
+    f.mid_surface.emplace_back(path[i][0], path[i][1] - corner);
   return f;
 }
 

@@ -12,6 +12,9 @@
 // the corner is uncovered: the part of a closed valve's orifice that bending alone keeps open.
 #pragma once
 
+#include <Eigen/Core>
+#include <vector>
+
 namespace valsalva::validation {
 
 struct CornerFoldInput {
@@ -28,6 +31,9 @@ struct CornerFold {
   double corner_to_face = 0;    // corner to the outer face [m]
   double uncovered_area = 0;    // between the outer face and the corner [m^2]
   double support_reaction = 0;  // line force at each point where the strip leaves a plane [N/m]
+  // The bridging part of the mid-surface, from one plane to the other, in the corner's frame
+  // (corner at the origin, bisector along +y) [m].
+  std::vector<Eigen::Vector2d> mid_surface;
 };
 
 // Throws std::runtime_error when Newton's method does not converge or the reaction comes out

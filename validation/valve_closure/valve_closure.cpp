@@ -7,8 +7,11 @@
 // leaflet crosses another (triangle intersection test of the mid-surfaces, not the gap); the
 // geometric orifice area of the closed valve is zero within its rasterisation error; the leaflets
 // coapt (a coapting band at least one thickness tall); the free-edge midpoints end near the axis;
-// the largest von Mises stress lies at the attachment, where the reference study found it. The
+// the largest von Mises stress lies at the attachment, where the reference study found it; where
+// the leaflet elements resolve it, the free-edge midpoints and the orifice near the axis against
+// the fold that bending alone leaves in the commissure planes' corner (corner_fold.hpp). The
 // coaptation height and the stresses are in solve.csv. Writes leaflets.msh and closed.msh (Gmsh),
+// fold.csv (the bending-only fold's mid-surface, validation/valve_closure/corner_fold.hpp),
 // closed_valve.xmf (ParaView, with stresses), mid_surface.csv and valve_closure.png.
 #include <fmt/format.h>
 #include <fmt/os.h>
@@ -120,6 +123,9 @@ void run(const Context& ctx, Report& report) {
       structure::nodal_stress(structure::SolidForces(mesh, *material), r.newton.x);
   io::write_solid_results(ctx.out_dir, "closed_valve", mesh, r.newton.x, &stress);
   write_mid_surfaces(ctx.out_dir / "mid_surface.csv", mesh, r);
+  auto fold_csv = fmt::output_file((ctx.out_dir / "fold.csv").string());
+  fold_csv.print("x,y\n");  // corner at the origin, bisector along +y
+  for (const auto& q : fold.mid_surface) fold_csv.print("{:.8e},{:.8e}\n", q.x(), q.y());
 }
 
 }  // namespace
