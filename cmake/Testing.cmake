@@ -1,7 +1,10 @@
 # valsalva_add_test(NAME SOURCES s.cpp... LIBS lib... LABELS quick|validation NP 1 [2 3])
 # Builds one doctest executable (MPI-aware main in tests/test_main.cpp) and registers one CTest
 # test per rank count; rank counts above 1 run through mpiexec and get the label "mpi".
-set(VALSALVA_MPIEXEC_ENV "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1")
+# Binding off: Open MPI binds each rank to a core by default (2 ranks or fewer), and every mpiexec
+# of a `ctest -j` run starts at core 0, so two 1-rank tests side by side shared core 0 while core
+# 1 stayed idle (taskset showed both validate runs on core 0).
+set(VALSALVA_MPIEXEC_ENV "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1;OMPI_MCA_hwloc_base_binding_policy=none")
 function(valsalva_add_test NAME)
   cmake_parse_arguments(T "" "TIMEOUT" "SOURCES;LIBS;LABELS;NP" ${ARGN})
   if(NOT T_NP)
