@@ -7,8 +7,8 @@
 //                     geometric orifice area (m^2, structure/orifice_area.hpp) with its raster
 //                     error and the opening ratio, the three leaflet tips (free-edge midpoints: x,
 //                     y, z and distance from the axis), the largest von Mises stress over the
-//                     Gauss points (Pa), its element and position, the smallest signed gap between contact surfaces (m)
-//                     and the contact area (m^2)
+//                     Gauss points (Pa), its element and position, the smallest signed gap
+//                     between contact surfaces (m) and the contact area (m^2)
 //   valve_cycles.csv  one row per completed cycle (analysis/valve_cycles.hpp), with the valve's
 //                     flow taken at the inlet
 // The open cycle's samples are saved in checkpoints, so a restarted run completes it; a restart
