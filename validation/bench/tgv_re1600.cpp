@@ -2,9 +2,9 @@
 // International Workshop on High-Order CFD Methods (box (2 pi)^3, V0 = L = 1, nu = 1/1600,
 // u = sin x cos y cos z, v = -cos x sin y cos z, w = 0,
 // p = (cos 2x + cos 2y)(cos 2z + 2)/16), run to t_end on an n^3 periodic hexahedral box with a
-// fixed time step from the CFL number: validation/tgv_les/tgv_les.toml without a model, through
-// run::Simulation and its run loop (validation/tgv_les/tgv_les_run.hpp), as `valsalva run` runs
-// it. Measures what the flow-solver issue asks for:
+// fixed time step from the CFL number: validation/tgv_les/tgv_les.toml (no model unless --model),
+// through run::Simulation and its run loop (validation/tgv_les/tgv_les_run.hpp), as `valsalva run`
+// runs it. Measures what the flow-solver issue asks for:
 //   wall time (with set-up) and CPU time (of the time loop, all ranks), node-steps per second
 //   per core, Poisson
 //   iterations, peak resident memory per node, and the error of the dissipation rate -dE/dt
@@ -13,7 +13,8 @@
 // Writes OUT/tgv_<scheme>_<n>_np<ranks>.csv (t, E, -dE/dt) and appends one summary row to
 // OUT/summary.csv; validation/bench/tgv_re1600_plot.py draws -dE/dt(t) and error vs CPU time.
 // Usage: [mpiexec -n R] bench_tgv_re1600 [--n 32] [--scheme central2|central4] [--cfl 0.5]
-//        [--t-end 10] [--operators order2|order4] [--out bench-results/tgv_re1600]
+//        [--t-end 10] [--operators order2|order4] [--model none|sigma|wale|smagorinsky]
+//        [--out bench-results/tgv_re1600]
 // --operators order4: the 4th-order gradient, divergence and viscous term
 // (ProjectionOptions::fourth_order_operators); the CSV name and summary row carry "+op4".
 // Measured numbers: validation/notes/bench_tgv_re1600.md.
@@ -30,6 +31,7 @@
 
 #include "core/comm.hpp"
 #include "flow/convection_scheme.hpp"
+#include "les/sgs_model.hpp"
 #include "run/data_dir.hpp"
 #include "validation/bench/bench_cli.hpp"
 #include "validation/tgv_les/tgv_les_run.hpp"
@@ -42,6 +44,7 @@ struct Args {
   int n = 32;
   std::string scheme = "central2";
   std::string operators = "order2";  // order4: ProjectionOptions::fourth_order_operators
+  std::string model = "none";        // les.model
   double cfl = 0.5, t_end = 10;
   std::filesystem::path out = "bench-results/tgv_re1600";
 };
@@ -61,14 +64,18 @@ int main(int argc, char** argv) {
   app.add_option("--operators", args.operators,
                  "Gradient, divergence and viscous operators (order4: \"+op4\" in the names)")
       ->check(CLI::IsMember({"order2", "order4"}));
+  app.add_option("--model", args.model,
+                 "Subgrid model (les.model; not \"none\": \"+MODEL\" in the names)")
+      ->check(CLI::IsMember(les::sgs_kind_names()));
   app.add_option("--out", args.out, "Folder of the CSV files");
   return bench::mpi_main(app, argc, argv, [&](int rank, int size) {
     const bool order4 = args.operators == "order4";
-    const std::string label = args.scheme + (order4 ? "+op4" : "");
-    // The scene of validation/tgv_les without a model, through run::Simulation (issue 20).
+    const std::string label =
+        args.scheme + (order4 ? "+op4" : "") + (args.model != "none" ? "+" + args.model : "");
+    // The scene of validation/tgv_les, through run::Simulation (issue 20).
     validation::TgvLesSpec spec;
     spec.scheme = args.scheme;
-    spec.model = "none";
+    spec.model = args.model;
     spec.cfl = args.cfl;
     spec.t_end = args.t_end;
     spec.fourth_order_operators = order4;
