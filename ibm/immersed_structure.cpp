@@ -137,6 +137,7 @@ void ImmersedStructure::stage_force(int stage, double stage_time,
       locate(x_n_);
       compute_forces(x_n_);
       assemble_stiffness(x_n_);
+      force_n_ = force_;
       for (int b = 0; b < num_bodies(); ++b) {
         const int n = count(b);
         Eigen::Map<const Eigen::VectorXd> d(last_displacement_.data() + 3 * first_[b], 3 * n);
@@ -252,6 +253,62 @@ void ImmersedStructure::coupled_response(const Eigen::Matrix3Xd& v, Eigen::Matri
   transfer_.interpolate(std::span<Eigen::Vector3d>(response_density_), as_points(out));
 }
 
+Eigen::Matrix3Xd ImmersedStructure::lagged_residual(const Eigen::Matrix3Xd& b, double c,
+                                                    const Eigen::Matrix3Xd& d) {
+  Eigen::Matrix3Xd full = Eigen::Matrix3Xd::Zero(3, num_markers()), difference, response;
+  for (std::size_t m = 0; m < coupled_.size(); ++m) full.col(coupled_[m]) = d.col(long(m));
+  compute_forces(x_n_ + full);
+  gather(Eigen::Matrix3Xd(force_ - force_n_), difference);
+  response_density_.resize(static_cast<std::size_t>(mesh_.num_local()));
+  transfer_.spread(as_points(difference), response_density_);
+  response.resize(3, difference.cols());
+  transfer_.interpolate(std::span<Eigen::Vector3d>(response_density_), as_points(response));
+  return b + c * response - d;
+}
+
+void ImmersedStructure::newton_lagged(const Eigen::Matrix3Xd& b, double c, ImplicitSolve& solve) {
+  // The lagged solve linearises dX = dt U + c A [F(X^n + dX) - F(X^n)] at X^n; Newton
+  // iterations on that equation (A kept at X^n, K re-assembled at each iterate) remove the
+  // linearisation's error, which sets the variant's stability limit on strained solids. Each
+  // update is halved until the residual falls and no element inverts (a backtracking line
+  // search: Nocedal & Wright, Numerical Optimization, 2006, sect. 3.1).
+  const auto apply = [this](const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd& kv) {
+    apply_coupled_stiffness(v, kv);
+  };
+  auto& d = solve.displacement;
+  Eigen::Matrix3Xd residual;
+  try {
+    residual = lagged_residual(b, c, d);
+  } catch (const std::runtime_error&) {  // the linearised step inverts an element: from X^n
+    d.setZero();
+    residual = b;
+  }
+  while (newton_iterations_ < options_.implicit_newton_iterations) {
+    Eigen::Matrix3Xd full = Eigen::Matrix3Xd::Zero(3, num_markers());
+    for (std::size_t m = 0; m < coupled_.size(); ++m) full.col(coupled_[m]) = d.col(long(m));
+    assemble_stiffness(x_n_ + full);
+    const auto update = implicit_marker_displacement(transfer_, apply, residual, c);
+    solve.iterations += update.iterations;
+    ++newton_iterations_;
+    double step = -1;
+    for (double alpha = 1; alpha > 1e-3 && step < 0; alpha *= 0.5) {
+      const Eigen::Matrix3Xd trial = d + alpha * update.displacement;
+      Eigen::Matrix3Xd trial_residual;
+      try {
+        trial_residual = lagged_residual(b, c, trial);
+      } catch (const std::runtime_error&) {  // an inverted element: the same on every rank
+        continue;
+      }
+      if (trial_residual.norm() < residual.norm()) {
+        step = alpha * update.displacement.norm();
+        d = trial;
+        residual = trial_residual;
+      }
+    }
+    if (step < 0 || step <= options_.implicit_newton_tolerance * d.norm()) break;
+  }
+}
+
 void ImmersedStructure::implicit_finish(double dt, flow::FlowState* state) {
   // (I + dt^2/rho A K) dX = dt U(u^{n+1}, X^n) [+ c A K dX^{n-1}] on the coupled markers, with A
   // and K at X^n (ImplicitVariant).
@@ -283,6 +340,9 @@ void ImmersedStructure::implicit_finish(double dt, flow::FlowState* state) {
   } else {
     solve = implicit_marker_displacement(transfer_, apply, b, c);
   }
+  newton_iterations_ = 1;
+  if (variant == ImplicitVariant::lagged && options_.implicit_newton_iterations > 1)
+    newton_lagged(b, c, solve);
   implicit_iterations_ = solve.iterations;
   if (projected) {
     // The flow step felt -K dX^{n-1}; backward Euler has it feel -K dX: the velocity and the

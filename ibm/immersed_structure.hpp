@@ -108,6 +108,11 @@ struct ImmersedOptions {
   // Mode implicit: the marker solve (ImplicitVariant above); backward_euler needs set_projector
   // and the mutable finish_step.
   ImplicitVariant implicit_variant = ImplicitVariant::lagged;
+  // Mode implicit, variant lagged: Newton iterations on the force, at most this many (1: the
+  // linearisation at X^n alone), until the update is below `implicit_newton_tolerance` times the
+  // displacement (implicit_markers.hpp).
+  int implicit_newton_iterations = 1;
+  double implicit_newton_tolerance = 1e-6;
 };
 
 class ImmersedStructure {
@@ -177,6 +182,8 @@ class ImmersedStructure {
   const Eigen::Matrix3Xd& last_displacement() const { return last_displacement_; }
   void set_last_displacement(const Eigen::Matrix3Xd& d);
   int last_implicit_iterations() const { return implicit_iterations_; }
+  // Mode implicit: Newton iterations of the last step's marker solve (1 without Newton).
+  int last_newton_iterations() const { return newton_iterations_; }
   const DiracTransfer& transfer() const { return transfer_; }
   // Where each coupled marker's kernel support was last built (transfer.reuse_distance keeps it
   // while the marker stays near): part of the state, saved in checkpoints so that a restart
@@ -201,6 +208,10 @@ class ImmersedStructure {
   // finish_step; `correctable` (null from the const form) is the state backward_euler corrects.
   void finish(const flow::FlowState& state, flow::FlowState* correctable);
   void implicit_finish(double dt, flow::FlowState* state);
+  // Newton iterations after the first lagged solve (ImmersedOptions::implicit_newton_iterations).
+  void newton_lagged(const Eigen::Matrix3Xd& b, double c, ImplicitSolve& solve);
+  // b + c A [F(X^n + d) - F(X^n)] - d on the coupled markers (throws on an inverted element).
+  Eigen::Matrix3Xd lagged_residual(const Eigen::Matrix3Xd& b, double c, const Eigen::Matrix3Xd& d);
   // out = Interp (P) Spread v on the coupled markers (P with `projected`). Collective.
   void coupled_response(const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd& out, bool projected);
 
@@ -222,6 +233,8 @@ class ImmersedStructure {
   Eigen::Matrix3Xd stiffness_in_, stiffness_out_;       // all markers, scratch
   Eigen::Matrix3Xd last_displacement_;                  // mode implicit: dX^{n-1}
   int implicit_iterations_ = 0;
+  int newton_iterations_ = 0;
+  Eigen::Matrix3Xd force_n_;  // mode implicit: F(X^n), before the extrapolation
   Projector projector_;
   flow::VectorField response_density_;
   flow::ScalarField response_potential_;

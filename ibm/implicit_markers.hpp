@@ -18,7 +18,11 @@
 // speed still 0.3 of its peak after 100 steps) and fails within 3 steps from 5x; with a 1.01
 // stretch (the linear regime) it runs at every multiple up to 16x: the limit at the 1.2
 // stretch is the linearisation of the force at X^n (K of the stretched block over one step's
-// displacement), not the coupling. ImplicitVariant::backward_euler (the projected A_P = Interp
+// displacement), not the coupling. Newton iterations on the lagged equation
+// dX = dt U* + dt^2/rho A [F(X^n + dX) - F(X^n)] (ImmersedOptions::implicit_newton_iterations;
+// K re-assembled at each iterate, A kept at X^n, updates halved until the residual falls and no
+// element inverts) move that limit from 4x to 5x; from 6x the Newton systems stop converging.
+// ImplicitVariant::backward_euler (the projected A_P = Interp
 // P Spread and the fluid's velocity and pressure corrected to the force F(X^n) - K dX; a
 // pressure projection per product) relaxes at 3.5x, inverts an element in 3 steps at 4x, and
 // runs up to 16x in the linear regime: no wider limit, for a projection per BiCGSTAB product.

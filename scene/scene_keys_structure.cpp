@@ -99,6 +99,23 @@ void declare_structure_keys(Schema& s) {
           "is held, and the markers' displacement solves the backward-Euler linearisation "
           "(I + dt^2/rho Interp Spread K) dX = dt U (ibm/implicit_markers.hpp): no time-step "
           "bound of its own, so the flow's CFL and Fourier targets set dt (stiff leaflets)");
+  s.integer("immersed.implicit_newton_iterations")
+      .def(1)
+      .at_least(1)
+      .unit_of("-")
+      .doc(
+          "coupling = \"implicit\": at most this many Newton iterations of the marker solve on "
+          "the solid force (K re-assembled at each iterate; 1: the linearisation at the start of "
+          "the step alone), which widens the stable time step of strained leaflets "
+          "(ibm/implicit_markers.hpp)");
+  s.real("immersed.implicit_newton_tolerance")
+      .def(1e-6)
+      .above(0)
+      .at_most(1)
+      .unit_of("-")
+      .doc(
+          "Newton stops once its update is below this fraction of the step's marker "
+          "displacement");
   s.real("immersed.dt_safety")
       .def(0.9)
       .in_range(0, 1)
@@ -479,6 +496,8 @@ ImmersedSetup read_immersed_setup(const Scene& scene, const mesh::Mesh& mesh) {
   o.mode = coupling == "per_step"   ? ibm::CouplingMode::per_step
            : coupling == "implicit" ? ibm::CouplingMode::implicit
                                     : ibm::CouplingMode::per_stage;
+  o.implicit_newton_iterations = scene.get<int>("immersed.implicit_newton_iterations");
+  o.implicit_newton_tolerance = scene.get<double>("immersed.implicit_newton_tolerance");
   o.fluid_density = scene.get<double>("flow.density");
   o.time_scheme = flow::parse_time_scheme(scene.get<std::string>("time.scheme"));
   o.box = periodic_box(scene, mesh);

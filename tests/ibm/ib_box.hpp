@@ -26,6 +26,7 @@ struct IbBoxSpec {
   double stretch = 1.2;  // initial isochoric stretch along x
   ibm::CouplingMode mode = ibm::CouplingMode::per_stage;
   ibm::ImplicitVariant implicit_variant = ibm::ImplicitVariant::lagged;
+  int implicit_newton_iterations = 1;  // ImmersedOptions: Newton on the lagged solve's force
   flow::TimeScheme time_scheme = flow::TimeScheme::rk4_jameson;  // fluid and markers
   // The skew-symmetric convection conserves momentum up to the divergence the Poisson solve
   // leaves (flow/projection_rk4.hpp); tests of momentum at round-off tighten it.
@@ -94,6 +95,7 @@ struct IbBox {
     ibm::ImmersedOptions options;
     options.mode = s.mode;
     options.implicit_variant = s.implicit_variant;
+    options.implicit_newton_iterations = s.implicit_newton_iterations;
     options.time_scheme = s.time_scheme;
     options.fluid_density = s.density;
     options.box = ibm::PeriodicBox{};
