@@ -253,11 +253,21 @@ void ImmersedStructure::coupled_response(const Eigen::Matrix3Xd& v, Eigen::Matri
   transfer_.interpolate(std::span<Eigen::Vector3d>(response_density_), as_points(out));
 }
 
+namespace {
+
+// X with the markers `coupled` (indices into X's columns) displaced by d (3 x coupled markers).
+Eigen::Matrix3Xd displaced(Eigen::Matrix3Xd x, const std::vector<int>& coupled,
+                           const Eigen::Matrix3Xd& d) {
+  for (std::size_t m = 0; m < coupled.size(); ++m) x.col(coupled[m]) += d.col(long(m));
+  return x;
+}
+
+}  // namespace
+
 Eigen::Matrix3Xd ImmersedStructure::lagged_residual(const Eigen::Matrix3Xd& b, double c,
                                                     const Eigen::Matrix3Xd& d) {
-  Eigen::Matrix3Xd full = Eigen::Matrix3Xd::Zero(3, num_markers()), difference, response;
-  for (std::size_t m = 0; m < coupled_.size(); ++m) full.col(coupled_[m]) = d.col(long(m));
-  compute_forces(x_n_ + full);
+  Eigen::Matrix3Xd difference, response;
+  compute_forces(displaced(x_n_, coupled_, d));
   gather(Eigen::Matrix3Xd(force_ - force_n_), difference);
   response_density_.resize(static_cast<std::size_t>(mesh_.num_local()));
   transfer_.spread(as_points(difference), response_density_);
@@ -284,9 +294,7 @@ void ImmersedStructure::newton_lagged(const Eigen::Matrix3Xd& b, double c, Impli
     residual = b;
   }
   while (newton_iterations_ < options_.implicit_newton_iterations) {
-    Eigen::Matrix3Xd full = Eigen::Matrix3Xd::Zero(3, num_markers());
-    for (std::size_t m = 0; m < coupled_.size(); ++m) full.col(coupled_[m]) = d.col(long(m));
-    assemble_stiffness(x_n_ + full);
+    assemble_stiffness(displaced(x_n_, coupled_, d));
     const auto update = implicit_marker_displacement(transfer_, apply, residual, c);
     solve.iterations += update.iterations;
     ++newton_iterations_;
@@ -307,6 +315,8 @@ void ImmersedStructure::newton_lagged(const Eigen::Matrix3Xd& b, double c, Impli
     }
     if (step < 0 || step <= options_.implicit_newton_tolerance * d.norm()) break;
   }
+  // The forces (and min det F) of the accepted iterate, not of the last rejected trial.
+  compute_forces(displaced(x_n_, coupled_, d));
 }
 
 void ImmersedStructure::implicit_finish(double dt, flow::FlowState* state) {
