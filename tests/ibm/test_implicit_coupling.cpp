@@ -203,7 +203,7 @@ TEST_CASE("limit table of the implicit variants" * doctest::skip()) {
 //   16x (consistent: unstable from 2x, the fluid keeps the lagged response); checked at 12x.
 // The multiples are of the per-stage bound at the 1.2 stretch for both (run_at's probe).
 // - Newton on the lagged solve's force (IMPLICIT_NEWTON=10 in the table): stable up to 5x at the
-//   1.2 stretch (speed 1e-4 of its peak after 100 steps), where the lagged solve alone fails
+//   1.2 stretch (speed 2.4e-4 of its peak after 100 steps), where the lagged solve alone fails
 //   within 3 steps; from 6x the Newton systems stop converging (BiCGSTAB) or an element inverts.
 //   Checked at 5x.
 TEST_CASE("Newton iterations widen the lagged solve's stability limit") {
