@@ -209,12 +209,13 @@ std::string DiracTransfer::build_support(int marker, const Eigen::Vector3d& x, i
     for (const auto& t : images_) {
       grid_.in_box(x - t, radius, found_);  // node j at its image x_j + t lies in the box
       for (int n : found_) {
-        if (outer_layer_ > 0 && mesh.ghost_layer[n] == outer_layer_)
+        if (!mesh.frontier.empty() && mesh.frontier[n])
           return fmt::format(
-              "{}: its kernel support (half-width {:.6g} m) reaches the outermost ghost layer ({}) "
-              "on rank {}, so nodes beyond it would be missed; distribute the mesh with more "
-              "ghost layers or use a narrower kernel",
-              where(marker, x), radius, outer_layer_, mesh.comm.rank());
+              "{}: its kernel support (half-width {:.6g} m) reaches the edge of rank {}'s ghost "
+              "nodes (ghost layer {} of at most {}), so nodes beyond it would be missed; widen "
+              "the ghost region (partition.ghost_distance, partition.ghost_layers) or use a "
+              "narrower kernel",
+              where(marker, x), radius, mesh.comm.rank(), mesh.ghost_layer[n], outer_layer_);
         const Eigen::Vector3d y = mesh.position[n] + t - x;
         const double p = kernel_3d(shape, y, h);
         if (p <= 0.0) continue;

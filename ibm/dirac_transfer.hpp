@@ -129,7 +129,7 @@ class DiracTransfer {
   TransferOptions options_;
   core::BucketGrid grid_;
   double h_max_ = 0.0;
-  int outer_layer_ = 0;                   // outermost ghost layer of the distribution (0: none)
+  int outer_layer_ = 0;                   // deepest ghost layer of the distribution (0: none)
   std::vector<Eigen::Vector3d> periods_;  // independent periodic shifts seen on local edges
   std::vector<Eigen::Vector3d> images_;   // all sums of -1/0/+1 times each period (0 first)
   // Boundary nodes: outward unit normal (sum of the node's boundary areas) and the patch of its

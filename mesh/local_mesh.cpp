@@ -77,7 +77,7 @@ std::vector<int> partition_nodes(const DualMetrics& metrics, const core::Comm& c
 }
 
 LocalMesh distribute(const Mesh& mesh, const DualMetrics& m, MPI_Comm mpi_comm,
-                     const PartitionOptions& options) {
+                     const PartitionOptions& options, const GhostRegion& extra) {
   if (options.ghost_layers < 1)
     throw std::invalid_argument("partition: ghost_layers must be at least 1");
   LocalMesh local;
@@ -110,22 +110,54 @@ LocalMesh distribute(const Mesh& mesh, const DualMetrics& m, MPI_Comm mpi_comm,
   for (GlobalIndex d = 0; d < n; ++d)
     if (part[d] == comm.rank()) add_local(d, 0);
   local.num_owned = local.num_local();
+  // Layers 1..ghost_layers take every neighbour. Past them only nodes inside the box nearer
+  // than `reach` to the owned node they were reached from (`origin`) are expanded, until a layer
+  // has none on any rank: its nodes are the fringe beyond the distance.
+  const double reach = extra.distance;
+  std::vector<GlobalIndex> origin(local.dual_node.begin(), local.dual_node.end());
+  std::vector<char> expand(local.dual_node.size(), 1);
   std::size_t layer_begin = 0, layer_end = local.dual_node.size();
-  for (int layer = 1; layer <= options.ghost_layers; ++layer) {
-    std::vector<GlobalIndex> found;
+  for (int layer = 1;; ++layer) {
+    const bool beyond = layer > options.ghost_layers;
+    std::vector<std::pair<GlobalIndex, GlobalIndex>> found;  // node, its origin
+    auto distance = [&](GlobalIndex a, GlobalIndex b) {
+      return (m.position[a] - m.position[b]).norm();
+    };
     for (std::size_t i = layer_begin; i < layer_end; ++i) {
+      if (!expand[i]) continue;
       const GlobalIndex d = local.dual_node[i];
-      for (idx_t a = g.xadj[d]; a < g.xadj[d + 1]; ++a)
-        if (local_of[g.adjncy[a]] == -1) {
-          found.push_back(g.adjncy[a]);
-          local_of[g.adjncy[a]] = -2;  // claimed in this layer
+      for (idx_t a = g.xadj[d]; a < g.xadj[d + 1]; ++a) {
+        const GlobalIndex e = g.adjncy[a];
+        if (local_of[e] <= -2) {  // claimed in this layer: keep the nearer origin
+          auto& o = found[static_cast<std::size_t>(-local_of[e] - 2)].second;
+          if (distance(e, origin[i]) < distance(e, o)) o = origin[i];
+          continue;
         }
+        if (local_of[e] != -1) continue;
+        if (beyond && !extra.box.contains(m.position[e])) continue;
+        local_of[e] = -2 - static_cast<int>(found.size());
+        found.emplace_back(e, origin[i]);
+      }
     }
     std::sort(found.begin(), found.end(),
-              [&](GlobalIndex a, GlobalIndex b) { return new_id[a] < new_id[b]; });
-    for (GlobalIndex d : found) add_local(d, layer);
+              [&](const auto& a, const auto& b) { return new_id[a.first] < new_id[b.first]; });
+    bool near = false;
+    for (const auto& [d, from] : found) {
+      add_local(d, layer);
+      origin.push_back(from);
+      const bool is_near = extra.box.contains(m.position[d]) && distance(d, from) < reach;
+      expand.push_back(layer < options.ghost_layers || is_near);
+      near = near || is_near;
+    }
     layer_begin = layer_end;
     layer_end = local.dual_node.size();
+    if (layer >= options.ghost_layers && (!(reach > 0) || !comm.any(near))) break;
+  }
+  local.frontier.assign(local.dual_node.size(), 0);
+  for (std::size_t i = local.num_owned; i < local.dual_node.size(); ++i) {
+    const GlobalIndex d = local.dual_node[i];
+    for (idx_t a = g.xadj[d]; a < g.xadj[d + 1]; ++a)
+      if (local_of[g.adjncy[a]] < 0) local.frontier[i] = 1;
   }
 
   const int nl = local.num_local();

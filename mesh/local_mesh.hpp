@@ -3,6 +3,7 @@
 // the median-dual metrics restricted to them and the halo that keeps ghosts up to date.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <array>
 #include <string>
 #include <string_view>
@@ -30,13 +31,24 @@ struct PartitionOptions {
   PartitionMethod method = PartitionMethod::metis;
 };
 
+// Ghosts beyond PartitionOptions::ghost_layers: nodes inside `box` get more layers until every
+// node there within `distance` of an owned node is local (0: none). The immersed kernels'
+// supports need this depth in metres, not in layers: small cells near a rigid frame put many
+// layers inside one kernel (run/immersed_ghosts.hpp sets it).
+struct GhostRegion {
+  double distance = 0;
+  Eigen::AlignedBox3d box;
+};
+
 struct LocalMesh {
   core::Comm comm;
   int num_owned = 0;                   // local nodes [0, num_owned) are owned
   std::vector<GlobalIndex> global_id;  // hypre numbering; owned ids are contiguous
   GlobalIndex first_owned = 0;         // global id of local node 0
   GlobalIndex global_nodes = 0;
-  std::vector<int> ghost_layer;        // 0 for owned nodes
+  std::vector<int> ghost_layer;  // 0 for owned nodes
+  // 1 for ghost nodes with a mesh neighbour that is not local: the edge of what this rank sees.
+  std::vector<char> frontier;
   std::vector<GlobalIndex> dual_node;  // index in the replicated DualMetrics
 
   std::vector<Eigen::Vector3d> position;
@@ -73,7 +85,7 @@ struct LocalMesh {
 
 // Partitions the dual-node graph (METIS k-way on rank 0, broadcast) and builds this rank's part.
 LocalMesh distribute(const Mesh& mesh, const DualMetrics& metrics, MPI_Comm comm,
-                     const PartitionOptions& options = {});
+                     const PartitionOptions& options = {}, const GhostRegion& extra = {});
 
 // Owner rank of every dual node (same on all ranks); exposed for tests and output.
 std::vector<int> partition_nodes(const DualMetrics& metrics, const core::Comm& comm,

@@ -17,6 +17,8 @@
 #include "io/checkpoint.hpp"
 #include "io/field_output.hpp"
 #include "mesh/dual_metrics.hpp"
+#include "mesh/halo_size.hpp"
+#include "run/immersed_ghosts.hpp"
 #include "run/immersed_run.hpp"
 #include "run/phase.hpp"
 #include "run/restart_continuity.hpp"
@@ -98,6 +100,7 @@ struct Simulation::Parts {
   mesh::DualMetrics metrics;
   mesh::LocalMesh local;
   mesh::PartitionOptions partition;
+  mesh::GhostRegion ghosts;  // near the immersed structures
   scene::LesSetup les;
   std::optional<analysis::RunAnalysis> analysis;
   std::optional<run::ImmersedRun> immersed;
@@ -182,12 +185,22 @@ void Simulation::Parts::write_checkpoint(const flow::FlowState& state, std::int6
 }
 
 void Simulation::Parts::print_summary(const scene::Scene& s, double rho, double viscosity) const {
+  const mesh::HaloSize halo = mesh::halo_size(local);  // collective
   if (rank != 0 || !print) return;
   fmt::print(
-      "mesh: {} nodes ({} dual nodes), {} cells; partition: {} ranks, {} ghost layers, "
+      "mesh: {} nodes ({} dual nodes), {} cells; partition: {} ranks, {} ghost layers{}, "
       "method {}\n",
       mesh.num_nodes(), metrics.num_nodes(), mesh.num_cells(), local.comm.size(),
-      partition.ghost_layers, mesh::to_string(partition.method));
+      partition.ghost_layers,
+      ghosts.distance > 0 ? fmt::format(" (near the structures: {:.3g} m, deepest layer {})",
+                                        ghosts.distance, halo.deepest_layer)
+                          : "",
+      mesh::to_string(partition.method));
+  if (local.comm.size() > 1)
+    fmt::print(
+        "halo: owned nodes per rank {}..{}; per rank at most {} ghost nodes, {} neighbours, {} "
+        "values sent per scalar exchange\n",
+        halo.owned_min, halo.owned_max, halo.ghosts_max, halo.neighbours_max, halo.sent_max);
   const auto law = s.get<std::string>("flow.viscosity_model");
   fmt::print("flow: rho {:.6g} kg/m3, {}, scheme {}, initial state {}\n", rho,
              law == "newtonian" ? fmt::format("nu {:.6g} m2/s", viscosity)
@@ -254,9 +267,11 @@ Simulation::Simulation(const scene::Scene& scene_in, const RunRequest& request, 
   p.run_path = dir;  // prepared below, once a checkpoint to restart from has been opened
 
   p.partition = scene::partition_options(scene);
+  p.ghosts =
+      marker_ghost_region(immersed_setup, p.metrics, scene.get<double>("partition.ghost_distance"));
   phase.next(fmt::format("partitioning the mesh ({} dual nodes, partition.method = {})",
                          p.metrics.num_nodes(), mesh::to_string(p.partition.method)));
-  p.local = mesh::distribute(p.mesh, p.metrics, comm, p.partition);
+  p.local = mesh::distribute(p.mesh, p.metrics, comm, p.partition, p.ghosts);
   phase.next(
       fmt::format("setting up the LES model, the analysis and the structures ({} local nodes)",
                   p.local.num_local()));

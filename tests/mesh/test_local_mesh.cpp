@@ -71,3 +71,63 @@ TEST_CASE("distributed dual metrics and halo") {
     }
   }
 }
+
+// partition ghost distance (the immersed kernels' depth, run/immersed_ghosts.hpp): inside the
+// box every node nearer than the distance to an owned node is local, whatever the layer count;
+// outside it the ghosts stop at ghost_layers; the frontier flags exactly the ghosts with a
+// neighbour that is not local.
+TEST_CASE("ghost region by distance inside a box") {
+  mesh::BoxSpec spec;
+  spec.cell_type = mesh::parse_box_cell_type("tetra");
+  spec.cells = {16, 12, 10};
+  spec.length = Eigen::Vector3d(1.0, 0.6, 0.5);
+  spec.perturbation = 0.2;
+  const auto mesh = mesh::generate_box(spec);
+  const auto metrics = mesh::compute_dual_metrics(mesh);
+  const double h = 1.0 / 16, reach = 4.5 * h;  // several layers of these cells
+  const mesh::PartitionOptions options{1, mesh::PartitionMethod::metis};
+  const mesh::GhostRegion extra{
+      reach, Eigen::AlignedBox3d(Eigen::Vector3d(0.3, -1, -1), Eigen::Vector3d(0.7, 2, 2))};
+  const auto local = mesh::distribute(mesh, metrics, MPI_COMM_WORLD, options, extra);
+  const auto fixed =
+      mesh::distribute(mesh, metrics, MPI_COMM_WORLD, {1, mesh::PartitionMethod::metis});
+  REQUIRE(local.frontier.size() == local.dual_node.size());
+
+  const std::int64_t n = metrics.num_nodes();
+  std::vector<int> local_of(static_cast<std::size_t>(n), -1);
+  for (int i = 0; i < local.num_local(); ++i) local_of[local.dual_node[i]] = i;
+  int missing = 0, too_deep_outside = 0, wrong_frontier = 0;
+  // The box less the distance: nodes there near an owned node must be local. The BFS measures
+  // from the owned node it came from, an upper bound of the true distance; one cell of slack.
+  for (std::int64_t d = 0; d < n; ++d) {
+    const Eigen::Vector3d& x = metrics.position[d];
+    double nearest = 1e300;
+    for (int i = 0; i < local.num_owned; ++i)
+      nearest = std::min(nearest, (metrics.position[local.dual_node[i]] - x).norm());
+    if (local.num_owned > 0 && extra.box.contains(x) && nearest < reach - h && local_of[d] < 0)
+      ++missing;
+    if (local_of[d] >= local.num_owned && !extra.box.contains(x) &&
+        local.ghost_layer[local_of[d]] > options.ghost_layers)
+      ++too_deep_outside;
+  }
+  for (int i = local.num_owned; i < local.num_local(); ++i) {
+    bool open = false;
+    for (const auto& e : metrics.edges)
+      if (e[0] == local.dual_node[i] || e[1] == local.dual_node[i])
+        open = open || local_of[e[0] == local.dual_node[i] ? e[1] : e[0]] < 0;
+    wrong_frontier += (local.frontier[i] != 0) != open;
+  }
+  CHECK(missing == 0);
+  CHECK(too_deep_outside == 0);
+  CHECK(wrong_frontier == 0);
+  if (local.comm.size() > 1) {
+    // More ghosts than one layer gives, and deeper layers inside the box.
+    CHECK(local.comm.sum(std::int64_t(local.num_local() - local.num_owned)) >
+          local.comm.sum(std::int64_t(fixed.num_local() - fixed.num_owned)));
+    int deepest = 0;
+    for (int layer : local.ghost_layer) deepest = std::max(deepest, layer);
+    CHECK(local.comm.max(std::int64_t(deepest)) >= 4);
+  }
+  // Owned nodes and the flow's halo are those of the fixed partition.
+  CHECK(local.num_owned == fixed.num_owned);
+}

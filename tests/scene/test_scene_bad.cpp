@@ -46,7 +46,7 @@ const Bad bad_scenes[] = {
   {"bool_as_string.toml", "6:13: key 'run.overwrite': expected true or false, got the string \"yes\" (accepted: true, false)"},
   {"statistics_plane_without_normal.toml", "8:13: key 'statistics.mid.normal': required key is missing; expected an array of 3 numbers (accepted: 3 values)"},
   {"unknown_time_scheme.toml", "6:10: key 'time.scheme': unknown value \"rk4_clasic\"; did you mean \"rk4_classic\"? (accepted: \"rk4_jameson\", \"rk4_classic\")"},
-  {"section_as_value.toml", "2:13: key 'partition': expected a table, got the integer 2 (accepted: keys ghost_layers, method)"},
+  {"section_as_value.toml", "2:13: key 'partition': expected a table, got the integer 2 (accepted: keys ghost_layers, ghost_distance, method)"},
 };
 // clang-format on
 

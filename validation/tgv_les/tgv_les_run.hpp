@@ -40,8 +40,9 @@ struct TgvLesResult {
   std::vector<double> max_nu_sgs_over_nu;  // after every step (index 0: 0)
   int steps = 0;
   double dt = 0;
-  double cpu_seconds = 0;  // summed over ranks
-  double wall_seconds = 0;
+  double cpu_seconds = 0;        // summed over ranks
+  double wall_seconds = 0;       // with set-up
+  double loop_wall_seconds = 0;  // of the time loop (rank 0's)
   // Max over the steps of dt (rc/2.83 + rv/2.79) with nu + max nu_sgs (flow/run_diagnostics.hpp,
   // derived for central2; central4's convective spectral radius is ~1.37x larger).
   double max_stability_number = 0;
