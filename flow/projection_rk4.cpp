@@ -368,7 +368,8 @@ std::pair<double, Eigen::Vector3d> ProjectionRK4::divergence_peak(const std::vec
   int worst_node = -1;
   for (int i = 0; i < mesh_.num_owned; ++i) {
     if (!skip.empty() && skip[i]) continue;
-    if (const double w = std::abs(div_[i]) * std::cbrt(mesh_.volume[i]); w > worst.value)
+    // h = cbrt(volume) of the dual metrics: no cube root per node and step.
+    if (const double w = std::abs(div_[i]) * mesh_.h[i]; w > worst.value)
       worst.value = w, worst_node = i;
   }
   // The rank holding the maximum (the lowest on a tie) sends its node's position, so that a run
