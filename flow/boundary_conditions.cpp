@@ -373,7 +373,10 @@ void BoundaryConditions::advect_outlets(const VectorField& w, const VectorField&
                                         double dt_stage) {
   if (!has_convective_) return;
   update_roles(t);
-  gradient(mesh_, w, grad_);
+  // Only the outlet nodes' gradients are read: their edges, not the whole mesh's (roles swap
+  // with the flow direction, so the subset is every boundary node's).
+  if (!outlet_gradient_) outlet_gradient_ = gradient_edges(mesh_, nodes_);
+  gradient_at(mesh_, *outlet_gradient_, w, grad_);
   // Automatic convection speed: total imposed inflow over the total outflow area.
   double inflow = 0, outflow_area = 0;
   for (std::size_t p = 0; p < patches_.size(); ++p) {

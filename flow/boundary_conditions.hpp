@@ -42,6 +42,7 @@
 
 #include <Eigen/Dense>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -217,11 +218,12 @@ class BoundaryConditions {
     return !slip_[k] && (role_[k] == Role::convective || role_[k] == Role::pressure);
   }
   std::vector<Eigen::Vector3d> outlet_area_;
-  std::vector<int> pressure_owner_;      // per local node, see pressure_owner()
-  std::vector<double> outlet_pressure_;  // per patch: lumped outlets' held pressure
-  VectorField response_;                 // per boundary node: flux_response() scratch
-  VectorField held_;                     // per boundary node: convective-outlet value
-  TensorField grad_;
+  std::vector<int> pressure_owner_;                // per local node, see pressure_owner()
+  std::vector<double> outlet_pressure_;            // per patch: lumped outlets' held pressure
+  VectorField response_;                           // per boundary node: flux_response() scratch
+  VectorField held_;                               // per boundary node: convective-outlet value
+  TensorField grad_;                               // at the boundary nodes (advect_outlets)
+  std::optional<GradientSubset> outlet_gradient_;  // their edges (first advect_outlets)
   std::vector<double> sums_;
 };
 

@@ -57,17 +57,48 @@ void gradient(const mesh::LocalMesh& mesh, const ScalarField& phi, VectorField& 
   finish_field(mesh, grad, 3);
 }
 
+namespace {
+// One edge's share of the velocity gradient and a node's closure: shared by gradient() and
+// gradient_at() so that both give the same bits.
+inline void add_gradient_edge(const mesh::LocalMesh& mesh, int e, const VectorField& u,
+                              TensorField& grad) {
+  const auto [j, k] = mesh.edges[e];
+  const Eigen::Matrix3d f = 0.5 * (u[k] - u[j]) * mesh.edge_normal[e].transpose();
+  grad[j] += f;
+  grad[k] += f;
+}
+inline void close_gradient(const mesh::LocalMesh& mesh, int i, TensorField& grad) {
+  grad[i] = grad[i] * mesh.gradient_correction[i].transpose() / mesh.volume[i];
+}
+}  // namespace
+
 void gradient(const mesh::LocalMesh& mesh, const VectorField& u, TensorField& grad) {
   check_size(mesh, u.size(), "u");
   grad.assign(mesh.num_local(), Eigen::Matrix3d::Zero());
-  for (int e = 0; e < mesh.num_owned_edges; ++e) {
-    const auto [j, k] = mesh.edges[e];
-    const Eigen::Matrix3d f = 0.5 * (u[k] - u[j]) * mesh.edge_normal[e].transpose();
-    grad[j] += f;
-    grad[k] += f;
-  }
-  for (int i = 0; i < mesh.num_owned; ++i)
-    grad[i] = grad[i] * mesh.gradient_correction[i].transpose() / mesh.volume[i];
+  for (int e = 0; e < mesh.num_owned_edges; ++e) add_gradient_edge(mesh, e, u, grad);
+  for (int i = 0; i < mesh.num_owned; ++i) close_gradient(mesh, i, grad);
+  finish_field(mesh, grad, 9);
+}
+
+GradientSubset gradient_edges(const mesh::LocalMesh& mesh, const std::vector<int>& nodes) {
+  GradientSubset s;
+  std::vector<char> in(mesh.num_local(), 0);
+  for (const int j : nodes)
+    if (j < mesh.num_owned && !in[j]) in[j] = 1, s.nodes.push_back(j);
+  for (int e = 0; e < mesh.num_owned_edges; ++e)
+    if (in[mesh.edges[e][0]] || in[mesh.edges[e][1]]) s.edges.push_back(e);
+  return s;
+}
+
+void gradient_at(const mesh::LocalMesh& mesh, const GradientSubset& subset, const VectorField& u,
+                 TensorField& grad) {
+  check_size(mesh, u.size(), "u");
+  grad.resize(mesh.num_local(), Eigen::Matrix3d::Zero());
+  // Both ends start from zero, so the other ends' partial sums stay bounded between calls.
+  for (const int e : subset.edges)
+    for (const int j : mesh.edges[e]) grad[j].setZero();
+  for (const int e : subset.edges) add_gradient_edge(mesh, e, u, grad);
+  for (const int i : subset.nodes) close_gradient(mesh, i, grad);
   finish_field(mesh, grad, 9);
 }
 

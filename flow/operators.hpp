@@ -37,6 +37,19 @@ void gradient(const mesh::LocalMesh& mesh, const ScalarField& phi, VectorField& 
 void gradient(const mesh::LocalMesh& mesh, const VectorField& u, TensorField& grad);
 void divergence(const mesh::LocalMesh& mesh, const VectorField& u, ScalarField& div);
 
+// The velocity gradient of gradient() at a few nodes only (e.g. the boundary nodes of
+// convective outlets), at the cost of their edges: build the edge list once with
+// gradient_edges(mesh, nodes) (the owned ones among `nodes`), then gradient_at() gives those
+// nodes bit for bit the values of gradient() (the same edges in the same order), and their
+// ghost copies through the halo; other entries of `grad` are left meaningless.
+struct GradientSubset {
+  std::vector<int> nodes;  // owned
+  std::vector<int> edges;  // ascending, each touching one of `nodes`
+};
+GradientSubset gradient_edges(const mesh::LocalMesh& mesh, const std::vector<int>& nodes);
+void gradient_at(const mesh::LocalMesh& mesh, const GradientSubset& subset, const VectorField& u,
+                 TensorField& grad);
+
 // The same gradients at owned and layer-1 ghost nodes from local values only (a loop over all
 // local edges instead of a halo exchange; layer-2 and deeper values are partial): for the
 // 4th-order operators, whose edge corrections need G at both ends. `grad` is resized.

@@ -194,6 +194,9 @@ PressurePoisson::PressurePoisson(const mesh::LocalMesh& mesh, const std::vector<
   }
   HYPRE_BoomerAMGSetStrongThreshold(h.amg, options.strong_threshold);
   HYPRE_BoomerAMGSetAggNumLevels(h.amg, options.aggressive_levels);
+  // Restriction as a stored P^T: the V-cycle's transposed matvec (a scatter) becomes a plain
+  // row-wise one; the same operator, only the summation order differs.
+  HYPRE_BoomerAMGSetKeepTranspose(h.amg, 1);
   HYPRE_BoomerAMGSetNumSweeps(h.amg, 1);
   HYPRE_BoomerAMGSetMaxIter(h.amg, 1);
   HYPRE_BoomerAMGSetTol(h.amg, 0.0);

@@ -75,7 +75,7 @@ void ProjectionRK4::momentum_rhs(const VectorField& u, const EdgeField& flux, Ve
   if (options_.subgrid_viscosity || rheology_) {
     // The gradient's ghosts are valid, so nu_sgs and nu(gamma_dot) are computed on ghosts too:
     // no exchange.
-    gradient(mesh_, u, grad_u_);
+    velocity_gradient(u);
     if (options_.subgrid_viscosity) {
       nu_sgs_.resize(grad_u_.size());
       options_.subgrid_viscosity(stage, grad_u_, nu_sgs_);
@@ -83,7 +83,7 @@ void ProjectionRK4::momentum_rhs(const VectorField& u, const EdgeField& flux, Ve
     total_viscosity();
     viscous_stress(mesh_, weights_, nu_eff_, u, grad_u_, rhs);
   } else if (options_.viscosity > 0) {
-    gradient(mesh_, u, grad_u_);
+    velocity_gradient(u);
     if (order4_)
       order4_->viscous(options_.viscosity, u, grad_u_, rhs);
     else
@@ -99,6 +99,15 @@ void ProjectionRK4::momentum_rhs(const VectorField& u, const EdgeField& flux, Ve
     else if (options_.viscosity > 0 || options_.subgrid_viscosity)
       options_.boundary->drop_outlet_viscous_flux(grad_u_, options_.viscosity, nu_sgs_, rhs);
   }
+}
+
+void ProjectionRK4::velocity_gradient(const VectorField& u) {
+  if (stage_gradient_known_) {
+    std::swap(grad_u_, grad_flux_);  // the same gradient(mesh_, u), already computed
+    stage_gradient_known_ = false;
+    return;
+  }
+  gradient(mesh_, u, grad_u_);
 }
 
 void ProjectionRK4::projection_flux(const VectorField& u, EdgeField& flux) {
@@ -306,7 +315,11 @@ StepReport ProjectionRK4::step(FlowState& state, double dt) {
       scheme_flux(stage_, stage_flux_);
       for (std::size_t e = 0; e < stage_flux_.size(); ++e) stage_flux_[e] += flux_offset_[e];
     }
+    // central4's face flux of stage_ (scheme_flux, or convective_flux at k = 0 on a copy of
+    // the same velocity) has just left gradient(stage_) in grad_flux_.
+    stage_gradient_known_ = options_.scheme == ConvectionKind::central4 && !options_.project_stages;
     momentum_rhs(stage_, k > 0 ? stage_flux_ : first_flux, rhs_, k);
+    stage_gradient_known_ = false;  // laminar inviscid runs do not take it
     if (body_force_) {
       force_.resize(static_cast<std::size_t>(n));
       body_force_(k, state.time + rk_.c[k] * dt, stage_, force_);
@@ -368,7 +381,8 @@ std::pair<double, Eigen::Vector3d> ProjectionRK4::divergence_peak(const std::vec
   int worst_node = -1;
   for (int i = 0; i < mesh_.num_owned; ++i) {
     if (!skip.empty() && skip[i]) continue;
-    if (const double w = std::abs(div_[i]) * std::cbrt(mesh_.volume[i]); w > worst.value)
+    // h = cbrt(volume) of the dual metrics: no cube root per node and step.
+    if (const double w = std::abs(div_[i]) * mesh_.h[i]; w > worst.value)
       worst.value = w, worst_node = i;
   }
   // The rank holding the maximum (the lowest on a tie) sends its node's position, so that a run

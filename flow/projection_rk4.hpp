@@ -256,6 +256,10 @@ class ProjectionRK4 {
   VectorField rhs_sum_, stage_sum_;  // rk4_classic: sum b_k R(w_k); sum b_k w_k (outlets)
   ScalarField stage_dp_;             // project_stages: dp of the current stage
   TensorField grad_u_;
+  // grad_u_ = gradient(mesh_, u), or taken from grad_flux_ when stage_gradient_known_ (set by
+  // step() for the one momentum_rhs call that follows central4's face flux of the same stage).
+  void velocity_gradient(const VectorField& u);
+  bool stage_gradient_known_ = false;
   ScalarField nu_sgs_, nu_eff_;  // LES or non-Newtonian: subgrid and total viscosity
   bool rheology_ = false;        // options_.rheology is not Newtonian
   // nu_eff_ = nu(gamma_dot(grad_u_)) (or the constant nu) + nu_sgs_ at every local node.

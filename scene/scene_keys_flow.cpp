@@ -171,10 +171,12 @@ void declare_flow_keys(Schema& s) {
       .unit_of("-")
       .doc("PCG iteration cap; reaching it without the tolerance stops the run");
   s.real("poisson.strong_threshold")
-      .def(0.5)
+      .def(0.25)
       .in_range(0, 1)
       .unit_of("-")
-      .doc("BoomerAMG strength threshold (0.5 is hypre's advice in 3D)");
+      .doc("BoomerAMG strength threshold (0.25: lower operator complexity and fewer PCG "
+           "iterations than hypre's 3D advice 0.5 on our meshes, "
+           "validation/notes/flow_throughput.md)");
   // The preconditioner of PCG must be a fixed symmetric positive definite operator: BoomerAMG's
   // V-cycle is one when its restriction is P^T (hypre's default, any interpolation) and its
   // smoother is symmetric (the same on the down and up cycle). The lists keep the values hypre

@@ -14,11 +14,15 @@
 // OUT/summary.csv; validation/bench/tgv_re1600_plot.py draws -dE/dt(t) and error vs CPU time.
 // Usage: [mpiexec -n R] bench_tgv_re1600 [--n 32] [--scheme central2|central4] [--cfl 0.5]
 //        [--t-end 10] [--operators order2|order4] [--model none|sigma|wale|smagorinsky]
-//        [--out bench-results/tgv_re1600]
+//        [--out bench-results/tgv_re1600] [--set key=value ...] [--triad]
+// --set: further scene overrides (e.g. poisson.strong_threshold=0.25), as `valsalva run --set`.
+// --triad: also measure the STREAM-like triad bandwidth of one core (stream_triad.hpp) and print
+// it beside the node-steps per second, for the memory-bandwidth bound of the edge loops.
 // --operators order4: the 4th-order gradient, divergence and viscous term
 // (ProjectionOptions::fourth_order_operators); the CSV name and summary row carry "+op4".
 // Measured numbers: validation/notes/bench_tgv_re1600.md.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <mpi.h>
 #include <sys/resource.h>
 
@@ -34,6 +38,8 @@
 #include "les/sgs_model.hpp"
 #include "run/data_dir.hpp"
 #include "validation/bench/bench_cli.hpp"
+#include "validation/bench/bench_util.hpp"
+#include "validation/bench/stream_triad.hpp"
 #include "validation/tgv_les/tgv_les_run.hpp"
 
 using namespace valsalva;
@@ -47,6 +53,8 @@ struct Args {
   std::string model = "none";        // les.model
   double cfl = 0.5, t_end = 10;
   std::filesystem::path out = "bench-results/tgv_re1600";
+  std::vector<std::string> overrides;  // --set
+  bool triad = false;
 };
 
 }  // namespace
@@ -68,6 +76,8 @@ int main(int argc, char** argv) {
                  "Subgrid model (les.model; not \"none\": \"+MODEL\" in the names)")
       ->check(CLI::IsMember(les::sgs_kind_names()));
   app.add_option("--out", args.out, "Folder of the CSV files");
+  app.add_option("--set", args.overrides, "Further scene override key=value (repeatable)");
+  app.add_flag("--triad", args.triad, "Also measure the STREAM-like triad bandwidth");
   return bench::mpi_main(app, argc, argv, [&](int rank, int size) {
     const bool order4 = args.operators == "order4";
     const std::string label =
@@ -79,6 +89,7 @@ int main(int argc, char** argv) {
     spec.cfl = args.cfl;
     spec.t_end = args.t_end;
     spec.fourth_order_operators = order4;
+    spec.overrides = args.overrides;
     const auto r = validation::run_tgv_les(spec, args.n, MPI_COMM_WORLD);
     if (r.blow_up_time > 0)
       throw std::runtime_error(fmt::format(
@@ -111,9 +122,8 @@ int main(int argc, char** argv) {
                "poisson_its_mean,poisson_its_max,peak_rss_kb,bytes_per_node,"
                "dissipation_error_max_rel,peak,peak_time\n";
       sum << fmt::format(
-          "{},{},{},{},{:.6g},{:.3f},{:.3f},{:.3f},{:.4g},{:.2f},{},{:.0f},{:.0f},{:.5f},{:.6f},{:."
-          "3f}"
-          "\n",
+          "{},{},{},{},{:.6g},{:.3f},{:.3f},{:.3f},{:.4g},{:.2f},{},{:.0f},{:.0f},"
+          "{:.5f},{:.6f},{:.3f}\n",
           label, args.n, size, r.steps, r.dt, r.wall_seconds, r.loop_wall_seconds, r.cpu_seconds,
           node_steps / r.cpu_seconds, r.poisson_iterations_mean, r.poisson_iterations_max, peak_kb,
           bytes_per_node, d.max_error, d.peak, d.peak_time);
@@ -129,6 +139,17 @@ int main(int argc, char** argv) {
           r.cpu_seconds, node_steps / r.cpu_seconds, r.poisson_iterations_mean,
           r.poisson_iterations_max, peak_kb / 1024, bytes_per_node, d.max_error, d.reference_peak,
           d.peak, d.peak_time, csv.string());
+      fmt::print("  {}\n", bench::machine());
+      if (!args.overrides.empty()) fmt::print("  overrides: {}\n", fmt::join(args.overrides, " "));
+      fmt::print("  final mean kinetic energy {:.17e}\n", r.energy.back());
+    }
+    if (args.triad) {
+      // After the run, one rank at a time would understate a shared bus: every rank measures.
+      const auto triad = bench::stream_triad();
+      const double per_core = comm.sum(triad.bytes_per_second) / size;
+      if (rank == 0)
+        fmt::print("  STREAM-like triad: {:.2f} GB/s per core ({} ranks at once; checksum {:g})\n",
+                   per_core / 1e9, size, triad.checksum);
     }
   });
 }

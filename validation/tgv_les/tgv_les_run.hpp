@@ -33,6 +33,7 @@ struct TgvLesSpec {
   double cfl = 0.5;                 // dt = t_end / ceil(t_end / (cfl h / V0))
   double t_end = 10;
   bool fourth_order_operators = false;  // flow.fourth_order_operators (refused with a model)
+  std::vector<std::string> overrides;   // further "key=value" scene overrides, applied last
 };
 
 struct TgvLesResult {
@@ -40,9 +41,9 @@ struct TgvLesResult {
   std::vector<double> max_nu_sgs_over_nu;  // after every step (index 0: 0)
   int steps = 0;
   double dt = 0;
-  double cpu_seconds = 0;        // summed over ranks
-  double wall_seconds = 0;       // with set-up
-  double loop_wall_seconds = 0;  // of the time loop (rank 0's)
+  double cpu_seconds = 0;   // of the time loop without these per-step records, summed over ranks
+  double wall_seconds = 0;  // with set-up
+  double loop_wall_seconds = 0;  // of the time loop (rank 0's; the per-step records included)
   // Max over the steps of dt (rc/2.83 + rv/2.79) with nu + max nu_sgs (flow/run_diagnostics.hpp,
   // derived for central2; central4's convective spectral radius is ~1.37x larger).
   double max_stability_number = 0;
