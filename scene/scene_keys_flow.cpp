@@ -174,9 +174,10 @@ void declare_flow_keys(Schema& s) {
       .def(0.25)
       .in_range(0, 1)
       .unit_of("-")
-      .doc("BoomerAMG strength threshold (0.25: lower operator complexity and fewer PCG "
-           "iterations than hypre's 3D advice 0.5 on our meshes, "
-           "validation/notes/flow_throughput.md)");
+      .doc(
+          "BoomerAMG strength threshold (0.25: lower operator complexity and fewer PCG "
+          "iterations than hypre's 3D advice 0.5 on our meshes, "
+          "validation/notes/flow_throughput.md)");
   // The preconditioner of PCG must be a fixed symmetric positive definite operator: BoomerAMG's
   // V-cycle is one when its restriction is P^T (hypre's default, any interpolation) and its
   // smoother is symmetric (the same on the down and up cycle). The lists keep the values hypre
