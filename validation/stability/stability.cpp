@@ -2,15 +2,15 @@
 // periodic flow at the largest time step the RK4 stability estimate admits (sigma = 1 in
 // flow/run_diagnostics.hpp, recomputed every step), with the non-dissipative centred scheme, on
 // split tetrahedra and on 20 % perturbed tetrahedra, the latter with the solver's default
-// incremental projection (reported) and with periodic_pressure_damping (asserted).
+// incremental projection and with periodic_pressure_damping (all three asserted).
 // Flow (validation/stability/stability.toml, run by `valsalva run`'s Simulation): Kolmogorov
 // forcing f = F sin(k y) e_x in the unit periodic box ([forcing], its discrete mean removed),
 // started from rest plus a divergence-free perturbation, Re = U / (nu k) = 16 (below the flow's
 // linear-stability limit, so the physical answer is the steady laminar profile U sin(k y),
 // U = F / (rho nu k^2), reached after a few 1/(nu k^2)); time.stability_fraction = sigma. Checks:
 // no blow-up (finite energy, bounded divergence), the steady kinetic energy against the analytic
-// U^2/4 within the discretisation error of the coarse mesh, and no drift: the energy's relative
-// change over the second half of the run.
+// U^2/4 within issue 21's 5 %, and no drift: the energy's relative change over the second half of
+// the run.
 // Measured numbers, their run conditions and what they show: README.md in this folder.
 #include <fmt/format.h>
 
@@ -26,9 +26,13 @@ namespace valsalva::validation {
 
 namespace {
 
+// quick_steps: the quick level's run length. The undamped incremental projection on perturbed
+// tetrahedra leaves a start-up transient in pressure modes the wide gradient hardly sees, which
+// decays by e every ~2700 steps (README.md); its drift over the second half falls below 1e-9
+// only after some 45000 steps.
 void run_stability(const Context& ctx, Report& report, double perturbation,
-                   const std::string& label, bool asserted, bool damping) {
-  const int steps = ctx.quick ? 10000 : 100000;
+                   const std::string& label, bool damping, int quick_steps) {
+  const int steps = ctx.quick ? quick_steps : 100000;
   const double sigma = ctx.option_real("sigma", 1.0);
   const double u_max = 1.0;  // the laminar amplitude of stability.toml
   std::ofstream csv;
@@ -69,7 +73,9 @@ void run_stability(const Context& ctx, Report& report, double perturbation,
                                       fmt::format("time.stability_fraction={:.17g}", sigma),
                                       fmt::format("time.max_steps={}", steps)},
                                      ctx.out_dir / "runs" / label, ctx.comm, measure);
-  const double max_div = result.summary.max_divergence;
+  // |div v| h / max|v| at each node and step, the largest over the run: the step's own h and
+  // speed, so the start from 0.1 U weighs more than against the laminar U.
+  const double div_number = result.summary.max_divergence_number;
   const double exact = u_max * u_max / 4;  // mean of (U sin ky)^2 / 2
   const double drift = std::abs(e_end / e_half - 1);
   if (rank == 0)
@@ -77,32 +83,29 @@ void run_stability(const Context& ctx, Report& report, double perturbation,
         "stability {}: {} steps, dt {:.4g}..{:.4g} s (sigma = {}), t = {:.1f} s, E/E_exact "
         "{:.6f}, drift over the second half {:.3e}, max |div v| h/U {:.3e}\n",
         label, result.summary.steps, dt_min, dt_max, sigma, result.summary.time, e_end / exact,
-        drift, max_div / (u_max * 6));
+        drift, div_number);
   finite = finite && result.summary.steps == steps;
-  if (!asserted) return;
   report.add(label + ": steps completed with finite energy", finite ? steps : 0, steps, 0);
-  // Steady energy: the compact Laplacian of the coarse (h = 1/6) mesh misses the continuous
-  // eigenvalue by O((k h)^2 / 12) ~ 10 %, so the energy (quadratic in U) is within ~25 % of
-  // U^2 / 4; the point here is a bounded, steady answer, not accuracy.
-  report.add(label + ": steady kinetic energy / exact U^2/4", e_end / exact, 1.0, 0.25);
+  // Steady energy within issue 21's 5 % (target 3): on the 8^3 mesh (k h = 0.79) the
+  // discretisation error of the laminar profile is a few per cent (README.md).
+  report.add(label + ": steady kinetic energy / exact U^2/4", e_end / exact, 1.0, 0.05);
   // Steady state reached after ~10 / (nu k^2) = 25 s; the second half only sees Poisson
   // round-off (tolerance 1e-10).
   report.add(label + ": energy drift over the second half (relative)", drift, 0, 1e-9,
              Check::at_most);
   // The approximate projection (compact Laplacian, not div grad) leaves div v ~ 3e-2 U/h
-  // after the correction on tetrahedra (measured); it must stay bounded, not grow.
-  report.add(label + ": max |div v| h / U over the run", max_div / (u_max * 6), 0, 0.1,
-             Check::at_most);
+  // after the correction on tetrahedra (measured); issue 21 asks at most 0.1.
+  report.add(label + ": max |div v| h / U over the run", div_number, 0, 0.1, Check::at_most);
 }
 
 void run_cases(const Context& ctx, Report& report) {
   const std::string mesh = ctx.option("mesh", "all");
   if (mesh == "all" || mesh == "split_tetra")
-    run_stability(ctx, report, 0.0, "split_tetra", true, false);
+    run_stability(ctx, report, 0.0, "split_tetra", false, 10000);
   if (mesh == "all" || mesh == "perturbed_tetra")
-    run_stability(ctx, report, 0.2, "perturbed_tetra", false, false);
+    run_stability(ctx, report, 0.2, "perturbed_tetra", false, 50000);
   if (mesh == "all" || mesh == "perturbed_tetra_damped")
-    run_stability(ctx, report, 0.2, "perturbed_tetra_damped", true, true);
+    run_stability(ctx, report, 0.2, "perturbed_tetra_damped", true, 10000);
 }
 
 }  // namespace
