@@ -1,8 +1,8 @@
 // The analysis chain of a run checked on a flow whose statistics are known exactly: purely
 // oscillatory Womersley flow (Womersley, J. Physiol. 127, 1955; flow/womersley.hpp) at Wo = 4 in
-// a rigid pipe (Gmsh tetrahedra), the exact profile imposed at both ends, run through run::RunLoop
-// with the scene-level analysis (analysis::RunAnalysis: phase statistics, wall shear stress,
-// probes) exactly as `valsalva run` does.
+// a rigid pipe (Gmsh tetrahedra), the exact profile imposed at both ends: the scene
+// womersley_statistics.toml with the level's mesh size, run through run::Simulation with its
+// analysis (phase statistics, wall shear stress, probes) exactly as `valsalva run` runs it.
 //   1. Phase statistics: 8 bins over 2 cycles. The phase mean must equal the analytic profile
 //      sampled at the same instants (an accumulator fed the exact field at the same steps), and
 //      the RMS the analytic within-bin RMS (not zero: the flow changes within a bin of T/8); the
@@ -21,6 +21,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <random>
 
 #include "analysis/piv_compare.hpp"
@@ -30,9 +31,9 @@
 #include "io/xdmf_writer.hpp"
 #include "mesh/dual_metrics.hpp"
 #include "mesh/local_mesh.hpp"
-#include "mesh/pipe_generator.hpp"
-#include "run/run_loop.hpp"
+#include "mesh/point_locator.hpp"
 #include "validation/case.hpp"
+#include "validation/scene_run.hpp"
 
 namespace valsalva::validation {
 
@@ -67,75 +68,16 @@ struct Level {
   double piv_noise_u = 0, piv_noise_v = 0, piv_sim_error = 0, piv_noise_tolerance = 0;
 };
 
-void run_level(const Context& ctx, Level& level) {
+// The run's statistics, wall shear and written phase files against the exact field (collective).
+void measure_level(const Context& ctx, const run::Simulation& sim,
+                   const analysis::PhaseStatistics& exact_stats, const std::filesystem::path& dir,
+                   double u_peak, Level& level) {
+  const auto& local = sim.local();
+  const auto& mesh = sim.mesh();
   const double size = kRadius / level.resolution;
-  const auto dir = ctx.out_dir / fmt::format("level_{:g}", level.resolution);
-  const auto mesh = mesh::generate_pipe_mesh(kRadius, kLength, size);
-  const auto metrics = mesh::compute_dual_metrics(mesh);
-  const auto local = mesh::distribute(mesh, metrics, ctx.comm);
-  if (local.comm.root()) std::filesystem::create_directories(dir);
-  local.comm.barrier();
   const auto w = exact();
-  double u_peak = 0;  // peak centreline velocity
-  for (int k = 0; k < 1000; ++k)
-    u_peak = std::max(u_peak, std::abs(w.velocity(0, k * kPeriod / 1000)));
-
-  scene::RunOptions o;
-  o.projection.density = kRho;
-  o.projection.viscosity = kNu;
-  o.projection.poisson.tolerance = 1e-10;
-  o.time.end = 3 * kPeriod;
-  o.output.print = false;
-  auto inlet = flow::boundary_spec("inlet", flow::BoundaryType::inlet);
-  inlet.profile = flow::InletProfile::womersley;
-  inlet.flow_rate.kind = flow::Waveform::Kind::sine;
-  inlet.flow_rate.amplitude = kAmplitude;
-  inlet.flow_rate.period = kPeriod;
-  // The same Womersley flow imposed at both ends (the outlet takes in -Q(t), a sine
-  // shifted by pi): fully developed everywhere, as the statistics check wants; a
-  // pressure outlet is unstable once the oscillatory flow comes back in through it.
-  auto outlet = inlet;
-  outlet.patch = "outlet";
-  outlet.flow_rate.phase = M_PI;
-  o.boundary = {inlet, outlet, flow::boundary_spec("wall", flow::BoundaryType::wall)};
-
-  // Statistics over cycles 1 and 2 (the start-up from the exact field is one period).
-  analysis::AnalysisOptions a;
-  analysis::StatisticsOptions s;
-  s.phase = {kPeriod, kBins, kPeriod, kRho, "phase"};
-  a.statistics = {s};
-  a.wall_shear.patches = {"wall"};
-  a.wall_shear.start_time = kPeriod;
-  a.probes.points = {{"centre", Eigen::Vector3d(0, 0, kLength / 2)}};
-  analysis::RunAnalysis analysis(mesh, metrics, local, a, kRho, kRho * kNu, dir, false);
-  auto exact_options = s.phase;
-  exact_options.name = "exact";
-  analysis::PhaseStatistics exact_stats(local, exact_options, analysis::all_owned_nodes(local));
-
-  run::RunLoop loop(mesh, metrics, local, o);
-  flow::FlowState start;  // the analytic field at t = 0
-  for (int j = 0; j < local.num_local(); ++j) {
-    const auto& x = local.position[j];
-    start.velocity.emplace_back(0, 0, w.velocity(std::hypot(x.x(), x.y()), 0.0));
-    start.pressure.push_back(0.0);
-  }
-  loop.resume(start, 0);
-  flow::VectorField u_exact(local.num_local(), Eigen::Vector3d::Zero());
-  run::RunHooks hooks;
-  hooks.after_step = [&](const flow::FlowState& state, std::int64_t step) {
-    analysis.sample(state, step);
-    for (int j = 0; j < local.num_local(); ++j) {
-      const auto& x = local.position[j];
-      u_exact[j].z() = w.velocity(std::min(std::hypot(x.x(), x.y()), kRadius), state.time);
-    }
-    exact_stats.add(state.time, u_exact, state.pressure);
-  };
-  loop.set_hooks(hooks);
-  const auto summary = loop.run();
-  analysis.finish();
-
   // 1. Phase mean and RMS in the middle half of the pipe (away from inlet/outlet).
-  const auto& stats = analysis.statistics().front();
+  const auto& stats = sim.analysis()->statistics().front();
   double mean_err = 0, rms_err = 0, cross_rms = 0, rms_max = 0;
   std::ofstream csv;
   if (local.comm.root()) {
@@ -163,12 +105,12 @@ void run_level(const Context& ctx, Level& level) {
   rms_err = comm.max(rms_err) / u_peak;
   cross_rms = comm.max(cross_rms) / u_peak;
   rms_max = comm.max(rms_max) / u_peak;
-  level.nodes = metrics.num_nodes();
+  level.nodes = sim.metrics().num_nodes();
   level.mean_error = mean_err, level.rms_error = rms_err, level.cross_rms = cross_rms;
   level.rms_scale = rms_max;
 
   // 2. OSI and TAWSS at the wall nodes of the middle half.
-  const auto* wall = analysis.wall_shear();
+  const auto* wall = sim.analysis()->wall_shear();
   const auto osi = wall->statistics().front().osi();
   const auto tawss = wall->statistics().front().tawss();
   double osi_dev = 0, tawss_sum = 0, osi_sum = 0;
@@ -229,13 +171,13 @@ void run_level(const Context& ctx, Level& level) {
     double su = 0, sv = 0, eu = 0, ev = 0;
     for (int b = 0; b < kBins; ++b) {
       const auto file = dir / "statistics" / fmt::format("phase_{:06d}.h5", b);
-      analysis::SimulationStatistics sim;
-      sim.mean_velocity = io::read_nodal_field(file, "mean_velocity");
+      analysis::SimulationStatistics written;
+      written.mean_velocity = io::read_nodal_field(file, "mean_velocity");
       const auto& frame = data.frames[std::size_t(b)];
       const analysis::PivSampler sampler(locator, plane, frame);
-      const auto c = analysis::compare_frame(frame, sampler, sim);
+      const auto c = analysis::compare_frame(frame, sampler, written);
       su += c.u.rmse * c.u.rmse, sv += c.v.rmse * c.v.rmse;
-      const auto e = analysis::compare_frame(data_exact.frames[std::size_t(b)], sampler, sim);
+      const auto e = analysis::compare_frame(data_exact.frames[std::size_t(b)], sampler, written);
       eu += e.u.rmse * e.u.rmse, ev += e.v.rmse * e.v.rmse;
       masked += c.masked, used += c.u.points;
     }
@@ -258,14 +200,49 @@ void run_level(const Context& ctx, Level& level) {
   core::Comm(ctx.comm).broadcast(level.piv_noise_v);
   core::Comm(ctx.comm).broadcast(level.piv_sim_error);
   core::Comm(ctx.comm).broadcast(level.piv_noise_tolerance);
-  if (comm.root())
+}
+
+void run_level(const Context& ctx, Level& level) {
+  const double size = kRadius / level.resolution;
+  const auto dir = ctx.out_dir / fmt::format("level_{:g}", level.resolution);
+  const auto w = exact();
+  double u_peak = 0;  // peak centreline velocity
+  for (int k = 0; k < 1000; ++k)
+    u_peak = std::max(u_peak, std::abs(w.velocity(0, k * kPeriod / 1000)));
+
+  // The analytic field sampled at the run's own steps, into an accumulator of the same phase
+  // bins as the scene's [statistics.phase] (bins of T/8 over cycles 1 and 2).
+  std::optional<analysis::PhaseStatistics> exact_stats;
+  flow::VectorField u_exact;
+  SceneRun measure;
+  measure.at_start = [&](const run::Simulation& sim) {
+    analysis::PhaseStatisticsOptions exact_options{kPeriod, kBins, kPeriod, kRho, "exact"};
+    exact_stats.emplace(sim.local(), exact_options, analysis::all_owned_nodes(sim.local()));
+    u_exact.assign(sim.local().num_local(), Eigen::Vector3d::Zero());
+  };
+  measure.observer = [&](const run::Simulation& sim, std::int64_t) {
+    const auto& state = sim.state();
+    for (int j = 0; j < sim.local().num_local(); ++j) {
+      const auto& x = sim.local().position[j];
+      u_exact[j].z() = w.velocity(std::min(std::hypot(x.x(), x.y()), kRadius), state.time);
+    }
+    exact_stats->add(state.time, u_exact, state.pressure);
+  };
+  measure.at_end = [&](const run::Simulation& sim) {
+    measure_level(ctx, sim, *exact_stats, dir, u_peak, level);
+  };
+  const auto result =
+      run_scene_file(case_scene("womersley_statistics", "womersley_statistics.toml"),
+                     {fmt::format("mesh.pipe.size={:.17g}", size)}, dir, ctx.comm, measure);
+  if (core::Comm(ctx.comm).root())
     fmt::print(
-        "womersley_statistics: {} nodes, {} steps, u_peak {:.4g} m/s; phase mean error "
-        "{:.3e}, RMS error {:.3e}, transverse RMS {:.3e} (of peak); OSI deviation "
-        "{:.2e}; TAWSS {:.4g} vs {:.4g} Pa; PIV {} points used, {} masked, RMSE/sigma "
-        "u {:.3f} v {:.3f}, simulation error on the PIV points {:.3e} of peak\n",
-        metrics.num_nodes(), summary.steps, u_peak, mean_err, rms_err, cross_rms, osi_dev,
-        tawss_mean, tawss_exact, used, masked, rmse_u / sigma, rmse_v / sigma, level.piv_sim_error);
+        "womersley_statistics R/h {:g}: {} nodes, {} steps, u_peak {:.4g} m/s; phase mean error "
+        "{:.3e}, RMS error {:.3e}, transverse RMS {:.3e} (of peak); OSI mean {:.4f}; TAWSS error "
+        "{:.3e}; PIV noise recovered u {:.3f} v {:.3f}, simulation error on the PIV points "
+        "{:.3e} of peak\n",
+        level.resolution, level.nodes, result.summary.steps, u_peak, level.mean_error,
+        level.rms_error, level.cross_rms, level.osi_mean, level.tawss_error, level.piv_noise_u,
+        level.piv_noise_v, level.piv_sim_error);
 }
 
 // One row per level (womersley_statistics_levels.csv); the finest level's profiles are copied
