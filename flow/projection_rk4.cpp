@@ -35,10 +35,10 @@ ProjectionRK4::ProjectionRK4(const mesh::LocalMesh& mesh, ProjectionOptions opti
     throw std::invalid_argument("flow::ProjectionRK4: " + viscosity_law_name(options.rheology.law) +
                                 " " + problem->parameter + ": " + problem->message);
   if (options.fourth_order_operators) {
-    if (options.subgrid_viscosity || rheology_)
+    if (rheology_)
       throw std::invalid_argument(
-          "flow::ProjectionRK4: the 4th-order operators have no full-stress (LES or "
-          "non-Newtonian) viscous term; run without fourth_order_operators");
+          "flow::ProjectionRK4: the 4th-order operators have no variable-viscosity "
+          "(non-Newtonian) viscous term; run without fourth_order_operators");
     order4_ = std::make_unique<Order4Operators>(mesh, poisson_weights_);
   }
   auto* bc = options_.boundary.get();
@@ -80,8 +80,17 @@ void ProjectionRK4::momentum_rhs(const VectorField& u, const EdgeField& flux, Ve
       nu_sgs_.resize(grad_u_.size());
       options_.subgrid_viscosity(stage, grad_u_, nu_sgs_);
     }
-    total_viscosity();
-    viscous_stress(mesh_, weights_, nu_eff_, u, grad_u_, rhs);
+    if (order4_) {
+      // The molecular term with the 4th-order operator, the subgrid term with the 2nd-order
+      // full-stress operator: the model itself is only O(Delta^2) accurate, and the full-stress
+      // form keeps its variable-viscosity term dissipative.
+      order4_->viscous(options_.viscosity, u, grad_u_, rhs);
+      viscous_stress(mesh_, weights_, nu_sgs_, u, grad_u_, subgrid_rhs_);
+      for (int i = 0; i < mesh_.num_local(); ++i) rhs[i] += subgrid_rhs_[i];
+    } else {
+      total_viscosity();
+      viscous_stress(mesh_, weights_, nu_eff_, u, grad_u_, rhs);
+    }
   } else if (options_.viscosity > 0) {
     velocity_gradient(u);
     if (order4_)

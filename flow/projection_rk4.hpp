@@ -88,8 +88,9 @@ struct ProjectionOptions {
   // 4th-order laminar viscous term, pressure gradient and divergence (flow/operators_order4.hpp;
   // the viscous term with the Poisson matrix's edge weights): with central4, a 4th-order
   // velocity on uniform hexahedra and split tetrahedra (validation/taylor_green). The Poisson
-  // matrix, the pressure damping term and an LES (full-stress) viscous term stay 2nd order;
-  // with a subgrid model the option is refused. Needs 2 ghost layers.
+  // matrix, the pressure damping term and the subgrid part of an LES viscous term (the
+  // full-stress operator with nu_sgs) stay 2nd order; refused with a non-Newtonian fluid. Needs
+  // 2 ghost layers.
   bool fourth_order_operators = false;
   PoissonOptions poisson;
   TimeScheme time_scheme = TimeScheme::rk4_jameson;  // time.scheme (flow/time_scheme.hpp)
@@ -253,6 +254,7 @@ class ProjectionRK4 {
   VectorField flux_velocity_;  // the velocity flux_ belongs to (empty: none)
   TensorField grad_flux_;      // velocity gradient of the Hermite face value
   VectorField grad_p_, grad_dp_, rhs_, conv_, stage_;
+  VectorField subgrid_rhs_;          // the subgrid viscous term with the 4th-order operators
   VectorField rhs_sum_, stage_sum_;  // rk4_classic: sum b_k R(w_k); sum b_k w_k (outlets)
   ScalarField stage_dp_;             // project_stages: dp of the current stage
   TensorField grad_u_;

@@ -65,8 +65,9 @@ void declare_flow_keys(Schema& s) {
           "4th-order laminar viscous term, pressure gradient and divergence (Hermite-corrected "
           "edge operators, flow/operators_order4.hpp): with flow.scheme = central4 the velocity "
           "converges at 4th order on uniform hexahedra and split tetrahedra (Taylor-Green case); "
-          "the Poisson matrix and the pressure damping at boundaries stay 2nd order; refused "
-          "with an LES model; needs partition.ghost_layers >= 2");
+          "the Poisson matrix, the pressure damping at boundaries and an LES model's subgrid "
+          "term stay 2nd order; refused with a non-Newtonian fluid; needs "
+          "partition.ghost_layers >= 2");
   s.choice("flow.viscous_weights", {"two_point", "stiffness"})
       .def("two_point")
       .unit_of("-")

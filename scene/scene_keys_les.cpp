@@ -100,15 +100,6 @@ void check_les_scene(const Scene& scene) {
     if (scene.get<std::string>("les.model") == "none" && wants_field(scene, field))
       throw scene.error("output.fields", fmt::format("{} needs a subgrid model", field),
                         fmt::format("les.model = sigma, wale or smagorinsky, or drop {}", field));
-  // flow/operators_order4 has no full-stress form for a variable viscosity (ProjectionRK4
-  // refuses it too; here the scene is refused before any mesh is built).
-  if (scene.get<bool>("flow.fourth_order_operators") &&
-      scene.get<std::string>("les.model") != "none")
-    throw scene.error(
-        "flow.fourth_order_operators",
-        fmt::format("the 4th-order operators have no LES viscous term (les.model = {})",
-                    scene.get<std::string>("les.model")),
-        "flow.fourth_order_operators = false, or les.model = \"none\"");
   if (wants_field(scene, "pope_sgs_fraction") && !(scene.get<double>("les.integral_length") > 0))
     throw scene.error("les.integral_length",
                       "pope_sgs_fraction in output.fields needs the integral length scale",

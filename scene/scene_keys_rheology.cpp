@@ -2,6 +2,8 @@
 // one table of parameters per non-Newtonian law; and their reader read_viscosity_model.
 #include "scene/scene_keys_rheology.hpp"
 
+#include <fmt/format.h>
+
 #include "scene/scene_keys.hpp"
 
 namespace valsalva::scene {
@@ -83,6 +85,15 @@ flow::ViscosityModel read_viscosity_model(const Scene& scene) {
     m.mu = scene.get<double>("flow.viscosity");
     return m;
   }
+  // flow/operators_order4 has no variable-viscosity term (ProjectionRK4 refuses it too; here
+  // the scene is refused before any mesh is built).
+  if (scene.get<bool>("flow.fourth_order_operators"))
+    throw scene.error("flow.fourth_order_operators",
+                      fmt::format("the 4th-order operators have no non-Newtonian viscous term "
+                                  "(flow.viscosity_model = {})",
+                                  law),
+                      "flow.fourth_order_operators = false, or flow.viscosity_model = "
+                      "\"newtonian\"");
   if (law == "carreau_yasuda") {
     table = "flow.carreau_yasuda.";
     m.law = flow::ViscosityLaw::carreau_yasuda;

@@ -32,7 +32,7 @@ struct TgvLesSpec {
   std::string update = "step";      // les.update: nu_sgs per "step" or per RK "stage"
   double cfl = 0.5;                 // dt = t_end / ceil(t_end / (cfl h / V0))
   double t_end = 10;
-  bool fourth_order_operators = false;  // flow.fourth_order_operators (refused with a model)
+  bool fourth_order_operators = false;  // flow.fourth_order_operators
   std::vector<std::string> overrides;   // further "key=value" scene overrides, applied last
 };
 
