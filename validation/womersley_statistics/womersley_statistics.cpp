@@ -13,10 +13,10 @@
 //      tilted 30 degrees about it, averaged over each phase window, with Gaussian noise sigma and
 //      5 % masked points, compared with the written statistics (statistics/phase.xmf read back as
 //      `valsalva compare-piv` reads it): the RMSE must be at the noise level.
-// Levels R/h = 4, 6, 8 (quick: 4), each in level_<R/h>/: womersley_statistics.csv (profiles per
-// bin), piv_synthetic.csv, piv_exact.csv, statistics/, wall_shear.csv; the table
-// womersley_statistics_levels.csv and the plot of the finest level. A CTest also runs
-// `valsalva compare-piv` on the quick level's files.
+// Levels R/h = 4, 6, 8 (quick: 4), each the run directory runs/level_<R/h>/ with the run's own
+// files and womersley_statistics.csv (profiles per bin), piv_synthetic.csv, piv_exact.csv,
+// statistics/, wall_shear.csv; the table womersley_statistics_levels.csv and the plot of the finest
+// level. A CTest also runs `valsalva compare-piv` on the quick level's files.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -204,7 +204,7 @@ void measure_level(const Context& ctx, const run::Simulation& sim,
 
 void run_level(const Context& ctx, Level& level) {
   const double size = kRadius / level.resolution;
-  const auto dir = ctx.out_dir / fmt::format("level_{:g}", level.resolution);
+  const auto dir = ctx.out_dir / "runs" / fmt::format("level_{:g}", level.resolution);
   const auto w = exact();
   double u_peak = 0;  // peak centreline velocity
   for (int k = 0; k < 1000; ++k)
@@ -259,7 +259,7 @@ void write_table(const Context& ctx, const std::vector<Level>& levels) {
                        l.resolution, l.nodes, l.mean_error, l.rms_error, l.cross_rms, l.osi_mean,
                        l.osi_max_deviation, l.tawss_error, l.piv_noise_u, l.piv_noise_v,
                        l.piv_sim_error);
-  const auto finest = ctx.out_dir / fmt::format("level_{:g}", levels.back().resolution);
+  const auto finest = ctx.out_dir / "runs" / fmt::format("level_{:g}", levels.back().resolution);
   std::filesystem::copy_file(finest / "womersley_statistics.csv",
                              ctx.out_dir / "womersley_statistics.csv",
                              std::filesystem::copy_options::overwrite_existing);
