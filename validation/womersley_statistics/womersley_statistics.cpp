@@ -13,10 +13,10 @@
 //      tilted 30 degrees about it, averaged over each phase window, with Gaussian noise sigma and
 //      5 % masked points, compared with the written statistics (statistics/phase.xmf read back as
 //      `valsalva compare-piv` reads it): the RMSE must be at the noise level.
-// Levels R/h = 4, 6, 8 (quick: 4), each the run directory runs/level_<R/h>/ with the run's own
-// files and womersley_statistics.csv (profiles per bin), piv_synthetic.csv, piv_exact.csv,
-// statistics/, wall_shear.csv; the table womersley_statistics_levels.csv and the plot of the finest
-// level. A CTest also runs `valsalva compare-piv` on the quick level's files.
+// Levels R/h = 4, 6, 8 (quick: 4), each the run directory runs/level_<R/h>/ (statistics/,
+// wall_shear.csv, ...) and the case's level_<R/h>/: womersley_statistics.csv (profiles per bin),
+// piv_synthetic.csv, piv_exact.csv; the table womersley_statistics_levels.csv and the plot of the
+// finest level. A CTest also runs `valsalva compare-piv` on the quick level's files.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -170,7 +170,7 @@ void measure_level(const Context& ctx, const run::Simulation& sim,
     const mesh::PointLocator locator(mesh);
     double su = 0, sv = 0, eu = 0, ev = 0;
     for (int b = 0; b < kBins; ++b) {
-      const auto file = dir / "statistics" / fmt::format("phase_{:06d}.h5", b);
+      const auto file = sim.run_path() / "statistics" / fmt::format("phase_{:06d}.h5", b);
       analysis::SimulationStatistics written;
       written.mean_velocity = io::read_nodal_field(file, "mean_velocity");
       const auto& frame = data.frames[std::size_t(b)];
@@ -204,7 +204,11 @@ void measure_level(const Context& ctx, const run::Simulation& sim,
 
 void run_level(const Context& ctx, Level& level) {
   const double size = kRadius / level.resolution;
-  const auto dir = ctx.out_dir / "runs" / fmt::format("level_{:g}", level.resolution);
+  // The run in runs/level_<R/h> (a run directory: a rerun replaces it), the case's own files
+  // beside it in level_<R/h>.
+  const auto name = fmt::format("level_{:g}", level.resolution);
+  const auto dir = ctx.out_dir / name;
+  if (core::Comm(ctx.comm).root()) std::filesystem::create_directories(dir);
   const auto w = exact();
   double u_peak = 0;  // peak centreline velocity
   for (int k = 0; k < 1000; ++k)
@@ -233,7 +237,8 @@ void run_level(const Context& ctx, Level& level) {
   };
   const auto result =
       run_scene_file(case_scene("womersley_statistics", "womersley_statistics.toml"),
-                     {fmt::format("mesh.pipe.size={:.17g}", size)}, dir, ctx.comm, measure);
+                     {fmt::format("mesh.pipe.size={:.17g}", size)}, ctx.out_dir / "runs" / name,
+                     ctx.comm, measure);
   if (core::Comm(ctx.comm).root())
     fmt::print(
         "womersley_statistics R/h {:g}: {} nodes, {} steps, u_peak {:.4g} m/s; phase mean error "
@@ -259,7 +264,7 @@ void write_table(const Context& ctx, const std::vector<Level>& levels) {
                        l.resolution, l.nodes, l.mean_error, l.rms_error, l.cross_rms, l.osi_mean,
                        l.osi_max_deviation, l.tawss_error, l.piv_noise_u, l.piv_noise_v,
                        l.piv_sim_error);
-  const auto finest = ctx.out_dir / "runs" / fmt::format("level_{:g}", levels.back().resolution);
+  const auto finest = ctx.out_dir / fmt::format("level_{:g}", levels.back().resolution);
   std::filesystem::copy_file(finest / "womersley_statistics.csv",
                              ctx.out_dir / "womersley_statistics.csv",
                              std::filesystem::copy_options::overwrite_existing);
