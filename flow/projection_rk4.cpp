@@ -209,10 +209,7 @@ void ProjectionRK4::set_undamped_nodes(const std::vector<char>& nodes, double ke
     throw std::invalid_argument(
         "flow::ProjectionRK4::set_undamped_nodes: " + std::to_string(nodes.size()) +
         " values for " + std::to_string(mesh_.num_local()) + " local nodes");
-  if (on_boundary_.empty()) {
-    on_boundary_.assign(static_cast<std::size_t>(mesh_.num_local()), 0);
-    for (const auto& f : mesh_.boundary) on_boundary_[f.node] = 1;
-  }
+  mark_boundary_nodes();
   kept_damping_ = kept;
   kept_damping_at_boundary_ = kept_at_boundary;
   undamped_ = nodes;
@@ -233,36 +230,91 @@ void ProjectionRK4::predicted_flux(const VectorField& w, double dt, const Scalar
                                    EdgeField& flux) {
   projection_flux(w, flux);
   if ((options_.boundary || options_.periodic_pressure_damping) && options_.pressure_damping) {
-    // Pressure damping (Rhie & Chow, AIAA J. 21, 1983, in its node-centred form): the face flux
-    // of v* takes the face-velocity correction dt/rho (avg(grad p^n) - grad p^n|_face), i.e.
-    // the divergence gains div(grad p^n) - lap(p^n) with the wide divergence of the wide
-    // gradient and the compact, linearly exact Laplacian of flow/operators.hpp (their boundary
-    // faces cancel). The odd-even pressure mode that inlets and wall corners excite is invisible
-    // to the wide operators and otherwise stays in the steady state; the term vanishes for
-    // linear pressure and is O(h^2) for smooth ones. The compact Laplacian here must be the
-    // Poisson matrix's own operator (P1 weights on tetrahedra): with the two-point Laplacian
-    // instead, the damping pumps energy into the flow on tetrahedral meshes and a DFG cylinder
-    // run blew up in 15 steps at any dt. grad_p_ holds grad p^n (step()).
-    const double rho = options_.density;
-    if (undamped_.empty() || cells_) {
-      add_central_flux(mesh_, dt / rho, grad_p_, flux);
-      add_compact_gradient(mesh_, poisson_weights_, -dt / rho, p, flux);
-      if (!undamped_.empty())
-        cells_->remove(undamped_, (1 - kept_damping_) * dt / rho,
-                       (1 - kept_damping_at_boundary_) * dt / rho, grad_p_, p, flux);
-      return;
-    }
-    damping_flux_.assign(flux.size(), 0.0);
-    add_central_flux(mesh_, dt / rho, grad_p_, damping_flux_);
-    add_compact_gradient(mesh_, poisson_weights_, -dt / rho, p, damping_flux_);
-    for (std::size_t e = 0; e < flux.size(); ++e) {
-      const auto [j, k] = mesh_.edges[e];
-      // Edges at the boundary keep their own fraction, as DampingCells' tetrahedra do.
-      const bool reduced = undamped_[j] || undamped_[k];
-      const bool boundary = on_boundary_[j] || on_boundary_[k];
-      flux[e] += (reduced ? (boundary ? kept_damping_at_boundary_ : kept_damping_) : 1.0) *
-                 damping_flux_[e];
-    }
+    add_damping(dt, grad_p_, p, flux);  // grad_p_ holds grad p^n (step())
+    if (options_.damp_pressure_increment) remove_previous_pressure_damping(dt, flux);
+  }
+}
+
+void ProjectionRK4::add_damping(double dt, const VectorField& grad_p, const ScalarField& p,
+                                EdgeField& flux) {
+  // Pressure damping (Rhie & Chow, AIAA J. 21, 1983, in its node-centred form): the face flux
+  // of v* takes the face-velocity correction dt/rho (avg(grad p^n) - grad p^n|_face), i.e.
+  // the divergence gains div(grad p^n) - lap(p^n) with the wide divergence of the wide
+  // gradient and the compact, linearly exact Laplacian of flow/operators.hpp (their boundary
+  // faces cancel). The odd-even pressure mode that inlets and wall corners excite is invisible
+  // to the wide operators and otherwise stays in the steady state; the term vanishes for
+  // linear pressure and is O(h^2) for smooth ones. The compact Laplacian here must be the
+  // Poisson matrix's own operator (P1 weights on tetrahedra): with the two-point Laplacian
+  // instead, the damping pumps energy into the flow on tetrahedral meshes and a DFG cylinder
+  // run blew up in 15 steps at any dt.
+  const double c = dt / options_.density;
+  if (undamped_.empty() || cells_) {
+    add_central_flux(mesh_, c, grad_p, flux);
+    add_compact_gradient(mesh_, poisson_weights_, -c, p, flux);
+    if (!undamped_.empty())
+      cells_->remove(undamped_, (1 - kept_damping_) * c, (1 - kept_damping_at_boundary_) * c,
+                     grad_p, p, flux);
+    return;
+  }
+  damping_flux_.assign(flux.size(), 0.0);
+  add_central_flux(mesh_, c, grad_p, damping_flux_);
+  add_compact_gradient(mesh_, poisson_weights_, -c, p, damping_flux_);
+  for (std::size_t e = 0; e < flux.size(); ++e) {
+    const auto [j, k] = mesh_.edges[e];
+    // Edges at the boundary keep their own fraction, as DampingCells' tetrahedra do.
+    const bool reduced = undamped_[j] || undamped_[k];
+    const bool boundary = on_boundary_[j] || on_boundary_[k];
+    flux[e] +=
+        (reduced ? (boundary ? kept_damping_at_boundary_ : kept_damping_) : 1.0) * damping_flux_[e];
+  }
+}
+
+void ProjectionRK4::remove_previous_pressure_damping(double dt, EdgeField& flux) {
+  // What add_damping() added for p^{n-1} (p^n = p^{n-1} + dp), with the same kept fractions,
+  // is taken back out of the cells (edges) with no node on an open boundary.
+  const double c = dt / options_.density;
+  const auto& prev = previous_p_;
+  const auto& grad_prev = grad_previous_p_;
+  mark_boundary_nodes();
+  if (cells_) {
+    // All cells, less those at an open boundary, less the share the support had already left
+    // out (a support cell at an open boundary would lose its kept fraction twice: the leaflets'
+    // kernels do not reach an inlet or an outlet).
+    if (every_node_.empty()) every_node_.assign(static_cast<std::size_t>(mesh_.num_local()), 1);
+    cells_->remove(every_node_, c, c, grad_prev, prev, flux);
+    cells_->remove(open_boundary_, -c, -c, grad_prev, prev, flux);
+    if (!undamped_.empty())
+      cells_->remove(undamped_, -(1 - kept_damping_) * c, -(1 - kept_damping_at_boundary_) * c,
+                     grad_prev, prev, flux);
+    return;
+  }
+  damping_flux_.assign(flux.size(), 0.0);
+  add_central_flux(mesh_, c, grad_prev, damping_flux_);
+  add_compact_gradient(mesh_, poisson_weights_, -c, prev, damping_flux_);
+  for (std::size_t e = 0; e < flux.size(); ++e) {
+    const auto [j, k] = mesh_.edges[e];
+    if (open_boundary_[j] || open_boundary_[k]) continue;
+    const bool reduced = !undamped_.empty() && (undamped_[j] || undamped_[k]);
+    const bool boundary = on_boundary_[j] || on_boundary_[k];
+    flux[e] -=
+        (reduced ? (boundary ? kept_damping_at_boundary_ : kept_damping_) : 1.0) * damping_flux_[e];
+  }
+}
+
+void ProjectionRK4::mark_boundary_nodes() {
+  if (!on_boundary_.empty()) return;
+  const auto n = static_cast<std::size_t>(mesh_.num_local());
+  on_boundary_.assign(n, 0);
+  open_boundary_.assign(n, 0);
+  std::vector<char> open_patch(mesh_.patch_names.size(), 1);  // patches with no condition: open
+  if (const auto* bc = options_.boundary.get())
+    for (std::size_t q = 0; q < open_patch.size(); ++q)
+      for (const auto& spec : bc->specs())
+        if (spec.patch == mesh_.patch_names[q])
+          open_patch[q] = spec.type != BoundaryType::wall && spec.type != BoundaryType::slip;
+  for (const auto& f : mesh_.boundary) {
+    on_boundary_[f.node] = 1;
+    if (open_patch.at(static_cast<std::size_t>(f.patch))) open_boundary_[f.node] = 1;
   }
 }
 
@@ -306,6 +358,18 @@ StepReport ProjectionRK4::step(FlowState& state, double dt) {
         "BoundaryConditions::pressure_dirichlet()");
   // Predictor with the old pressure gradient, fixed over the stages.
   pressure_gradient(state.pressure, grad_p_);
+  if (options_.damp_pressure_increment) {
+    // The damping acts on theta (p^n - p^{n-1}) = theta dp_ (checkpointed: bitwise restarts):
+    // add_damping's share of p^n less that of p^n - theta dp_ (previous_p_). On a pressure mode
+    // the wide operators do not see, the damping sets a_{n+1} = a_n - theta (a_n - a_{n-1}):
+    // roots 1 (a steady mode stays, as without damping) and -theta. theta = 1 is a neutral
+    // period-2 oscillation (a closed-valve hold diverged at t = 0.02 s with it); theta = 1/2
+    // halves it every step.
+    constexpr double theta = 0.5;
+    previous_p_.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) previous_p_[i] = state.pressure[i] - theta * dp_[i];
+    pressure_gradient(previous_p_, grad_previous_p_);
+  }
   const EdgeField& first_flux = convective_flux(state.velocity);  // also sets flux_offset_
   stage_ = state.velocity;
   StepReport report;

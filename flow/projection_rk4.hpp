@@ -85,6 +85,14 @@ struct ProjectionOptions {
   // the price of an O(h^2) pressure error (twice the Taylor-Green central2 error on hexahedra),
   // so it is off by default.
   bool periodic_pressure_damping = false;
+  // poisson.damping = "increment": the damping acts on the last increment p^n - p^{n-1}, except
+  // in the tetrahedra (edges) with a node on an open boundary (any patch but wall and slip),
+  // where it keeps acting on p^n. The damping flux then vanishes in a steady state and is
+  // O(dt^2) per step in a smooth flow: no flux through a loaded immersed wall (the closed valve's
+  // leak) and an energy loss that falls with dt. With the increment at a convective outlet too,
+  // its odd-even pressure mode grew until the run diverged (valve_quick, t = 0.078 s).
+  // Tetrahedral meshes need set_damping_cells (whole tetrahedra keep the damping PSD).
+  bool damp_pressure_increment = false;
   // 4th-order laminar viscous term, pressure gradient and divergence (flow/operators_order4.hpp;
   // the viscous term with the Poisson matrix's edge weights): with central4, a 4th-order
   // velocity on uniform hexahedra and split tetrahedra (validation/taylor_green). The Poisson
@@ -241,6 +249,11 @@ class ProjectionRK4 {
   // F = P_p(w) plus the pressure damping term of a predictor over `dt` with the old pressure
   // p (when there are boundary conditions or periodic_pressure_damping): the flux to project.
   void predicted_flux(const VectorField& w, double dt, const ScalarField& p, EdgeField& flux);
+  // The damping term over `dt` of pressure p with gradient grad_p, added to flux.
+  void add_damping(double dt, const VectorField& grad_p, const ScalarField& p, EdgeField& flux);
+  // damp_pressure_increment: takes the damping of p^{n-1} back out away from the boundary.
+  void remove_previous_pressure_damping(double dt, EdgeField& flux);
+  void mark_boundary_nodes();  // fills on_boundary_ and open_boundary_ (once)
   // project_stages: projects stage velocity w (standing at t = t^n + c dt) and leaves its
   // convective face flux in stage_flux_; returns the Poisson iterations.
   int project_stage(VectorField& w, double c, double dt, double t, const ScalarField& p);
@@ -254,6 +267,9 @@ class ProjectionRK4 {
   VectorField flux_velocity_;  // the velocity flux_ belongs to (empty: none)
   TensorField grad_flux_;      // velocity gradient of the Hermite face value
   VectorField grad_p_, grad_dp_, rhs_, conv_, stage_;
+  ScalarField previous_p_;           // damp_pressure_increment: p^{n-1} = p^n - dp_ (step())
+  VectorField grad_previous_p_;      // its wide gradient
+  std::vector<char> every_node_;     // all local nodes marked (DampingCells::remove)
   VectorField subgrid_rhs_;          // the subgrid viscous term with the 4th-order operators
   VectorField rhs_sum_, stage_sum_;  // rk4_classic: sum b_k R(w_k); sum b_k w_k (outlets)
   ScalarField stage_dp_;             // project_stages: dp of the current stage
@@ -269,7 +285,8 @@ class ProjectionRK4 {
   BodyForce body_force_;
   std::vector<char> undamped_;  // set_undamped_nodes
   double kept_damping_ = 0.0, kept_damping_at_boundary_ = 1.0;
-  std::vector<char> on_boundary_;  // nodes with a boundary face (set_undamped_nodes)
+  std::vector<char> on_boundary_;    // nodes with a boundary face (mark_boundary_nodes)
+  std::vector<char> open_boundary_;  // nodes with a face on a patch that is not a wall or slip
   std::shared_ptr<const DampingCells> cells_;
   EdgeField damping_flux_;  // predicted_flux's damping term when some nodes are undamped
   VectorField force_;       // body-force density of the current stage (only with a hook)

@@ -40,15 +40,23 @@ std::vector<double> RunLoop::chosen_poisson_weights(const mesh::Mesh& mesh,
 }
 
 void RunLoop::install_damping_cells(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics) {
-  // The coupling leaves the pressure damping out near its markers: by whole tetrahedra where
-  // the Poisson weights are P1 (some negative), by edges where they are two-point weights
-  // (non-negative); the slab weights may be negative and have no element split here.
-  if (options_.poisson_weights == scene::PoissonWeights::prism_slab)
+  // The coupling (or poisson.damping = increment) leaves the damping of p^n out in some cells:
+  // by whole tetrahedra where the Poisson weights are P1 (some negative), by edges where they
+  // are two-point weights (non-negative); the slab weights may be negative and have no element
+  // split here.
+  if (options_.poisson_weights == scene::PoissonWeights::prism_slab) {
+    if (options_.projection.damp_pressure_increment)
+      throw RunError(
+          "poisson.damping = increment with poisson.weights = prism_slab: the damping cannot "
+          "be split by cells on slab weights; use poisson.damping = pressure or the standard "
+          "weights",
+          "poisson.damping");
     throw RunError(
         "poisson.weights = prism_slab with immersed structures: the pressure damping cannot be "
         "left out near the markers on slab weights; set immersed.pressure_damping_in_support = "
         "1 or use the standard weights",
         "poisson.weights");
+  }
   const bool tetrahedra = std::all_of(mesh.cell_types.begin(), mesh.cell_types.end(),
                                       [](auto t) { return t == mesh::CellType::tetra; });
   if (tetrahedra)
@@ -61,7 +69,8 @@ RunLoop::RunLoop(const mesh::Mesh& mesh, const mesh::DualMetrics& metrics,
       options_(std::move(options)),
       sink_(std::move(sink)),
       solver_(local, attach_boundary(), chosen_poisson_weights(mesh, metrics, local)) {
-  if (options_.coupling.undamped_nodes) install_damping_cells(mesh, metrics);
+  if (options_.coupling.undamped_nodes || options_.projection.damp_pressure_increment)
+    install_damping_cells(mesh, metrics);
   const auto& ic = options_.initial;
   const int n = local.num_local();
   state_.velocity.assign(n, Eigen::Vector3d::Zero());

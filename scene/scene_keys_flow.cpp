@@ -233,6 +233,16 @@ void declare_flow_keys(Schema& s) {
           "periodic meshes: it removes slowly decaying pressure modes of the incremental "
           "projection on irregular tetrahedra (the stability case) at the price of an O(h^2) "
           "pressure error (twice the Taylor-Green central2 error on hexahedra)");
+  s.choice("poisson.damping", {"pressure", "increment"})
+      .def("pressure")
+      .unit_of("-")
+      .doc(
+          "What the pressure damping term (Rhie-Chow: with boundary conditions, or with "
+          "poisson.periodic_damping) acts on. pressure = p^n everywhere: it also removes steady "
+          "odd-even pressure modes, but its energy loss hardly falls with dt and it lets a flux "
+          "through a loaded immersed wall. increment = p^n - p^{n-1} in the cells with no "
+          "boundary node and p^n in those at the boundary: no flux in the interior in a steady "
+          "state and a loss that falls with dt (docs/valve.md, validation/inviscid_energy)");
   s.integer("poisson.print_level")
       .def(0)
       .in_range(0, 3)
@@ -424,6 +434,7 @@ scene::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pa
   p.aggressive_levels = scene.get<int>("poisson.aggressive_levels");
   p.print_level = scene.get<int>("poisson.print_level");
   o.projection.periodic_pressure_damping = scene.get<bool>("poisson.periodic_damping");
+  o.projection.damp_pressure_increment = scene.get<std::string>("poisson.damping") == "increment";
   o.poisson_weights = scene.get<std::string>("poisson.weights") == "prism_slab"
                           ? scene::PoissonWeights::prism_slab
                           : scene::PoissonWeights::standard;

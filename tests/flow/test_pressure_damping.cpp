@@ -4,6 +4,11 @@
 // and no divergence: p stays as it is, exactly. With it the Poisson right-hand side gains
 // div(grad p) - lap(p) = -lap(p) (compact Laplacian), so dp = -p up to a constant: one step
 // leaves a uniform pressure and the fluid at rest (to the Poisson tolerance).
+// With damp_pressure_increment (poisson.damping = increment) the term acts on half the last
+// increment, theta (p^n - p^{n-1}) with theta = 1/2, away from open boundaries (here:
+// everywhere): an old mode (last increment zero) stays; a mode that is the last increment goes
+// by the recursion a_{n+1} = a_n - (a_n - a_{n-1}) / 2: 1 -> 1/2 -> 3/4 (to 2/3, no period-2
+// oscillation).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -55,5 +60,50 @@ TEST_CASE("pressure damping removes the odd-even pressure mode in one step, and 
       CHECK(change < 1e-14);  // untouched: the wide operators do not see it
     }
     CHECK(speed < 1e-10);
+  }
+}
+
+TEST_CASE("increment damping acts on half the last increment of the odd-even mode") {
+  const int n = 8;
+  const auto local = test::local_box(test::periodic_box("hexa", n));
+  const double h = 1.0 / n;
+  for (bool fresh : {false, true}) {
+    CAPTURE(fresh);
+    flow::ProjectionOptions options;
+    options.density = 1.2;
+    options.viscosity = 0.01;
+    options.poisson.tolerance = 1e-12;
+    options.boundary = std::make_shared<flow::BoundaryConditions>(
+        local, std::vector<flow::BoundarySpec>{}, options.viscosity);
+    options.damp_pressure_increment = true;
+    flow::ProjectionRK4 solver(local, options);
+    flow::FlowState state{flow::VectorField(local.num_local(), Eigen::Vector3d::Zero()),
+                          flow::ScalarField(local.num_local(), 0.0), 0.0};
+    flow::ScalarField mode(local.num_local());
+    for (int i = 0; i < local.num_local(); ++i) {
+      const auto& x = local.position[i];
+      const long parity = std::lround(x.x() / h) + std::lround(x.y() / h) + std::lround(x.z() / h);
+      mode[i] = parity % 2 == 0 ? 1.0 : -1.0;
+    }
+    state.pressure = mode;
+    // fresh: the mode arrived in the last step (dp = p); otherwise it is old (dp = 0).
+    if (fresh) solver.set_pressure_increment(mode);
+    for (double expected : fresh ? std::vector<double>{0.5, 0.75} : std::vector<double>{1, 1}) {
+      solver.step(state, 0.01);
+      // The amplitude on the mode, up to the constant the Poisson solve leaves free.
+      double amplitude = 0, mean = 0, worst = 0, speed = 0;
+      for (int i = 0; i < local.num_owned; ++i)
+        amplitude += state.pressure[i] * mode[i], mean += state.pressure[i];
+      const double count = local.comm.sum(static_cast<double>(local.num_owned));
+      amplitude = local.comm.sum(amplitude) / count, mean = local.comm.sum(mean) / count;
+      for (int i = 0; i < local.num_owned; ++i) {
+        worst = std::max(worst, std::abs(state.pressure[i] - mean - amplitude * mode[i]));
+        speed = std::max(speed, state.velocity[i].norm());
+      }
+      CAPTURE(expected);
+      CHECK(amplitude == doctest::Approx(expected).epsilon(1e-8));
+      CHECK(local.comm.max(worst) < 1e-8);  // nothing but the mode and a constant
+      CHECK(local.comm.max(speed) < 1e-10);
+    }
   }
 }

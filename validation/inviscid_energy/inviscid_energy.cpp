@@ -122,6 +122,8 @@ void run(const Context& ctx, Report& report) {
     flow.start.max_wavenumber = ctx.option_int("max_wavenumber", flow.start.max_wavenumber);
     if (flow.key == "random_pipe" && !ctx.option("pipe_size").empty())
       flow.overrides.push_back("mesh.pipe.size=" + ctx.option("pipe_size"));
+    if (!ctx.option("damping").empty())
+      flow.overrides.push_back("poisson.damping=" + ctx.option("damping"));
 
     if (only != "all" && only != flow.key) continue;
     const auto a = run_energy(ctx, flow, 0.5, steps, 1e9, energy.get());
@@ -169,7 +171,9 @@ Case inviscid_energy_case() {
                               {"all", "taylor_green", "random_box", "random_pipe"}),
            CaseOption::integer("max_wavenumber",
                                "largest wave number of the random fields per period (1)", 1, 8),
-           CaseOption::real("pipe_size", "the pipe's mesh size, m (0.1)", 0.01, 0.5)}};
+           CaseOption::real("pipe_size", "the pipe's mesh size, m (0.1)", 0.01, 0.5),
+           CaseOption::choice("damping", "poisson.damping of the runs (the scenes' own)",
+                              {"pressure", "increment"})}};
 }
 
 }  // namespace valsalva::validation
