@@ -240,9 +240,11 @@ void declare_flow_keys(Schema& s) {
           "What the pressure damping term (Rhie-Chow: with boundary conditions, or with "
           "poisson.periodic_damping) acts on. pressure = p^n everywhere: it also removes steady "
           "odd-even pressure modes, but its energy loss hardly falls with dt and it lets a flux "
-          "through a loaded immersed wall. increment = p^n - p^{n-1} in the cells with no "
-          "boundary node and p^n in those at the boundary: no flux in the interior in a steady "
-          "state and a loss that falls with dt (docs/valve.md, validation/inviscid_energy)");
+          "through a loaded immersed wall. increment = half the last increment, (p^n - "
+          "p^{n-1})/2, except in the cells with a node on an open boundary (not a wall or "
+          "slip), which keep p^n: no flux through the interior in a steady state and a loss "
+          "that falls with dt; steady odd-even modes are left as the undamped projection "
+          "leaves them (docs/valve.md)");
   s.integer("poisson.print_level")
       .def(0)
       .in_range(0, 3)
