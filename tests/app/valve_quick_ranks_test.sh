@@ -18,9 +18,9 @@ ln -s "$src/runs/valve_quick" "$dir/runs/valve_quick"
 mkdir -p "$dir/scenes/data"
 cp "$src/scenes/data/valve_flow_rate.csv" "$dir/scenes/data/"
 sed 's/^end = 1.0$/end = 0.13/' "$src/scenes/valve_quick.toml" > "$dir/scenes/valve_quick.toml"
-printf '\n[poisson]\ntolerance = 1e-12\n' >> "$dir/scenes/valve_quick.toml"
-"$app" run "$dir/scenes/valve_quick.toml" --quiet --out "$dir/np1"
-$mpi -n 2 "$app" run "$dir/scenes/valve_quick.toml" --quiet --out "$dir/np2"
+"$app" run "$dir/scenes/valve_quick.toml" --quiet --out "$dir/np1" --set poisson.tolerance=1e-12
+$mpi -n 2 "$app" run "$dir/scenes/valve_quick.toml" --quiet --out "$dir/np2" \
+  --set poisson.tolerance=1e-12
 paste -d, "$dir/np1/valve.csv" "$dir/np2/valve.csv" | awk -F, '
   FNR == 1 { n = NF / 2; for (i = 1; i <= n; i++) name[i] = $i; next }
   {
