@@ -43,20 +43,13 @@ void RunLoop::install_damping_cells(const mesh::Mesh& mesh, const mesh::DualMetr
   // The coupling (or poisson.damping = increment) leaves the damping of p^n out in some cells:
   // by whole tetrahedra where the Poisson weights are P1 (some negative), by edges where they
   // are two-point weights (non-negative); the slab weights may be negative and have no element
-  // split here.
-  if (options_.poisson_weights == scene::PoissonWeights::prism_slab) {
-    if (options_.projection.damp_pressure_increment)
-      throw RunError(
-          "poisson.damping = increment with poisson.weights = prism_slab: the damping cannot "
-          "be split by cells on slab weights; use poisson.damping = pressure or the standard "
-          "weights",
-          "poisson.damping");
+  // split here (the scene reader refuses them with the increment form).
+  if (options_.poisson_weights == scene::PoissonWeights::prism_slab)
     throw RunError(
         "poisson.weights = prism_slab with immersed structures: the pressure damping cannot be "
         "left out near the markers on slab weights; set immersed.pressure_damping_in_support = "
         "1 or use the standard weights",
         "poisson.weights");
-  }
   const bool tetrahedra = std::all_of(mesh.cell_types.begin(), mesh.cell_types.end(),
                                       [](auto t) { return t == mesh::CellType::tetra; });
   if (tetrahedra)

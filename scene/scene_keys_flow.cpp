@@ -437,6 +437,13 @@ scene::RunOptions flow_run_options(const Scene& scene, const std::filesystem::pa
   p.print_level = scene.get<int>("poisson.print_level");
   o.projection.periodic_pressure_damping = scene.get<bool>("poisson.periodic_damping");
   o.projection.damp_pressure_increment = scene.get<std::string>("poisson.damping") == "increment";
+  // The increment form splits the damping by tetrahedra or by edges with non-negative weights
+  // (flow/damping_cells.hpp); the slab weights may be negative and have no element split.
+  if (o.projection.damp_pressure_increment &&
+      scene.get<std::string>("poisson.weights") == "prism_slab")
+    throw scene.error("poisson.damping",
+                      "damping = \"increment\" cannot be split by cells on the prism_slab weights",
+                      "poisson.damping = \"pressure\", or poisson.weights = \"standard\"");
   o.poisson_weights = scene.get<std::string>("poisson.weights") == "prism_slab"
                           ? scene::PoissonWeights::prism_slab
                           : scene::PoissonWeights::standard;
