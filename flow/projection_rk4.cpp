@@ -270,16 +270,17 @@ void ProjectionRK4::add_damping(double dt, const VectorField& grad_p, const Scal
 }
 
 void ProjectionRK4::remove_previous_pressure_damping(double dt, EdgeField& flux) {
-  // What add_damping() added for p^{n-1} (p^n = p^{n-1} + dp), with the same kept fractions,
-  // is taken back out of the cells (edges) with no node on an open boundary.
+  // What add_damping() added for previous_p_ = p^n - theta dp (step()), with the same kept
+  // fractions, is taken back out of the cells (edges) with no node on an open boundary: there
+  // the damping acts on theta dp.
   const double c = dt / options_.density;
   const auto& prev = previous_p_;
   const auto& grad_prev = grad_previous_p_;
   mark_boundary_nodes();
   if (cells_) {
     // All cells, less those at an open boundary, less the share the support had already left
-    // out (a support cell at an open boundary would lose its kept fraction twice: the leaflets'
-    // kernels do not reach an inlet or an outlet).
+    // out. (A support cell at an open boundary would keep 1 - kept of previous_p_'s damping
+    // instead of none: the leaflets' kernels do not reach an inlet or an outlet.)
     if (every_node_.empty()) every_node_.assign(static_cast<std::size_t>(mesh_.num_local()), 1);
     cells_->remove(every_node_, c, c, grad_prev, prev, flux);
     cells_->remove(open_boundary_, -c, -c, grad_prev, prev, flux);

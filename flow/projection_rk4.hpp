@@ -251,7 +251,8 @@ class ProjectionRK4 {
   void predicted_flux(const VectorField& w, double dt, const ScalarField& p, EdgeField& flux);
   // The damping term over `dt` of pressure p with gradient grad_p, added to flux.
   void add_damping(double dt, const VectorField& grad_p, const ScalarField& p, EdgeField& flux);
-  // damp_pressure_increment: takes the damping of p^{n-1} back out away from the boundary.
+  // damp_pressure_increment: takes the damping of previous_p_ back out away from open
+  // boundaries.
   void remove_previous_pressure_damping(double dt, EdgeField& flux);
   void mark_boundary_nodes();  // fills on_boundary_ and open_boundary_ (once)
   // project_stages: projects stage velocity w (standing at t = t^n + c dt) and leaves its
@@ -267,7 +268,7 @@ class ProjectionRK4 {
   VectorField flux_velocity_;  // the velocity flux_ belongs to (empty: none)
   TensorField grad_flux_;      // velocity gradient of the Hermite face value
   VectorField grad_p_, grad_dp_, rhs_, conv_, stage_;
-  ScalarField previous_p_;           // damp_pressure_increment: p^{n-1} = p^n - dp_ (step())
+  ScalarField previous_p_;           // damp_pressure_increment: p^n - theta dp_ (step())
   VectorField grad_previous_p_;      // its wide gradient
   std::vector<char> every_node_;     // all local nodes marked (DampingCells::remove)
   VectorField subgrid_rhs_;          // the subgrid viscous term with the 4th-order operators
