@@ -20,28 +20,45 @@
 
 using namespace valsalva;
 
+namespace {
+
+constexpr int box_cells = 8;  // even: the checkerboard is periodic
+
+// The fluid at rest on the periodic box with boundary conditions (none needed there; the
+// damping term runs with conditions).
+flow::ProjectionOptions damping_options(const mesh::LocalMesh& local) {
+  flow::ProjectionOptions options;
+  options.density = 1.2;
+  options.viscosity = 0.01;
+  options.poisson.tolerance = 1e-12;
+  options.boundary = std::make_shared<flow::BoundaryConditions>(
+      local, std::vector<flow::BoundarySpec>{}, options.viscosity);
+  return options;
+}
+
+// The odd-even mode (-1)^(i+j+k) at every local node.
+flow::ScalarField checkerboard(const mesh::LocalMesh& local) {
+  const double h = 1.0 / box_cells;
+  flow::ScalarField mode(local.num_local());
+  for (int i = 0; i < local.num_local(); ++i) {
+    const auto& x = local.position[i];
+    const long parity = std::lround(x.x() / h) + std::lround(x.y() / h) + std::lround(x.z() / h);
+    mode[i] = parity % 2 == 0 ? 1.0 : -1.0;
+  }
+  return mode;
+}
+
+}  // namespace
+
 TEST_CASE("pressure damping removes the odd-even pressure mode in one step, and only with it") {
-  const int n = 8;  // even: the checkerboard is periodic
-  const auto local = test::local_box(test::periodic_box("hexa", n));
-  const double h = 1.0 / n;
+  const auto local = test::local_box(test::periodic_box("hexa", box_cells));
   for (bool damping : {true, false}) {
     CAPTURE(damping);
-    flow::ProjectionOptions options;
-    options.density = 1.2;
-    options.viscosity = 0.01;
-    options.poisson.tolerance = 1e-12;
-    // No patch needs a condition on the periodic box; the damping term runs with conditions.
-    options.boundary = std::make_shared<flow::BoundaryConditions>(
-        local, std::vector<flow::BoundarySpec>{}, options.viscosity);
+    auto options = damping_options(local);
     options.pressure_damping = damping;
     flow::ProjectionRK4 solver(local, options);
     flow::FlowState state{flow::VectorField(local.num_local(), Eigen::Vector3d::Zero()),
-                          flow::ScalarField(local.num_local(), 0.0), 0.0};
-    for (int i = 0; i < local.num_local(); ++i) {
-      const auto& x = local.position[i];
-      const long parity = std::lround(x.x() / h) + std::lround(x.y() / h) + std::lround(x.z() / h);
-      state.pressure[i] = parity % 2 == 0 ? 1.0 : -1.0;
-    }
+                          checkerboard(local), 0.0};
     const auto p0 = state.pressure;
     solver.step(state, 0.01);
     double lo = 1e300, hi = -1e300, change = 0, speed = 0;
@@ -64,28 +81,14 @@ TEST_CASE("pressure damping removes the odd-even pressure mode in one step, and 
 }
 
 TEST_CASE("increment damping acts on half the last increment of the odd-even mode") {
-  const int n = 8;
-  const auto local = test::local_box(test::periodic_box("hexa", n));
-  const double h = 1.0 / n;
+  const auto local = test::local_box(test::periodic_box("hexa", box_cells));
+  const auto mode = checkerboard(local);
   for (bool fresh : {false, true}) {
     CAPTURE(fresh);
-    flow::ProjectionOptions options;
-    options.density = 1.2;
-    options.viscosity = 0.01;
-    options.poisson.tolerance = 1e-12;
-    options.boundary = std::make_shared<flow::BoundaryConditions>(
-        local, std::vector<flow::BoundarySpec>{}, options.viscosity);
+    auto options = damping_options(local);
     options.damp_pressure_increment = true;
     flow::ProjectionRK4 solver(local, options);
-    flow::FlowState state{flow::VectorField(local.num_local(), Eigen::Vector3d::Zero()),
-                          flow::ScalarField(local.num_local(), 0.0), 0.0};
-    flow::ScalarField mode(local.num_local());
-    for (int i = 0; i < local.num_local(); ++i) {
-      const auto& x = local.position[i];
-      const long parity = std::lround(x.x() / h) + std::lround(x.y() / h) + std::lround(x.z() / h);
-      mode[i] = parity % 2 == 0 ? 1.0 : -1.0;
-    }
-    state.pressure = mode;
+    flow::FlowState state{flow::VectorField(local.num_local(), Eigen::Vector3d::Zero()), mode, 0.0};
     // fresh: the mode arrived in the last step (dp = p); otherwise it is old (dp = 0).
     if (fresh) solver.set_pressure_increment(mode);
     for (double expected : fresh ? std::vector<double>{0.5, 0.75} : std::vector<double>{1, 1}) {
