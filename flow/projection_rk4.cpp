@@ -226,6 +226,19 @@ void ProjectionRK4::set_subgrid_viscosity(const ScalarField& nu_sgs) {
   nu_sgs_ = nu_sgs;
 }
 
+namespace {
+
+// The share of the damping an edge (j, k) keeps on the edge path (no DampingCells): all of it
+// away from the support (undamped empty or neither node marked), else the support's fraction,
+// its boundary's where a node is on the boundary (as DampingCells' tetrahedra do).
+double kept_fraction(const std::vector<char>& undamped, const std::vector<char>& on_boundary,
+                     double kept, double kept_at_boundary, int j, int k) {
+  if (undamped.empty() || !(undamped[j] || undamped[k])) return 1.0;
+  return on_boundary[j] || on_boundary[k] ? kept_at_boundary : kept;
+}
+
+}  // namespace
+
 void ProjectionRK4::predicted_flux(const VectorField& w, double dt, const ScalarField& p,
                                    EdgeField& flux) {
   projection_flux(w, flux);
@@ -261,11 +274,9 @@ void ProjectionRK4::add_damping(double dt, const VectorField& grad_p, const Scal
   add_compact_gradient(mesh_, poisson_weights_, -c, p, damping_flux_);
   for (std::size_t e = 0; e < flux.size(); ++e) {
     const auto [j, k] = mesh_.edges[e];
-    // Edges at the boundary keep their own fraction, as DampingCells' tetrahedra do.
-    const bool reduced = undamped_[j] || undamped_[k];
-    const bool boundary = on_boundary_[j] || on_boundary_[k];
     flux[e] +=
-        (reduced ? (boundary ? kept_damping_at_boundary_ : kept_damping_) : 1.0) * damping_flux_[e];
+        kept_fraction(undamped_, on_boundary_, kept_damping_, kept_damping_at_boundary_, j, k) *
+        damping_flux_[e];
   }
 }
 
@@ -295,10 +306,9 @@ void ProjectionRK4::remove_previous_pressure_damping(double dt, EdgeField& flux)
   for (std::size_t e = 0; e < flux.size(); ++e) {
     const auto [j, k] = mesh_.edges[e];
     if (open_boundary_[j] || open_boundary_[k]) continue;
-    const bool reduced = !undamped_.empty() && (undamped_[j] || undamped_[k]);
-    const bool boundary = on_boundary_[j] || on_boundary_[k];
     flux[e] -=
-        (reduced ? (boundary ? kept_damping_at_boundary_ : kept_damping_) : 1.0) * damping_flux_[e];
+        kept_fraction(undamped_, on_boundary_, kept_damping_, kept_damping_at_boundary_, j, k) *
+        damping_flux_[e];
   }
 }
 
