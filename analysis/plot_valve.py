@@ -3,9 +3,15 @@
 ratio, leaflet tips, with the reference instants of the design note marked (valsalva plot-valve);
 and, when the run has phase-averaged line statistics statistics/p1.csv ... p3.csv (the PIV
 profiles of scenes/valve_*.toml), the mean and RMS streamwise velocity across them at ES, PS, MS
-and LS (profiles.png, profiles.csv). Writes plotted.json (instants and ranges) next to the PNGs,
+and LS (profiles.png, profiles.csv); and, when the run has a lumped circulation (outlets.csv with
+inlet and outlet pressures), the ventricular and aortic pressure and the valve flow against time
+(circulation.png) with per-cycle volumes and pressures (circulation_cycles.csv,
+circulation_cycles.py). Writes plotted.json (instants and ranges) next to the PNGs,
 for the tests."""
 import argparse, csv, json, math, os, sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import circulation_cycles  # noqa: E402
 
 INSTANTS = [("t1 opening", 0.15), ("t2 ES", 0.20), ("t3 PS", 0.26), ("t4 MS", 0.35),
             ("t5 LS", 0.55), ("t6 closing", 0.80)]
@@ -85,12 +91,48 @@ def profiles(run_dir, out_dir, plt, save):
             f.write("{},{},{:.6g},{:.6e},{:.6e},{:.6e},{:.0f}\n".format(*row))
 
 
+def circulation(run_dir, out_dir, plt, save, mark, period, offset, diastole):
+    """Ventricle and aorta pressure and the valve flow (outlets.csv), and per-cycle figures."""
+    path = os.path.join(run_dir, "outlets.csv")
+    if not os.path.exists(path):
+        return
+    with open(path, newline="") as f:
+        header = f.readline().strip().split(",")
+    if "pressure_inlet" not in header or "pressure_outlet" not in header:
+        return
+    try:
+        d = circulation_cycles.read_outlets(path)
+    except circulation_cycles.OutletsError as e:
+        fail(str(e))
+    mmhg = circulation_cycles.MMHG
+    t = d["time"]
+    pv = [p / mmhg for p in d["pressure_inlet"]]
+    pa = [p / mmhg for p in d["pressure_outlet"]]
+    q = [-x * 1e6 for x in d["flux_inlet"]]
+    fig, (ap, aq) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
+    ap.plot(t, pv, lw=0.8, label="ventricle (inlet)")
+    ap.plot(t, pa, lw=0.8, label="aorta (outlet)")
+    ap.set_ylabel("pressure (mmHg)")
+    ap.legend(fontsize=8)
+    aq.plot(t, q, lw=0.8, color="C2")
+    aq.axhline(0, color="0.5", lw=0.5)
+    aq.set(xlabel="t (s)", ylabel="valve flow (mL/s, + forward)")
+    mark(ap)
+    mark(aq)
+    save(fig, "circulation.png",
+         {"ventricle_mmHg": pv, "aorta_mmHg": pa, "valve_flow_mL_s": q})
+    circulation_cycles.write(circulation_cycles.cycles(d, period, offset, diastole),
+                             os.path.join(out_dir, "circulation_cycles.csv"))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("run_dir")
     ap.add_argument("out_dir")
     ap.add_argument("--period", type=float, default=1.0)
     ap.add_argument("--cycle-offset", type=float, default=0.0)
+    ap.add_argument("--diastole", type=float, default=0.6,
+                    help="fraction of the period from which the diastolic mean flow is taken")
     a = ap.parse_args()
     import matplotlib
     matplotlib.use("Agg")
@@ -175,6 +217,7 @@ def main():
             save(fig, "tpg_cycles.png",
                  {"tpg_max_mmHg": c["tpg_max_mmHg"], "tpg_min_mmHg": c["tpg_min_mmHg"]})
     profiles(a.run_dir, a.out_dir, plt, save)
+    circulation(a.run_dir, a.out_dir, plt, save, mark, a.period, a.cycle_offset, a.diastole)
     with open(os.path.join(a.out_dir, "plotted.json"), "w") as f:
         json.dump(report, f, indent=1)
 

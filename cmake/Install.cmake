@@ -9,7 +9,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/validation/ DESTINATION ${CMAKE_INSTALL_
   PATTERN "*.gdiag" PATTERN "*.es" PATTERN "*.f_t" PATTERN "*.md" PATTERN "*.json"
   PATTERN "bench" EXCLUDE)
 install(FILES ${PROJECT_SOURCE_DIR}/analysis/plot_piv.py ${PROJECT_SOURCE_DIR}/analysis/plot_psd.py
-  ${PROJECT_SOURCE_DIR}/analysis/plot_valve.py
+  ${PROJECT_SOURCE_DIR}/analysis/plot_valve.py ${PROJECT_SOURCE_DIR}/analysis/circulation_cycles.py
   DESTINATION ${CMAKE_INSTALL_DATADIR}/valsalva/analysis)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenes/ DESTINATION ${CMAKE_INSTALL_DATADIR}/valsalva/scenes
   FILES_MATCHING PATTERN "*.toml" PATTERN "*.csv")

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """analysis/plot_valve.py on tests/data/plot_valve: PNGs with a PNG header, the instants where the
-design note puts them, and a missing column named with its file and line."""
-import json, os, shutil, subprocess, sys, tempfile
+design note puts them, a missing column named with its file and line, and the per-cycle figures of
+a lumped circulation (circulation_cycles.csv) against their closed forms on a made-up outlets.csv."""
+import csv, json, math, os, shutil, subprocess, sys, tempfile
 
 script, data = sys.argv[1], sys.argv[2]
 out = tempfile.mkdtemp()
@@ -45,6 +46,44 @@ try:
     assert abs(float(rows[4].split(",")[4]) - 2.6) < 1e-12, rows[4]  # bin 26, first point
     plotted = json.load(open(os.path.join(prof, "plotted.json")))["plots"]["profiles.png"]
     assert sorted(plotted) == ["p1_ES_mean_w", "p1_PS_mean_w"], plotted
+    # A made-up circulation, 2.5 periods of 1 s sampled every 1e-4 s: the inlet's outward flux
+    # -A sin(2 pi t) in systole (t mod 1 < 0.5) and -B sin(2 pi t) (> 0, backward) in diastole,
+    # so per cycle the forward volume is A / pi, the regurgitant one B / pi and the mean flow
+    # over 0.6-1 s B (1 + cos(0.2 pi)) / (0.8 pi); the aorta at P0 + P1 cos(2 pi t), the
+    # ventricle at V0 + V1 sin(2 pi t). Expected: two complete cycles, each with those figures.
+    A, B, P0, P1, V0, V1, mmhg = 3e-4, 2e-6, 1.2e4, 2.5e3, 8e3, 6e3, 133.322387415
+    circ = os.path.join(out, "circ")
+    os.mkdir(circ)
+    shutil.copy(os.path.join(data, "valve.csv"), circ)
+    with open(os.path.join(circ, "outlets.csv"), "w") as f:
+        f.write("step,time,flux_inlet,pressure_inlet,volume_inlet,flux_outlet,pressure_outlet\n")
+        for k in range(25001):
+            t = k * 1e-4
+            q = -(A if t % 1.0 < 0.5 else B) * math.sin(2 * math.pi * t)
+            f.write(f"{k},{t!r},{q!r},{V0 + V1 * math.sin(2 * math.pi * t)!r},1e-4,{-q!r},"
+                    f"{P0 + P1 * math.cos(2 * math.pi * t)!r}\n")
+    subprocess.run(["/usr/bin/python3", script, circ, circ], check=True)
+    with open(os.path.join(circ, "circulation.png"), "rb") as f:
+        assert f.read(8) == b"\x89PNG\r\n\x1a\n"
+    cycles = list(csv.DictReader(open(os.path.join(circ, "circulation_cycles.csv"))))
+    assert len(cycles) == 2, cycles
+    # Tolerance: the trapezoidal rule on 1e-4 s samples errs by pi^2 h^2 / 3 = 3.3e-8 relative
+    # on a half sine's integral (Euler-Maclaurin); the extremes are samples (t = 0, 0.25).
+    expected = {"forward_volume_mL": A / math.pi * 1e6, "regurgitant_volume_mL": B / math.pi * 1e6,
+                "regurgitant_fraction": B / A,
+                "aorta_max_mmHg": (P0 + P1) / mmhg, "aorta_min_mmHg": (P0 - P1) / mmhg,
+                "aorta_mean_mmHg": P0 / mmhg, "ventricle_max_mmHg": (V0 + V1) / mmhg,
+                "diastolic_mean_flow_mL_s": B * (1 + math.cos(0.2 * math.pi)) / (0.8 * math.pi) * 1e6}
+    for row in cycles:
+        for key, value in expected.items():
+            got = float(row[key])
+            assert abs(got - value) <= 1e-7 * abs(value), (row["cycle"], key, got, value)
+    assert abs(float(cycles[1]["net_volume_change_mL"])) < 1e-9, cycles[1]
+    lines = open(os.path.join(circ, "outlets.csv")).read().splitlines()
+    lines[3] = lines[3].replace(",", ",x", 1)
+    open(os.path.join(circ, "outlets.csv"), "w").write("\n".join(lines) + "\n")
+    r = subprocess.run(["/usr/bin/python3", script, circ, circ], capture_output=True, text=True)
+    assert r.returncode != 0 and "outlets.csv:4: column 'time'" in r.stderr, r.stderr
     print("plot_valve script: ok")
 finally:
     shutil.rmtree(out)

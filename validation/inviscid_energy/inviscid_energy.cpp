@@ -11,6 +11,7 @@
 #include <fmt/os.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -124,7 +125,6 @@ void run(const Context& ctx, Report& report) {
       flow.overrides.push_back("mesh.pipe.size=" + ctx.option("pipe_size"));
     if (!ctx.option("damping").empty())
       flow.overrides.push_back("poisson.damping=" + ctx.option("damping"));
-
     if (only != "all" && only != flow.key) continue;
     const auto a = run_energy(ctx, flow, 0.5, steps, 1e9, energy.get());
     const auto b = run_energy(ctx, flow, 0.25, 100 * steps, a.time, energy.get());
@@ -144,19 +144,31 @@ void run(const Context& ctx, Report& report) {
                Check::at_most);
     report.add(flow.label + ": max E/E0 - 1 over the run, CFL 0.25", b.gain, 0, 1e-12,
                Check::at_most);
-    // The loss against dt, after the first 100 steps at CFL 0.5 (while it is small; later the
-    // two runs are different flows): the time discretisation's, so at least first order in dt
-    // (README.md: the approximate projection's O(dt) and the incremental pressure's O(dt^2)).
-    // The Rhie-Chow pressure damping of runs with walls adds an O(dt^0) loss (README.md), so
-    // the pipe's exponent is printed, not asserted: issue 21's target 2 is not met there.
+    // The loss against dt after the first 100 steps at CFL 0.5 (while it is small; later the
+    // runs are different flows), with two more halvings of the step run to that time only. A
+    // loss from the time discretisation vanishes with dt at least linearly (README.md: the
+    // approximate projection's O(dt), the incremental pressure's O(dt^2), RK4's damping of the
+    // grid-scale modes). The pipe's first pair is not yet in that regime (README.md), so its
+    // exponent is printed there and asserted from CFL 0.25 down, like every flow's.
     const double t_early = a.times.at(std::min<std::size_t>(99, a.times.size() - 1));
-    const double exponent = std::log(a.loss_at(t_early) / b.loss_at(t_early)) / std::log(2.0);
-    if (rank == 0)
-      fmt::print("inviscid_energy {}: at t = {:.4g}, loss {:.4e} / {:.4e}, dt exponent {:.3f}\n",
-                 flow.label, t_early, a.loss_at(t_early), b.loss_at(t_early), exponent);
-    if (flow.key != "random_pipe")
-      report.add(flow.label + ": dt exponent of the loss after 100 steps at CFL 0.5", exponent, 1.0,
-                 0, Check::at_least);
+    const auto c = run_energy(ctx, flow, 0.125, 100 * steps, t_early, nullptr);
+    const auto d = run_energy(ctx, flow, 0.0625, 100 * steps, t_early, nullptr);
+    const std::array<const EnergyRun*, 4> levels{&a, &b, &c, &d};
+    const std::array<double, 4> cfl{0.5, 0.25, 0.125, 0.0625};
+    for (std::size_t k = 0; k + 1 < levels.size(); ++k) {
+      const double coarse = levels[k]->loss_at(t_early), fine = levels[k + 1]->loss_at(t_early);
+      const double exponent = std::log2(coarse / fine);
+      if (rank == 0)
+        fmt::print(
+            "inviscid_energy {}: at t = {:.4g}, loss {:.4e} / {:.4e} at CFL {} / {}, dt "
+            "exponent {:.3f}\n",
+            flow.label, t_early, coarse, fine, cfl[k], cfl[k + 1], exponent);
+      if (k > 0 || flow.key != "random_pipe")
+        report.add(
+            fmt::format("{}: dt exponent of the loss after 100 steps at CFL 0.5, CFL {} / {}",
+                        flow.label, cfl[k], cfl[k + 1]),
+            exponent, 1.0, 0, Check::at_least);
+    }
   }
 }
 
