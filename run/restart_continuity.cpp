@@ -27,12 +27,22 @@ void flatten(const toml::table& table, const std::string& prefix,
         prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
     if (const auto* sub = node.as_table()) {
       flatten(*sub, path, out);
+    } else if (const auto* real = node.as_floating_point()) {
+      out[path] =
+          fmt::format("{}", real->get());  // shortest round trip: 0.1, not 0.10000000000000001
     } else {
       std::ostringstream text;
       node.visit([&](const auto& v) { text << v; });
       out[path] = text.str();
     }
   }
+}
+
+// The time-step rule: a smaller step lets a run go on past a stretch that diverged, from its
+// last good checkpoint. The continuation is then not bitwise the one the old rule would make.
+bool is_step_rule(const std::string& key) {
+  static const std::regex rule("time\\.(cfl|fourier|dt)");
+  return std::regex_match(key, rule);
 }
 
 bool may_change(const std::string& key) {
@@ -42,12 +52,17 @@ bool may_change(const std::string& key) {
       "time\\.(end|max_steps)|output\\.(interval|interval_unit|checkpoint_every_steps|"
       "checkpoint_every_minutes|checkpoint_keep|checkpoint_on_signal)|run\\..*|partition\\..*|"
       "sample\\..*|wall_shear\\.start_time");
-  return std::regex_match(key, allowed);
+  return std::regex_match(key, allowed) || is_step_rule(key);
 }
 
-}  // namespace
+struct KeyChange {
+  std::string key, before, after;
+};
 
-std::string restart_scene_change(const fs::path& recorded, const scene::Scene& scene) {
+// Every key whose value differs between the recorded scene and `scene`; an error message when the
+// recorded scene does not parse.
+std::string scene_changes(const fs::path& recorded, const scene::Scene& scene,
+                          std::vector<KeyChange>& changes) {
   toml::table old_table;
   try {
     old_table = toml::parse_file(recorded.string());
@@ -67,7 +82,6 @@ std::string restart_scene_change(const fs::path& recorded, const scene::Scene& s
   std::map<std::string, std::string> before, after;
   flatten(old_table, "", before);
   flatten(scene.table(), "", after);
-  std::vector<std::string> changes;
   auto value = [](const std::map<std::string, std::string>& m, const std::string& k) {
     const auto it = m.find(k);
     return it == m.end() ? std::string("(absent)") : it->second;
@@ -75,19 +89,41 @@ std::string restart_scene_change(const fs::path& recorded, const scene::Scene& s
   std::map<std::string, bool> keys;
   for (const auto& [k, v] : before) keys[k] = true;
   for (const auto& [k, v] : after) keys[k] = true;
-  for (const auto& [k, unused] : keys) {
-    const std::string a = value(before, k), b = value(after, k);
-    if (a != b && !may_change(k))
-      changes.push_back(
-          fmt::format("{} = {} in the run, {} in {}", k, a, b, scene.file().string()));
-  }
+  for (const auto& [k, unused] : keys)
+    if (value(before, k) != value(after, k))
+      changes.push_back({k, value(before, k), value(after, k)});
+  return {};
+}
+
+}  // namespace
+
+std::string restart_scene_change(const fs::path& recorded, const scene::Scene& scene) {
+  std::vector<KeyChange> all;
+  if (auto error = scene_changes(recorded, scene, all); !error.empty()) return error;
+  std::vector<std::string> changes;
+  for (const auto& c : all)
+    if (!may_change(c.key))
+      changes.push_back(fmt::format("{} = {} in the run, {} in {}", c.key, c.before, c.after,
+                                    scene.file().string()));
   if (changes.empty()) return {};
   std::string message = fmt::format(
       "restart: the scene differs from the run's ({}) in keys a restart must not change "
-      "(only time.end, time.max_steps, output intervals and checkpoints, run.*, partition.*, "
-      "[sample.*] sections and wall_shear.start_time may change):",
+      "(only time.end, time.max_steps, the time-step rule time.cfl, time.fourier and time.dt, "
+      "output intervals and checkpoints, run.*, partition.*, [sample.*] sections and "
+      "wall_shear.start_time may change):",
       recorded.string());
   for (const auto& c : changes) message += "\n  " + c;
+  return message;
+}
+
+std::string restart_step_rule_change(const fs::path& recorded, const scene::Scene& scene) {
+  std::vector<KeyChange> all;
+  if (!scene_changes(recorded, scene, all).empty()) return {};
+  std::string message;
+  for (const auto& c : all)
+    if (is_step_rule(c.key))
+      message +=
+          fmt::format("{}{} {} -> {}", message.empty() ? "" : ", ", c.key, c.before, c.after);
   return message;
 }
 

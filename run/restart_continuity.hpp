@@ -1,6 +1,7 @@
 // Continuing a run in its own directory from one of its checkpoints (`valsalva run --restart`)
 // so that the directory ends up as an uninterrupted run would have left it:
 // - the scene may change only in what does not alter the computed history (restart_scene_change),
+//   or in the time-step rule, which the restart then reports (restart_step_rule_change);
 //   and each restart's scene is recorded next to the first (resolved_scene_restart_<step>.toml);
 // - every CSV series the run appends to is cut back to the checkpoint (truncate_series), so rows
 //   written after it by the interrupted run are not repeated;
@@ -20,13 +21,20 @@
 
 namespace valsalva::run {
 
-// Keys a restart may change: time.end, time.max_steps, the output intervals and checkpoint
-// settings, run.* (progress and where results go), partition.* (results agree to round-off
-// across partitions, as across rank counts), and [sample.<name>] sections added or removed (each
-// writes files of its own). Every other difference between the recorded scene
-// (the run directory's resolved_scene.toml) and `scene` is refused: the message names each key
-// and both values (a key only one of them has shows "(absent)"). Empty when none.
+// Keys a restart may change: time.end, time.max_steps, the time-step rule (time.cfl,
+// time.fourier, time.dt: a smaller step to go on past a stretch that diverged, from its last
+// good checkpoint), the output intervals and checkpoint settings, run.* (progress and where
+// results go), partition.* (results agree to round-off across partitions, as across rank
+// counts), and [sample.<name>] sections added or removed (each writes files of its own). Every
+// other difference between the recorded scene (the run directory's resolved_scene.toml) and
+// `scene` is refused: the message names each key and both values (a key only one of them has
+// shows "(absent)"). Empty when none.
 std::string restart_scene_change(const std::filesystem::path& recorded, const scene::Scene& scene);
+
+// The time-step rule's changes, "time.cfl 0.1 -> 0.05, ..." (empty when none): the restart is
+// then not the bitwise continuation of the run, and says so.
+std::string restart_step_rule_change(const std::filesystem::path& recorded,
+                                     const scene::Scene& scene);
 
 // Outputs of earlier restarts from checkpoint step >= `step` (fields_restart_<S>.xmf and its
 // HDF5 files, structures/<name>_restart_<S>*): they cover times after the checkpoint, which this

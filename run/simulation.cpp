@@ -347,6 +347,14 @@ Simulation::Simulation(const scene::Scene& scene_in, const RunRequest& request, 
     if (p.rank == 0 && p.print)
       fmt::print("restart: {} (step {}, t = {:.9g} s)\n", p.checkpoint->string(), start_step,
                  start.time);
+    if (p.in_place && p.rank == 0)
+      if (const auto rule = run::restart_step_rule_change(
+              p.run_path / run::RunDirectory::resolved_scene_name, scene);
+          !rule.empty())
+        fmt::print(
+            "restart: the time-step rule changes ({}): from here the run is not the "
+            "bitwise continuation of the one before\n",
+            rule);
   }
   if (valve_options) {  // [valve]
     const auto& ib = p.immersed->structure();

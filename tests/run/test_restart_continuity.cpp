@@ -72,5 +72,30 @@ TEST_CASE("restart_scene_change: keys added since the run was recorded are not a
   const std::string message = run::restart_scene_change(dir / "resolved_scene.toml", changed);
   CHECK(message.find("flow.viscosity") != std::string::npos);
   CHECK(message.find("0.5 in") != std::string::npos);
+  CHECK(run::restart_step_rule_change(dir / "resolved_scene.toml", changed).empty());
+  fs::remove_all(dir);
+}
+
+TEST_CASE("restart_scene_change: the time-step rule may change, and the change is reported") {
+  const fs::path dir =
+      fs::temp_directory_path() / ("valsalva_restart_step_rule_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const scene::Scene scene =
+      scene::parse_scene("[mesh]\nsource = \"box\"\n[time]\ncfl = 0.1\n", dir / "cube.toml");
+  std::ofstream(dir / "resolved_scene.toml") << scene.table();
+  CHECK(run::restart_step_rule_change(dir / "resolved_scene.toml", scene).empty());
+  // A smaller step after a diverged stretch: allowed, and named with both values.
+  const scene::Scene smaller = scene::parse_scene(
+      "[mesh]\nsource = \"box\"\n[time]\ncfl = 0.05\nfourier = 0.1\n", dir / "cube.toml");
+  CHECK(run::restart_scene_change(dir / "resolved_scene.toml", smaller).empty());
+  const std::string rule = run::restart_step_rule_change(dir / "resolved_scene.toml", smaller);
+  CHECK(rule.find("time.cfl 0.1 -> 0.05") != std::string::npos);
+  CHECK(rule.find("time.fourier") != std::string::npos);
+  // Other time keys still may not change.
+  const scene::Scene scheme = scene::parse_scene(
+      "[mesh]\nsource = \"box\"\n[time]\ncfl = 0.1\nscheme = \"rk4_classic\"\n", dir / "cube.toml");
+  CHECK(run::restart_scene_change(dir / "resolved_scene.toml", scheme).find("time.scheme") !=
+        std::string::npos);
   fs::remove_all(dir);
 }
