@@ -59,8 +59,10 @@ void write_scene_docs(std::ostream& out, const Schema& schema) {
          "checkpoint: the CSV series are cut back to the checkpoint's step, the scene is kept as\n"
          "`resolved_scene_restart_<step>.toml`, and only `time.end`, `time.max_steps`, the\n"
          "`output` intervals and checkpoint keys, `[run]`, `[partition]` and `[sample.<name>]`\n"
-         "sections may differ "
-         "from the run's scene; any other change is refused naming the key and both values.\n";
+         "sections, `wall_shear.start_time` and the time-step rule (`time.cfl`, `time.fourier`,\n"
+         "`time.dt`) may differ from the run's scene; any other change is refused naming the key\n"
+         "and both values. A smaller step is how a run that diverged goes on from its last good\n"
+         "checkpoint; the restart then prints that it is no longer the bitwise continuation.\n";
   for (const auto& section : schema.sections()) {
     out << fmt::format("\n## `[{}]`\n\n{}\n", section.path, cell(section.text));
     for (const auto* c : schema.conditions_for(section.pattern))
