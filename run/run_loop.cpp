@@ -301,12 +301,15 @@ void RunLoop::print_progress(const flow::StepReport& report, double dt, double e
 void RunLoop::fail(const std::string& why) {
   const bool written = static_cast<bool>(sink_);
   write_fields("last_good", last_good_);
-  throw RunError(fmt::format("flow run stopped at step {} (t = {:.9g} s): {}; {}", step_,
-                             state_.time, why,
-                             written ? fmt::format("the last good state (t = {:.9g} s) is in "
-                                                   "last_good.xmf of the run directory",
-                                                   last_good_.time)
-                                     : std::string("no field output was configured")));
+  throw RunError(fmt::format(
+      "flow run stopped at step {} (t = {:.9g} s): {}; {}; to go on with a smaller step from a "
+      "checkpoint written before the trouble: valsalva run SCENE --restart "
+      "RUN_DIR/checkpoints/checkpoint_<step>.h5 --set time.cfl=<smaller>",
+      step_, state_.time, why,
+      written ? fmt::format("the last good state (t = {:.9g} s) is in last_good.xmf of the run "
+                            "directory",
+                            last_good_.time)
+              : std::string("no field output was configured")));
 }
 
 RunSummary RunLoop::run() {

@@ -272,6 +272,8 @@ TEST_CASE("a blow-up stops the run with a diagnosis after writing the last good 
     CHECK(what.find("at node") != std::string::npos);
     CHECK(what.find("(x, y, z)") != std::string::npos);
     CHECK(what.find("last_good.xmf") != std::string::npos);
+    CHECK(what.find("--restart RUN_DIR/checkpoints/checkpoint_<step>.h5 --set time.cfl") !=
+          std::string::npos);
   }
   // No output interval: the only field write is the last good state, one step before the end.
   REQUIRE(rec.writes.size() == 1);
