@@ -24,13 +24,18 @@ std::string read(const fs::path& p) {
   return s.str();
 }
 
+// An empty scratch folder of this process under the system's temporary folder.
+fs::path scratch_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
 }  // namespace
 
 TEST_CASE("continue_in_place cuts sections.csv by time and valve.csv by step") {
-  const fs::path dir =
-      fs::temp_directory_path() / ("valsalva_restart_continuity_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = scratch_dir("valsalva_restart_continuity");
   const core::Comm comm(MPI_COMM_WORLD);
   const scene::Scene scene = scene::parse_scene("[mesh]\nsource = \"box\"\n", "cube.toml");
   // Steps 0..4 at dt = 0.1 written by the interrupted run; the checkpoint is at step 2, t = 0.2
@@ -54,10 +59,7 @@ TEST_CASE("continue_in_place cuts sections.csv by time and valve.csv by step") {
 }
 
 TEST_CASE("restart_scene_change: keys added since the run was recorded are not a change") {
-  const fs::path dir =
-      fs::temp_directory_path() / ("valsalva_restart_scene_change_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = scratch_dir("valsalva_restart_scene_change");
   const scene::Scene scene = scene::parse_scene("[mesh]\nsource = \"box\"\n", dir / "cube.toml");
   // The run as an older valsalva recorded it: the resolved scene without time.land_on.
   toml::table old_resolved = scene.table();
@@ -77,10 +79,7 @@ TEST_CASE("restart_scene_change: keys added since the run was recorded are not a
 }
 
 TEST_CASE("restart_scene_change: the time-step rule may change, and the change is reported") {
-  const fs::path dir =
-      fs::temp_directory_path() / ("valsalva_restart_step_rule_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = scratch_dir("valsalva_restart_step_rule");
   const scene::Scene scene =
       scene::parse_scene("[mesh]\nsource = \"box\"\n[time]\ncfl = 0.1\n", dir / "cube.toml");
   std::ofstream(dir / "resolved_scene.toml") << scene.table();
