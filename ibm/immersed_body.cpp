@@ -74,8 +74,30 @@ double ImmersedBody::forces(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
   const auto& X = mesh().X;
   if (spec_.clamp == Clamp::tether)
     for (int a : clamped_) f.col(a) -= spec_.tether_stiffness * (x.col(a) - X.col(a));
-  if (contact_ && min_det > 0) contact_->add_forces(x, f);
+  // min_det is the same on every process (the internal forces are whole on each), so either all
+  // or none take part in the sum.
+  if (contact_ && min_det > 0) {
+    if (share_.parts == 1) {
+      contact_->add_forces(x, f);
+    } else {
+      shared_contact_force_.setZero(3, x.cols());
+      contact_->add_forces(x, shared_contact_force_, nullptr, share_);
+      sum_shares_(std::span<double>(shared_contact_force_.data(), shared_contact_force_.size()));
+      f += shared_contact_force_;
+    }
+  }
   return min_det;
+}
+
+void ImmersedBody::share_contact(structure::ContactShare share,
+                                 std::function<void(std::span<double>)> sum) {
+  if (share.parts < 1 || share.part < 0 || share.part >= share.parts || (share.parts > 1 && !sum))
+    throw std::invalid_argument(fmt::format(
+        "ibm::ImmersedBody '{}': contact share {} of {} (needs 0 <= part < parts and a sum when "
+        "parts > 1)",
+        spec_.name, share.part, share.parts));
+  share_ = share;
+  sum_shares_ = std::move(sum);
 }
 
 structure::ContactSummary ImmersedBody::contact_summary(

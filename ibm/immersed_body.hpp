@@ -19,7 +19,9 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -62,8 +64,13 @@ class ImmersedBody {
                BodySpec spec);
 
   // f (3 x nodes) = internal + tether + contact forces at positions x; returns the smallest
-  // det F. Allocation-free without contact.
+  // det F. Allocation-free without contact. Collective over the processes of share_contact.
   double forces(const Eigen::Ref<const Eigen::Matrix3Xd>& x, Eigen::Ref<Eigen::Matrix3Xd> f) const;
+  // Splits the contact search of forces() over processes that all hold this body (the contact
+  // is most of a closed valve's force cost): each evaluates `share`'s slave faces and `sum`
+  // adds the contact forces of all shares in place, the same result on every process. The
+  // internal forces stay whole on each (they are cheap). share.parts = 1: no split.
+  void share_contact(structure::ContactShare share, std::function<void(std::span<double>)> sum);
   // Sum of the tether forces at x (the reaction of the supports on the solid).
   Eigen::Vector3d tether_force(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const;
   // Stiffness K = -dF/dx at x (internal tangent + k_t on tethered nodes), dof 3*node +
@@ -93,7 +100,10 @@ class ImmersedBody {
   structure::SolidForces forces_;
   BodySpec spec_;
   std::unique_ptr<structure::Contact> contact_;
-  Eigen::VectorXd obstacle_stiffness_;  // Contact::obstacle_stiffness()
+  structure::ContactShare share_;
+  std::function<void(std::span<double>)> sum_shares_;
+  mutable Eigen::Matrix3Xd shared_contact_force_;  // this process's share, then the sum
+  Eigen::VectorXd obstacle_stiffness_;             // Contact::obstacle_stiffness()
   std::vector<int> clamped_;
   std::vector<int> fixed_;
   Eigen::VectorXd nodal_volume_;

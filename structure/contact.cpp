@@ -168,12 +168,14 @@ template <int NF>
 ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
                                  Eigen::Ref<Eigen::Matrix3Xd>* f,
                                  std::vector<Eigen::Triplet<double>>* K,
-                                 std::vector<ContactPoint>* pts) const {
+                                 std::vector<ContactPoint>* pts, ContactShare share) const {
   constexpr int ND = 6 * NF;
   using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, ND, 1>>;
   const int nq = options_.quadrature > 0 ? options_.quadrature : static_cast<int>(mesh_.order) + 2;
   const FaceTables<NF> tables(mesh_.order, nq);
   ContactSummary summary;
+  long slave_face = -1;  // running index of the slave faces, for the share
+  auto mine = [&] { return ++slave_face % share.parts == share.part; };
 
   // Adds a point force (value, and the tangent from its derivatives) to the slave nodes.
   const bool two_pass = options_.formulation == ContactOptions::Formulation::two_pass;
@@ -230,6 +232,7 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
                        double width, double search, double clearance, ContactSurfaceSummary& s,
                        HalfTotals& half, int surface, int h) {
     std::vector<Eigen::Vector3d> centres(M.size()), lo(M.size()), hi(M.size());
+    std::vector<double> reach(M.size());  // largest distance from the centre of a point to test
     std::vector<std::array<V3<double>, NF>> PM(M.size());
     std::vector<std::array<int, NF>> NM(M.size());
     double rmax = 0;
@@ -250,11 +253,13 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
       // A curved Q2 face can bulge beyond its nodes' box: a margin of a quarter of its size.
       lo[m].array() -= search + clearance + 0.25 * r;
       hi[m].array() += search + clearance + 0.25 * r;
+      reach[m] = 1.25 * r + search + clearance;
       rmax = std::max(rmax, r);
     }
     const core::BucketGrid grid(centres, std::max(2 * rmax, 1e-300));
     std::vector<int> candidates;
     for (const FaceRef& fr : S) {
+      if (!mine()) continue;
       const FaceShape<NF>& fs = tables.shape[fr.face];
       std::array<int, NF> ns;
       const auto PS = gather<NF>(mesh_, x, fr, fs, ns);
@@ -263,14 +268,20 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
         double da;
         slave_geometry<double, NF>(fs, sp, PS, xs, da);
         grid.in_box(Eigen::Vector3d(xs[0], xs[1], xs[2]), rmax + search + clearance, candidates);
+        ++summary.slave_points;
         int best = -1;
         Projection pr;
         const Eigen::Vector3d xe(xs[0], xs[1], xs[2]);
         for (int c : candidates) {
           // Broad phase: the closest point projection (a Newton solve) only for faces whose
           // box, widened by the search distance, holds the point.
-          if ((xe.array() < lo[c].array()).any() || (xe.array() > hi[c].array()).any()) continue;
+          // The same margin around the centre: a sphere, tighter than the box along diagonals.
+          if ((xe.array() < lo[c].array()).any() || (xe.array() > hi[c].array()).any() ||
+              (xe - centres[c]).squaredNorm() > reach[c] * reach[c])
+            continue;
           const Projection p = project<NF>(tables.shape[M[c].face], PM[c], xs);
+          ++summary.projections;
+          summary.newton_iterations += p.iterations;
           if (!p.inside || p.gap > clearance + search || p.gap < -search) continue;
           if (best < 0 || std::abs(p.gap) < std::abs(pr.gap)) best = c, pr = p;
         }
@@ -334,6 +345,7 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
     for (int i = 0; i < 3; ++i) shape.p[i] = ob.point[i], shape.d[i] = d[i];
     HalfTotals half;
     for (const FaceRef& fr : ob.faces) {
+      if (!mine()) continue;
       const FaceShape<NF>& fs = tables.shape[fr.face];
       std::array<int, NF> ns;
       const auto PS = gather<NF>(mesh_, x, fr, fs, ns);
@@ -374,9 +386,13 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
 
 ContactSummary Contact::add_forces(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
                                    Eigen::Ref<Eigen::Matrix3Xd> f,
-                                   std::vector<Eigen::Triplet<double>>* K) const {
-  return mesh_.order == HexOrder::q1 ? evaluate<4>(x, &f, K, nullptr)
-                                     : evaluate<9>(x, &f, K, nullptr);
+                                   std::vector<Eigen::Triplet<double>>* K,
+                                   ContactShare share) const {
+  if (share.parts < 1 || share.part < 0 || share.part >= share.parts)
+    throw std::invalid_argument(fmt::format(
+        "structure::Contact: share {} of {} (needs 0 <= part < parts)", share.part, share.parts));
+  return mesh_.order == HexOrder::q1 ? evaluate<4>(x, &f, K, nullptr, share)
+                                     : evaluate<9>(x, &f, K, nullptr, share);
 }
 
 ContactSummary Contact::summary(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const {

@@ -108,6 +108,9 @@ struct ContactSummary {
   std::vector<ContactSurfaceSummary> surfaces;
   double min_gap = std::numeric_limits<double>::infinity();  // over all surfaces
   double force = 0, area = 0, max_pressure = 0;              // sums / max over all surfaces
+  // Work of the evaluation (benchmarks): slave Gauss points searched, closest-point projections
+  // (Newton solves) run for them, and the Newton iterations of those.
+  long slave_points = 0, projections = 0, newton_iterations = 0;
 };
 
 // One slave Gauss point with a closest point within the search radius (for plots and tests).
@@ -132,6 +135,13 @@ std::vector<ContactPair> pairs_between(const SolidMesh& mesh,
 // E for the penalty: 3 dP_xy/dF_xy at F = I.
 double small_strain_modulus(const Material& material);
 
+// The part of the slave faces one process evaluates: faces part, part + parts, part + 2 parts,
+// ... in the order of the pairs, halves and obstacles (round robin), so that ranks that all hold
+// the whole structure can split the contact search and sum their forces.
+struct ContactShare {
+  int part = 0, parts = 1;
+};
+
 class Contact {
  public:
   // Throws, naming the pair, if a pair's surfaces share a node or a surface is empty.
@@ -140,11 +150,13 @@ class Contact {
 
   bool empty() const { return pairs_.empty() && obstacles_.empty(); }
   // Adds the contact forces (acting on the nodes, like SolidForces' internal forces) to f; when
-  // K is given, appends the tangent -df/dx as triplets (dof 3 * node + component).
+  // K is given, appends the tangent -df/dx as triplets (dof 3 * node + component). With a
+  // share, only the forces (and summary) of that share's slave faces.
   // Allocates (search grid, candidate lists).
   ContactSummary add_forces(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
                             Eigen::Ref<Eigen::Matrix3Xd> f,
-                            std::vector<Eigen::Triplet<double>>* K = nullptr) const;
+                            std::vector<Eigen::Triplet<double>>* K = nullptr,
+                            ContactShare share = {}) const;
   // The summary alone (no forces).
   ContactSummary summary(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const;
   std::vector<ContactPoint> points(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const;
@@ -163,7 +175,7 @@ class Contact {
   template <int NF>
   ContactSummary evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
                           Eigen::Ref<Eigen::Matrix3Xd>* f, std::vector<Eigen::Triplet<double>>* K,
-                          std::vector<ContactPoint>* pts) const;
+                          std::vector<ContactPoint>* pts, ContactShare share = {}) const;
 };
 
 }  // namespace valsalva::structure

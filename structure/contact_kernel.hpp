@@ -98,17 +98,29 @@ struct FaceShape {
       }
     }
   }
-  // Second derivatives (double only: they enter the projection's Newton matrix).
-  void eval2(const std::array<V3<double>, NF>& P, double s, double t, V3<double>& xss,
-             V3<double>& xst, V3<double>& xtt) const {
-    xss = xst = xtt = {0, 0, 0};
+  // Position, first and second derivatives at (s, t) in one pass (double only: the projection's
+  // Newton iteration). The 1D bases are evaluated once per coordinate, not once per node.
+  void eval_newton(const std::array<V3<double>, NF>& P, double s, double t, V3<double>& x,
+                   V3<double>& xs, V3<double>& xt, V3<double>& xss, V3<double>& xst,
+                   V3<double>& xtt) const {
+    std::array<double, 3> ls, ds, dds, lt, dt, ddt;  // indexed by the node coordinate + 1
+    for (int c = -1; c <= 1; ++c) {
+      ls[c + 1] = lagrange(order, c, s), ds[c + 1] = lagrange_d(order, c, s);
+      lt[c + 1] = lagrange(order, c, t), dt[c + 1] = lagrange_d(order, c, t);
+      dds[c + 1] = ddt[c + 1] = lagrange_dd(order, c);
+    }
+    x = xs = xt = xss = xst = xtt = {0, 0, 0};
     for (int a = 0; a < NF; ++a) {
-      const double ls = lagrange(order, cs[a], s), lt = lagrange(order, ct[a], t);
-      const double ds = lagrange_d(order, cs[a], s), dt = lagrange_d(order, ct[a], t);
+      const int i_s = cs[a] + 1, i_t = ct[a] + 1;
+      const double n = ls[i_s] * lt[i_t], ns = ds[i_s] * lt[i_t], nt = ls[i_s] * dt[i_t],
+                   nss = dds[i_s] * lt[i_t], nst = ds[i_s] * dt[i_t], ntt = ls[i_s] * ddt[i_t];
       for (int i = 0; i < 3; ++i) {
-        xss[i] += lagrange_dd(order, cs[a]) * lt * P[a][i];
-        xst[i] += ds * dt * P[a][i];
-        xtt[i] += ls * lagrange_dd(order, ct[a]) * P[a][i];
+        x[i] += n * P[a][i];
+        xs[i] += ns * P[a][i];
+        xt[i] += nt * P[a][i];
+        xss[i] += nss * P[a][i];
+        xst[i] += nst * P[a][i];
+        xtt[i] += ntt * P[a][i];
       }
     }
   }
@@ -121,6 +133,7 @@ struct Projection {
   bool inside = false;
   double s = 0, t = 0, gap = 0;
   double Jinv[2][2] = {{0, 0}, {0, 0}};  // inverse of dR/d(s, t) at the solution
+  int iterations = 0;                    // Newton iterations taken (work counter)
 };
 
 template <int NF>
@@ -131,9 +144,9 @@ Projection project(const FaceShape<NF>& f, const std::array<V3<double>, NF>& P,
   bool converged = false;
   int clamped = 0;
   for (int it = 0; it < 25; ++it) {
+    pr.iterations = it + 1;
     V3<double> x, xs, xt, xss, xst, xtt;
-    f.eval(P, s, t, x, xs, xt);
-    f.eval2(P, s, t, xss, xst, xtt);
+    f.eval_newton(P, s, t, x, xs, xt, xss, xst, xtt);
     const V3<double> d = minus(xp, x);
     const double R0 = dot(d, xs), R1 = dot(d, xt);
     const double J00 = -dot(xs, xs) + dot(d, xss), J01 = -dot(xs, xt) + dot(d, xst),
@@ -152,6 +165,10 @@ Projection project(const FaceShape<NF>& f, const std::array<V3<double>, NF>& P,
     // closed valve ran all 25 iterations.
     clamped = std::abs(s) == 2.0 || std::abs(t) == 2.0 ? clamped + 1 : 0;
     if (clamped == 3) return pr;
+    // Converging outside the face: with Newton's quadratic convergence a step below 1e-4 leaves
+    // s and t within about 1e-8 of their limit, so |s| or |t| above 1 + 1e-2 is never accepted.
+    if (std::abs(ds) + std::abs(dt) < 1e-4 && std::max(std::abs(s), std::abs(t)) > 1 + 1e-2)
+      return pr;
     if (std::abs(ds) + std::abs(dt) < 1e-13) {
       converged = true;
       break;

@@ -130,6 +130,77 @@ TEST_CASE("gap to a curved Q2 surface against the analytic distance to the cylin
   CHECK(err < 5e-6);
 }
 
+namespace {
+
+// A curved face (Q1 or Q2) of the curved-shell kind: nodes of a cylinder r = 1 over 0..40 degrees
+// in s and 0..0.3 in t, plus a fixed wobble so that no coefficient is special.
+template <int NF>
+std::array<contact_detail::V3<double>, NF> curved_face(const contact_detail::FaceShape<NF>& f) {
+  std::array<contact_detail::V3<double>, NF> P;
+  for (int a = 0; a < NF; ++a) {
+    const double s = f.cs[a], t = f.ct[a], th = 0.35 * (1 + s) / 2;
+    P[a] = {std::cos(th) + 0.01 * s * t, std::sin(th), 0.15 * (1 + t) + 0.02 * s * s};
+  }
+  return P;
+}
+
+template <int NF>
+void check_newton_evaluation(HexOrder order) {
+  using V = contact_detail::V3<double>;
+  const contact_detail::FaceShape<NF> f(order, 4);
+  const auto P = curved_face(f);
+  double err_first = 0, err_second = 0;
+  for (double s : {-0.9, -0.2, 0.35, 1.0})
+    for (double t : {-1.0, 0.1, 0.7}) {
+      V x, xs, xt, xss, xst, xtt, y, ys, yt;
+      f.eval_newton(P, s, t, x, xs, xt, xss, xst, xtt);
+      f.eval(P, s, t, y, ys, yt);
+      for (int i = 0; i < 3; ++i)
+        err_first = std::max(
+            {err_first, std::abs(x[i] - y[i]), std::abs(xs[i] - ys[i]), std::abs(xt[i] - yt[i])});
+      // Second derivatives against central differences of the tangents (exact for quadratics).
+      const double h = 1e-3;
+      V p, ps_p, pt_p, m, ps_m, pt_m, q, qs, qt_p, r, rs, qt_m;
+      f.eval(P, s + h, t, p, ps_p, pt_p);
+      f.eval(P, s - h, t, m, ps_m, pt_m);
+      f.eval(P, s, t + h, q, qs, qt_p);
+      f.eval(P, s, t - h, r, rs, qt_m);
+      for (int i = 0; i < 3; ++i)
+        err_second = std::max({err_second, std::abs(xss[i] - (ps_p[i] - ps_m[i]) / (2 * h)),
+                               std::abs(xst[i] - (pt_p[i] - pt_m[i]) / (2 * h)),
+                               std::abs(xtt[i] - (qt_p[i] - qt_m[i]) / (2 * h))});
+    }
+  CHECK(err_first < 1e-14);
+  CHECK(err_second < 1e-9);
+}
+
+}  // namespace
+
+TEST_CASE(
+    "the projection's one-pass evaluation equals the face's position, tangents and their "
+    "derivatives (Q1 and Q2)") {
+  check_newton_evaluation<4>(HexOrder::q1);
+  check_newton_evaluation<9>(HexOrder::q2);
+}
+
+TEST_CASE("projection: a closest point just inside the face is found, one just outside refused") {
+  // A flat Q2 face whose node at face coordinates (s, t) sits at (s, t, 0): points above (x, y)
+  // project at s = x, t = y, their height the gap's magnitude.
+  const contact_detail::FaceShape<9> f(HexOrder::q2, 4);
+  std::array<contact_detail::V3<double>, 9> P;
+  for (int a = 0; a < 9; ++a) P[a] = {double(f.cs[a]), double(f.ct[a]), 0.0};
+  for (double x : {0.3, 0.999, 1.001, 1.02, 1.5, 3.0}) {
+    const auto pr = contact_detail::project<9>(f, P, {x, -0.4, 0.05});
+    CAPTURE(x);
+    CHECK(pr.inside == (x <= 1.0));
+    if (pr.inside) {
+      CHECK(pr.s == doctest::Approx(x).epsilon(1e-12));
+      CHECK(pr.t == doctest::Approx(-0.4).epsilon(1e-12));
+      CHECK(std::abs(pr.gap) == doctest::Approx(0.05).epsilon(1e-12));
+    }
+  }
+}
+
 TEST_CASE("contact tangent equals minus the derivative of the force (central differences)") {
   for (HexOrder order : {HexOrder::q1, HexOrder::q2}) {
     CAPTURE(static_cast<int>(order));
@@ -174,6 +245,38 @@ TEST_CASE("contact tangent equals minus the derivative of the force (central dif
       CHECK(err < 1e-8);
     }
   }
+}
+
+TEST_CASE("shares of the slave faces sum to the whole contact force; a bad share is refused") {
+  // The perturbed blocks in contact, with a rigid wall too, so that both loops are split.
+  const SolidMesh m = two_blocks(HexOrder::q2, 0.0);
+  RigidObstacle floor;
+  floor.name = "floor";
+  floor.point = Vec3(0, 0, 0.01);
+  floor.faces = m.surface_set("lower_w0");
+  const Contact contact(m, *kMaterial, {blocks_pair(m)}, {floor}, {});
+  const Eigen::Matrix3Xd x = perturbed(m, 7);
+  Eigen::Matrix3Xd whole = Eigen::Matrix3Xd::Zero(3, m.num_nodes());
+  contact.add_forces(x, whole);
+  REQUIRE(whole.cwiseAbs().maxCoeff() > 0);
+  for (int parts : {2, 3}) {
+    CAPTURE(parts);
+    Eigen::Matrix3Xd sum = Eigen::Matrix3Xd::Zero(3, m.num_nodes());
+    int nonzero_shares = 0;
+    for (int part = 0; part < parts; ++part) {
+      Eigen::Matrix3Xd f = Eigen::Matrix3Xd::Zero(3, m.num_nodes());
+      contact.add_forces(x, f, nullptr, {part, parts});
+      nonzero_shares += f.cwiseAbs().maxCoeff() > 0;
+      sum += f;
+    }
+    CHECK(nonzero_shares == parts);  // every share has work
+    // Only the order of the sums differs.
+    CHECK((sum - whole).cwiseAbs().maxCoeff() < 1e-12 * whole.cwiseAbs().maxCoeff());
+  }
+  Eigen::Matrix3Xd f = Eigen::Matrix3Xd::Zero(3, m.num_nodes());
+  CHECK_THROWS_WITH_AS(contact.add_forces(x, f, nullptr, {2, 2}), doctest::Contains("share 2 of 2"),
+                       std::invalid_argument);
+  CHECK_THROWS_AS(contact.add_forces(x, f, nullptr, {0, 0}), std::invalid_argument);
 }
 
 TEST_CASE("clearance: surfaces closer than c feel eps (c - g), farther ones nothing") {

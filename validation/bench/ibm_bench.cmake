@@ -6,3 +6,7 @@ target_link_libraries(bench_ibm_transfer_cost PRIVATE valsalva_validation CLI11:
 # bench_marker_reuse: opt-in benchmark of immersed.reuse_distance on a scene (not a test).
 add_executable(bench_marker_reuse ${CMAKE_CURRENT_LIST_DIR}/marker_reuse.cpp)
 target_link_libraries(bench_marker_reuse PRIVATE valsalva_validation CLI11::CLI11 fmt::fmt valsalva_warnings)
+
+# bench_contact_cost: opt-in benchmark of the leaflet contact in a valve scene (not a test).
+add_executable(bench_contact_cost ${CMAKE_CURRENT_LIST_DIR}/contact_cost.cpp)
+target_link_libraries(bench_contact_cost PRIVATE valsalva_validation CLI11::CLI11 fmt::fmt valsalva_warnings)
