@@ -232,7 +232,13 @@ void WallShearRecorder::write(const mesh::Mesh& mesh, const mesh::DualMetrics& m
   const auto summaries = summarize_wall_shear(rows, options_.patches.size());
   write_wall_shear_summary(run_dir / "wall_shear_summary.csv", options_.patches, summaries, t0, t1);
   for (std::size_t p = 0; p < summaries.size(); ++p)
-    fmt::print("{}\n", wall_shear_summary_line(options_.patches[p], summaries[p], t0, t1));
+    if (duration > 0)
+      fmt::print("{}\n", wall_shear_summary_line(options_.patches[p], summaries[p], t0, t1));
+    else  // the files hold zeros (and no RRT): say why instead of printing them
+      fmt::print(
+          "wall_shear {}: no TAWSS, OSI or RRT yet: the run ended at t = {:.6g} s, before the "
+          "averaging window opens at wall_shear.start_time = {:.6g} s\n",
+          options_.patches[p], last_time_, options_.start_time);
   write_wall_shear_surface(run_dir, mesh, metrics, options_.patches, rows, last_time_);
 }
 
