@@ -36,8 +36,9 @@ int ImmersedStructure::add_body(const structure::SolidMesh& mesh,
   bodies_.push_back(std::make_unique<ImmersedBody>(mesh, material, std::move(spec)));
   // Every rank holds the whole structure: the ranks split its contact search.
   if (mesh_.comm.size() > 1 && bodies_.back()->has_contact())
-    bodies_.back()->share_contact({mesh_.comm.rank(), mesh_.comm.size()},
-                                  [this](std::span<double> v) { mesh_.comm.sum_in_place(v); });
+    bodies_.back()->share_contact(
+        {mesh_.comm.rank(), mesh_.comm.size()},
+        [comm = &mesh_.comm](std::span<double> v) { comm->sum_in_place(v); });
   const int first = num_markers(), n = mesh.num_nodes();
   first_.push_back(first);
   std::vector<char> fixed(n, 0);
