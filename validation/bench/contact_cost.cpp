@@ -11,7 +11,6 @@
 #include <fmt/format.h>
 #include <mpi.h>
 
-#include <ctime>
 #include <string>
 #include <vector>
 
@@ -30,10 +29,6 @@ struct Args {
   int repetitions = 20;
   std::vector<std::string> settings;
 };
-
-double cpu_seconds() {
-  return double(std::clock()) / CLOCKS_PER_SEC;
-}
 
 }  // namespace
 
@@ -57,9 +52,9 @@ int main(int argc, char** argv) {
     overrides.push_back(fmt::format("time.max_steps={}", args.steps));
     double start = 0;
     v::SceneRun measure;
-    measure.at_start = [&](const valsalva::run::Simulation&) { start = cpu_seconds(); };
+    measure.at_start = [&](const valsalva::run::Simulation&) { start = bench::cpu_seconds(); };
     measure.at_end = [&](const valsalva::run::Simulation& sim) {
-      const double per_step = (cpu_seconds() - start) / args.steps;
+      const double per_step = (bench::cpu_seconds() - start) / args.steps;
       if (!sim.immersed() || sim.immersed()->num_bodies() == 0)
         throw std::runtime_error(args.scene + " has no immersed structure");
       const auto& ib = *sim.immersed();
@@ -68,9 +63,9 @@ int main(int argc, char** argv) {
         throw std::runtime_error(args.scene + ": the structure has no contact");
       const Eigen::Matrix3Xd x = ib.body_positions(0);
       Eigen::Matrix3Xd f(3, x.cols());
-      const double t0 = cpu_seconds();
+      const double t0 = bench::cpu_seconds();
       for (int r = 0; r < args.repetitions; ++r) body.forces(x, f);
-      const double per_eval = (cpu_seconds() - t0) / args.repetitions;
+      const double per_eval = (bench::cpu_seconds() - t0) / args.repetitions;
       const auto s = body.contact_summary(x);
       if (rank != 0) return;
       fmt::print(
