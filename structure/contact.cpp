@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <set>
 #include <stdexcept>
 
@@ -174,6 +175,7 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
   const int nq = options_.quadrature > 0 ? options_.quadrature : static_cast<int>(mesh_.order) + 2;
   const FaceTables<NF> tables(mesh_.order, nq);
   ContactSummary summary;
+  const bool exhaustive = options_.exhaustive_search;
   long slave_face = -1;  // running index of the slave faces, for the share
   auto mine = [&] { return ++slave_face % share.parts == share.part; };
 
@@ -267,7 +269,12 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
         V3<double> xs;
         double da;
         slave_geometry<double, NF>(fs, sp, PS, xs, da);
-        grid.in_box(Eigen::Vector3d(xs[0], xs[1], xs[2]), rmax + search + clearance, candidates);
+        if (exhaustive) {
+          candidates.resize(M.size());
+          std::iota(candidates.begin(), candidates.end(), 0);
+        } else {
+          grid.in_box(Eigen::Vector3d(xs[0], xs[1], xs[2]), rmax + search + clearance, candidates);
+        }
         ++summary.slave_points;
         int best = -1;
         Projection pr;
@@ -276,10 +283,11 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
           // Broad phase: the closest point projection (a Newton solve) only for faces whose
           // box, widened by the search distance, holds the point.
           // The same margin around the centre: a sphere, tighter than the box along diagonals.
-          if ((xe.array() < lo[c].array()).any() || (xe.array() > hi[c].array()).any() ||
-              (xe - centres[c]).squaredNorm() > reach[c] * reach[c])
+          if (!exhaustive &&
+              ((xe.array() < lo[c].array()).any() || (xe.array() > hi[c].array()).any() ||
+               (xe - centres[c]).squaredNorm() > reach[c] * reach[c]))
             continue;
-          const Projection p = project<NF>(tables.shape[M[c].face], PM[c], xs);
+          const Projection p = project<NF>(tables.shape[M[c].face], PM[c], xs, !exhaustive);
           ++summary.projections;
           summary.newton_iterations += p.iterations;
           if (!p.inside || p.gap > clearance + search || p.gap < -search) continue;

@@ -85,6 +85,10 @@ struct ContactOptions {
   // the patch test (the master-side forces are integrated at the other surface's points).
   enum class Formulation { two_half_pass, two_pass };
   Formulation formulation = Formulation::two_half_pass;
+  // Projects every slave point on every master face, without the broad phase (boxes, spheres)
+  // or the projection's early exit outside the face: the reference the fast search must equal
+  // (tests; far too slow for a run).
+  bool exhaustive_search = false;
 };
 
 // Result of one evaluation, per pair (two-half-pass pairs: both halves together) or obstacle.

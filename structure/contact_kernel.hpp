@@ -136,9 +136,11 @@ struct Projection {
   int iterations = 0;                    // Newton iterations taken (work counter)
 };
 
+// stop_outside: give up once Newton converges outside the face (below); false: the reference
+// that iterates to convergence.
 template <int NF>
 Projection project(const FaceShape<NF>& f, const std::array<V3<double>, NF>& P,
-                   const V3<double>& xp) {
+                   const V3<double>& xp, bool stop_outside = true) {
   Projection pr;
   double s = 0, t = 0;
   bool converged = false;
@@ -167,7 +169,8 @@ Projection project(const FaceShape<NF>& f, const std::array<V3<double>, NF>& P,
     if (clamped == 3) return pr;
     // Converging outside the face: with Newton's quadratic convergence a step below 1e-4 leaves
     // s and t within about 1e-8 of their limit, so |s| or |t| above 1 + 1e-2 is never accepted.
-    if (std::abs(ds) + std::abs(dt) < 1e-4 && std::max(std::abs(s), std::abs(t)) > 1 + 1e-2)
+    if (stop_outside && std::abs(ds) + std::abs(dt) < 1e-4 &&
+        std::max(std::abs(s), std::abs(t)) > 1 + 1e-2)
       return pr;
     if (std::abs(ds) + std::abs(dt) < 1e-13) {
       converged = true;

@@ -2,8 +2,11 @@
 // commissures (valve/leaflet_closing.hpp, Coaptation::planes), on the 2 mm leaflets (120 Q2).
 #include <doctest/doctest.h>
 
+#include <Eigen/SparseCore>
 #include <cmath>
 
+#include "structure/contact.hpp"
+#include "structure/material.hpp"
 #include "structure/mesh_generators.hpp"
 #include "valve/leaflet_closing.hpp"
 #include "valve/leaflet_mesh.hpp"
@@ -31,6 +34,14 @@ Closed close(valve::Coaptation coaptation, double clearance = 0) {
   options.coaptation = coaptation;
   options.contact_options.clearance = clearance;
   c.result = valve::close_leaflets(c.mesh, frame, options);
+  return c;
+}
+
+// The valve closed a fluid cell (1 mm) apart, as the FSI scenes close it; closed once for the
+// cases that use it.
+constexpr double kClearance = 1e-3;
+const Closed& closed_with_clearance() {
+  static const Closed c = close(valve::Coaptation::planes, kClearance);
   return c;
 }
 
@@ -100,8 +111,8 @@ TEST_CASE(
 TEST_CASE(
     "closing against the commissure planes with a clearance: neighbours stay that far apart") {
   // The FSI scenes close their leaflets a fluid cell apart (docs/valve.md, "Reopening").
-  const double clearance = 1e-3;
-  const Closed c = close(valve::Coaptation::planes, clearance);
+  const double clearance = kClearance;
+  const Closed& c = closed_with_clearance();
   REQUIRE(c.result.newton.converged);
   const double t = c.geometry.leaflet_thickness;
   // Each plane moves c / 2 towards its leaflet, whose faces stay on it: the mid-surfaces of two
@@ -110,6 +121,55 @@ TEST_CASE(
   MESSAGE("smallest mid-surface distance: " << c.result.pairs.min_distance);
   CHECK(c.result.pairs.min_distance > clearance + t - 0.4 * t);
   CHECK(c.result.pairs.min_distance < clearance + t + 0.5 * t);  // and they reach the planes
+}
+
+TEST_CASE(
+    "leaflet contact on the closed valve: the fast search finds what projecting every point on "
+    "every face finds") {
+  // The FSI runs' contact (scenes/valve_quick_circulation.toml: the three leaflet pairs, search
+  // 0.25 of a face) on the closed valve, with a clearance a fifth of the thickness above the
+  // closing's so that the coaptation bands press. The fast search (broad phase of boxes and
+  // spheres, Newton's early exit outside a face) must give the exhaustive search's forces and
+  // tangent: it may only skip projections that could not be accepted.
+  const Closed& c = closed_with_clearance();
+  REQUIRE(c.result.newton.converged);
+  const auto material = structure::make_neo_hookean(2.4e6, 1.6e6);
+  const auto pairs =
+      structure::pairs_between(c.mesh, {{"leaflet1_aortic_face", "leaflet1_ventricular_face"},
+                                        {"leaflet2_aortic_face", "leaflet2_ventricular_face"},
+                                        {"leaflet3_aortic_face", "leaflet3_ventricular_face"}});
+  structure::ContactOptions options;
+  options.search_factor = 0.25;
+  options.clearance = kClearance + 0.2 * c.geometry.leaflet_thickness;
+  const structure::Contact fast(c.mesh, *material, pairs, {}, options);
+  options.exhaustive_search = true;
+  const structure::Contact exhaustive(c.mesh, *material, pairs, {}, options);
+
+  const Eigen::Matrix3Xd& x = c.result.newton.x;
+  const auto n = x.cols();
+  Eigen::Matrix3Xd f_fast = Eigen::Matrix3Xd::Zero(3, n), f_all = f_fast;
+  std::vector<Eigen::Triplet<double>> k_fast, k_all;
+  const auto s_fast = fast.add_forces(x, f_fast, &k_fast);
+  const auto s_all = exhaustive.add_forces(x, f_all, &k_all);
+  Eigen::SparseMatrix<double> K_fast(3 * n, 3 * n), K_all(3 * n, 3 * n);
+  K_fast.setFromTriplets(k_fast.begin(), k_fast.end());
+  K_all.setFromTriplets(k_all.begin(), k_all.end());
+
+  int active = 0;
+  REQUIRE(s_fast.surfaces.size() == s_all.surfaces.size());
+  for (std::size_t i = 0; i < s_all.surfaces.size(); ++i) {
+    CHECK(s_fast.surfaces[i].active_points == s_all.surfaces[i].active_points);
+    active += s_all.surfaces[i].active_points;
+  }
+  MESSAGE("active points " << active << ", projections fast " << s_fast.projections
+                           << " exhaustive " << s_all.projections << ", |f| " << f_all.norm());
+  CHECK(active > 100);  // every pair's coaptation band presses
+  CHECK(s_fast.min_gap == doctest::Approx(s_all.min_gap).epsilon(1e-12));
+  // The same projections summed in another order: round-off.
+  CHECK((f_fast - f_all).norm() <= 1e-12 * f_all.norm());
+  CHECK((K_fast - K_all).norm() <= 1e-12 * K_all.norm());
+  // And the broad phase does prune: most faces are far from any given point.
+  CHECK(s_fast.projections * 10 < s_all.projections);
 }
 
 TEST_CASE("closing against the commissure planes: two leaflets facing each other are refused") {
