@@ -37,8 +37,8 @@ Closed close(valve::Coaptation coaptation, double clearance = 0) {
   return c;
 }
 
-// The valve closed a fluid cell (1 mm) apart, as the FSI scenes close it; closed once for the
-// cases that use it.
+// The valve closed 1 mm apart, one fluid cell of the M1 scenes (scripts/make-valve-m1); closed
+// once for the cases that use it.
 constexpr double kClearance = 1e-3;
 const Closed& closed_with_clearance() {
   static const Closed c = close(valve::Coaptation::planes, kClearance);
