@@ -7,8 +7,10 @@
 #include <numeric>
 #include <set>
 #include <stdexcept>
+#include <utility>
 
 #include "core/bucket_grid.hpp"
+#include "structure/contact_face_box.hpp"
 #include "structure/contact_kernel.hpp"
 #include "structure/loads.hpp"
 
@@ -233,33 +235,26 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
   auto half_pass = [&](const std::vector<FaceRef>& S, const std::vector<FaceRef>& M, double eps,
                        double width, double search, double clearance, ContactSurfaceSummary& s,
                        HalfTotals& half, int surface, int h) {
-    std::vector<Eigen::Vector3d> centres(M.size()), lo(M.size()), hi(M.size());
-    std::vector<double> reach(M.size());  // largest distance from the centre of a point to test
+    // Each master face's box (contact_face_box.hpp) bounds its distance to a point from below.
+    std::vector<FaceBox> boxes(M.size());
+    std::vector<Eigen::Vector3d> centres(M.size());
     std::vector<std::array<V3<double>, NF>> PM(M.size());
     std::vector<std::array<int, NF>> NM(M.size());
     double rmax = 0;
     for (std::size_t m = 0; m < M.size(); ++m) {
       const FaceShape<NF>& fm = tables.shape[M[m].face];
       PM[m] = gather<NF>(mesh_, x, M[m], fm, NM[m]);
-      V3<double> c, cs, ct;
-      fm.eval(PM[m], 0.0, 0.0, c, cs, ct);
-      centres[m] = Eigen::Vector3d(c[0], c[1], c[2]);
-      lo[m] = hi[m] = centres[m];
-      double r = 0;
-      for (int a = 0; a < NF; ++a) {
-        const Eigen::Vector3d node(PM[m][a][0], PM[m][a][1], PM[m][a][2]);
-        r = std::max(r, (node - centres[m]).norm());
-        lo[m] = lo[m].cwiseMin(node);
-        hi[m] = hi[m].cwiseMax(node);
-      }
-      // A curved Q2 face can bulge beyond its nodes' box: a margin of a quarter of its size.
-      lo[m].array() -= search + clearance + 0.25 * r;
-      hi[m].array() += search + clearance + 0.25 * r;
-      reach[m] = 1.25 * r + search + clearance;
-      rmax = std::max(rmax, r);
+      boxes[m] = face_box<NF>(fm, PM[m]);
+      centres[m] = Eigen::Vector3d(boxes[m].centre[0], boxes[m].centre[1], boxes[m].centre[2]);
+      rmax = std::max(rmax, boxes[m].radius);
     }
+    // A converged projection's |gap| is the point's distance to the face up to the Newton
+    // tolerance, and its foot may lie 1e-9 outside the face's parameter square: the margin
+    // keeps the skip exact.
+    const double margin = 1e-6 * rmax, accepted = clearance + search + margin;
     const core::BucketGrid grid(centres, std::max(2 * rmax, 1e-300));
     std::vector<int> candidates;
+    std::vector<std::pair<double, int>> ranked;  // (box distance, position in candidates)
     for (const FaceRef& fr : S) {
       if (!mine()) continue;
       const FaceShape<NF>& fs = tables.shape[fr.face];
@@ -273,25 +268,31 @@ ContactSummary Contact::evaluate(const Eigen::Ref<const Eigen::Matrix3Xd>& x,
           candidates.resize(M.size());
           std::iota(candidates.begin(), candidates.end(), 0);
         } else {
-          grid.in_box(Eigen::Vector3d(xs[0], xs[1], xs[2]), rmax + search + clearance, candidates);
+          grid.in_box(Eigen::Vector3d(xs[0], xs[1], xs[2]), rmax + accepted, candidates);
         }
         ++summary.slave_points;
-        int best = -1;
+        // Broad phase: no closest-point projection (a Newton solve) for a face farther from the
+        // point than any gap the contact accepts, nor, once a face is found, for one farther
+        // than its gap. The nearest boxes go first; ties keep the candidates' order, so the
+        // face chosen is the one the plain loop over the candidates chooses.
+        ranked.clear();
+        for (std::size_t k = 0; k < candidates.size(); ++k) {
+          const double d = exhaustive ? 0.0 : boxes[candidates[k]].distance(xs);
+          if (d <= accepted) ranked.push_back({d, static_cast<int>(k)});
+        }
+        if (!exhaustive) std::sort(ranked.begin(), ranked.end());
+        int best = -1, best_rank = 0;
         Projection pr;
-        const Eigen::Vector3d xe(xs[0], xs[1], xs[2]);
-        for (int c : candidates) {
-          // Broad phase: the closest point projection (a Newton solve) only for faces whose
-          // box, widened by the search distance, holds the point.
-          // The same margin around the centre: a sphere, tighter than the box along diagonals.
-          if (!exhaustive &&
-              ((xe.array() < lo[c].array()).any() || (xe.array() > hi[c].array()).any() ||
-               (xe - centres[c]).squaredNorm() > reach[c] * reach[c]))
-            continue;
+        for (const auto& [d, k] : ranked) {
+          if (best >= 0 && d > std::abs(pr.gap) + margin) break;
+          const int c = candidates[k];
           const Projection p = project<NF>(tables.shape[M[c].face], PM[c], xs, !exhaustive);
           ++summary.projections;
           summary.newton_iterations += p.iterations;
           if (!p.inside || p.gap > clearance + search || p.gap < -search) continue;
-          if (best < 0 || std::abs(p.gap) < std::abs(pr.gap)) best = c, pr = p;
+          const double g = std::abs(p.gap), g_best = std::abs(pr.gap);
+          if (best < 0 || g < g_best || (g == g_best && k < best_rank))
+            best = c, best_rank = k, pr = p;
         }
         if (best < 0) continue;
         const FaceShape<NF>& fm = tables.shape[M[best].face];

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "structure/contact.hpp"
+#include "structure/contact_face_box.hpp"
 #include "structure/contact_kernel.hpp"
 #include "structure/mesh_generators.hpp"
 
@@ -199,6 +200,56 @@ TEST_CASE("projection: a closest point just inside the face is found, one just o
       CHECK(std::abs(pr.gap) == doctest::Approx(0.05).epsilon(1e-12));
     }
   }
+}
+
+TEST_CASE("face box: holds every point of a curved Q2 face, bounds the distance from below") {
+  // Random curved faces (nodes of a warped square, bulging up to a third of its size): sampled
+  // face points lie in the box (distance 0), and for random points nearby the box's distance
+  // never exceeds the distance to the face (its minimum over a 201 x 201 sample, which
+  // overestimates the true distance by at most the sampling's 2e-4 of the face size).
+  const contact_detail::FaceShape<9> f(HexOrder::q2, 4);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  double worst_inside = 0, worst_bound = -1, tightest = 1;
+  for (int face = 0; face < 20; ++face) {
+    std::array<contact_detail::V3<double>, 9> P;
+    for (int a = 0; a < 9; ++a) {
+      const double s = f.cs[a], t = f.ct[a];
+      P[a] = {s + 0.1 * u(rng), t + 0.1 * u(rng), 0.35 * (1 - s * s) * (1 + t) + 0.1 * u(rng)};
+    }
+    const contact_detail::FaceBox box = contact_detail::face_box<9>(f, P);
+    std::vector<contact_detail::V3<double>> sample;
+    for (int i = 0; i <= 200; ++i)
+      for (int j = 0; j <= 200; ++j) {
+        contact_detail::V3<double> x, xs, xt;
+        f.eval(P, -1 + i / 100.0, -1 + j / 100.0, x, xs, xt);
+        sample.push_back(x);
+        worst_inside = std::max(worst_inside, box.distance(x));
+      }
+    for (int k = 0; k < 50; ++k) {
+      const contact_detail::V3<double> y{2 * u(rng), 2 * u(rng), 1.5 * u(rng)};
+      double d = HUGE_VAL;
+      for (const auto& x : sample)
+        d = std::min(d, std::sqrt(contact_detail::dot(contact_detail::minus(y, x),
+                                                      contact_detail::minus(y, x))));
+      worst_bound = std::max(worst_bound, box.distance(y) - d);
+      if (d > 0.1) tightest = std::min(tightest, (d - box.distance(y)) / d);
+    }
+  }
+  CAPTURE(tightest);
+  CHECK(worst_inside < 1e-14);
+  CHECK(worst_bound <= 0);
+}
+
+TEST_CASE("face box: the distance above a flat face is the height, beside it the corner's") {
+  // The flat face of the projection test above: nodes at (s, t, 0) for s, t in [-1, 1].
+  const contact_detail::FaceShape<9> f(HexOrder::q2, 4);
+  std::array<contact_detail::V3<double>, 9> P;
+  for (int a = 0; a < 9; ++a) P[a] = {double(f.cs[a]), double(f.ct[a]), 0.0};
+  const contact_detail::FaceBox box = contact_detail::face_box<9>(f, P);
+  CHECK(box.distance({0.3, -0.4, 0.25}) == doctest::Approx(0.25).epsilon(1e-14));
+  CHECK(box.distance({2.0, 3.0, 0.0}) == doctest::Approx(std::sqrt(5.0)).epsilon(1e-14));
+  CHECK(box.radius == doctest::Approx(std::sqrt(2.0)).epsilon(1e-14));
 }
 
 TEST_CASE("contact tangent equals minus the derivative of the force (central differences)") {
